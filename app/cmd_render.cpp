@@ -1,0 +1,75 @@
+// tlab render: one picture of a scene in a transparency style.
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "app/scene_options.hpp"
+#include "app/stats_json.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "renderer/gpu/window_context.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/scene/scene_source.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct RenderOptions {
+  SceneOptions scene;
+  std::string output;
+  std::string statsJson;
+  std::string layersOut;
+  bool window = false;
+};
+
+void runRender(const RenderOptions& o) {
+  if (o.output.empty() && !o.window) throw std::invalid_argument("render: give -o FILE.png (or --window)");
+  render::Scene scene = render::loadScene(o.scene.scene, sceneCatalog());
+  const render::RenderRequest request = o.scene.request(scene);
+  std::unique_ptr<gpu::GpuContext> context;
+  gpu::WindowContext* window = nullptr;
+  if (o.window) {
+    auto w = gpu::createWindowContext(request.width, request.height, "tlab render - " + o.scene.scene);
+    window = w.get();
+    context = std::move(w);
+  } else {
+    context = gpu::createHeadlessContext();
+  }
+  render::Renderer renderer(std::move(scene));
+  render::RenderStats stats;
+  const render::Image image = renderer.render(request, &stats);
+  if (!o.output.empty()) render::writeFileAtomically(o.output, render::encodePng(image));
+  if (!o.layersOut.empty())
+    render::writeFileAtomically(o.layersOut, render::encodePgm16(renderer.layerCounts(), image.width, image.height));
+  if (!o.statsJson.empty()) {
+    nlohmann::json j = statsToJson(stats, context->info());
+    j["style"] = request.style;
+    j["settings"] = request.settings;
+    j["scene"] = o.scene.scene;
+    const std::string text = j.dump(2) + "\n";
+    render::writeFileAtomically(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
+  }
+  if (!o.output.empty()) std::cout << "wrote " << o.output << " (" << image.width << "x" << image.height << ")\n";
+  if (window) {
+    const auto rgba = render::toRgba8(image);
+    window->showUntilClosed(rgba.data(), image.width, image.height);
+  }
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app) {
+  auto options = std::make_shared<RenderOptions>();
+  auto* cmd = app.add_subcommand("render", "Render a scene in a transparency style to a PNG");
+  options->scene.addTo(*cmd);
+  cmd->add_option("-o,--output", options->output, "output PNG (row 0 = top of the picture)");
+  cmd->add_option("--stats-json", options->statsJson,
+                  "write fragment counts, list lengths, per-pass ms, re-renders and the camera used");
+  cmd->add_option("--layers-out", options->layersOut, "write the per-pixel fragment count as a 16-bit PGM");
+  cmd->add_flag("--window", options->window, "show the result in a GLFW window instead of rendering headless");
+  cmd->callback([options] { runRender(*options); });
+}
+
+}  // namespace tlab::app

@@ -1,0 +1,17 @@
+#pragma once
+// Every `tlab` subcommand is one small file in app/ that registers itself on the CLI11 app.
+// Commands only parse arguments and call the libraries.
+#include <CLI/CLI.hpp>
+
+namespace tlab::app {
+
+void addRenderCommand(CLI::App& app);    // cmd_render.cpp
+void addInspectCommand(CLI::App& app);   // cmd_inspect.cpp
+void addBenchCommand(CLI::App& app);     // cmd_bench.cpp
+void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
+void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
+void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp
+void addStatcheckCommand(CLI::App& app); // cmd_statcheck.cpp
+void addVersionCommand(CLI::App& app);   // cmd_version.cpp
+
+}  // namespace tlab::app

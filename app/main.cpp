@@ -1,0 +1,34 @@
+// tlab: the Transparency Lab command line. Parses, dispatches, and turns every error into one
+// line on stderr with exit code 1.
+#include <exception>
+#include <iostream>
+
+#include "app/commands.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"tlab - Transparency Lab: illustrative transparency rendering and perceptual studies"};
+  app.require_subcommand(1);
+  app.fallthrough(false);
+  tlab::app::addRenderCommand(app);
+  tlab::app::addInspectCommand(app);
+  //TMP tlab::app::addBenchCommand(app);
+  //TMP tlab::app::addGalleryCommand(app);
+  //TMP tlab::app::addStatsCommand(app);
+  //TMP tlab::app::addReproduceCommand(app);
+  //TMP tlab::app::addStatcheckCommand(app);
+  tlab::app::addVersionCommand(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "tlab: error: " << e.what() << " (see --help)\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "tlab: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

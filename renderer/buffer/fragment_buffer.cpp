@@ -1,0 +1,218 @@
+#include "renderer/buffer/fragment_buffer.hpp"
+
+#include <sstream>
+#include <stdexcept>
+
+#include "renderer/gpu/gl_error.hpp"
+
+namespace tlab::render {
+
+namespace {
+
+// Binding points of buffer/fragment_layout.glsl.
+enum Binding : GLuint {
+  kPixelCount = 0, kPixelHead = 1, kPixelCursor = 2, kListNext = 3, kCounters = 4,
+  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7,
+};
+constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
+constexpr std::uint32_t kGroupSize = 64;     // local_size_x of the compute passes
+
+GLuint groupsFor(std::size_t items) { return static_cast<GLuint>((items + kGroupSize - 1) / kGroupSize); }
+
+gpu::ShaderDefines with(gpu::ShaderDefines d, const std::string& name, const std::string& value) {
+  d.emplace_back(name, value);
+  return d;
+}
+
+std::string mib(double bytes) {
+  std::ostringstream s;
+  s.precision(1);
+  s << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+  return s.str();
+}
+
+}  // namespace
+
+FillMethod parseFillMethod(const std::string& name) {
+  if (name == "scatter") return FillMethod::CountScatter;
+  if (name == "list") return FillMethod::LinkedList;
+  throw std::invalid_argument("unknown fill method '" + name + "' (known: scatter, list)");
+}
+
+std::string fillMethodName(FillMethod m) { return m == FillMethod::CountScatter ? "scatter" : "list"; }
+
+FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height, FragmentLayout layout,
+                               FillMethod method, std::size_t initialCapacity, std::size_t maxBytes)
+    : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes) {
+  if (maxBytes_ == 0) {
+    GLint64 limit = 0;
+    glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
+    maxBytes_ = static_cast<std::size_t>(limit);
+  }
+  if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
+  const std::size_t n = pixels();
+  pixelCount_ = gpu::Buffer(n * 4);
+  pixelHead_ = gpu::Buffer(n * 4);
+  pixelCursor_ = gpu::Buffer(n * 4);
+  counters_ = gpu::Buffer(16);
+  blockSums_ = gpu::Buffer(((n + kPrefixBlock - 1) / kPrefixBlock) * 4);
+  emptyFbo_ = gpu::makeFramebuffer();
+  glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
+  glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
+
+  const auto defines = layout_.defines();
+  if (method_ == FillMethod::CountScatter) {
+    countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
+    scatterProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_scatter.frag", defines);
+    sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
+  } else {
+    listProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_list.frag", defines);
+    sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
+  }
+  for (int phase = 0; phase < 3; ++phase)
+    prefix_[phase] = &shaders.compute("buffer/prefix_sum.comp", with(defines, "TLAB_PHASE", std::to_string(phase + 1)));
+  ensureCapacity(initialCapacity == 0 ? n : initialCapacity);
+  poolGrowths_ = 0;
+}
+
+void FragmentBuffer::ensureCapacity(std::size_t fragments) {
+  if (fragments <= capacity_) return;
+  const std::size_t recordBytes = std::size_t(layout_.stride) * 4;
+  const double need = double(fragments) * double(recordBytes);
+  if (need > double(maxBytes_)) {
+    std::ostringstream msg;
+    msg << "the illustration buffer needs " << fragments << " fragments x " << recordBytes << " bytes = "
+        << mib(need) << " per fragment array, more than the allowed " << mib(double(maxBytes_))
+        << ": use a lower resolution";
+    throw gpu::GlError(msg.str());
+  }
+  if (capacity_ > 0) ++poolGrowths_;
+  capacity_ = fragments;
+  fragsUnsorted_ = gpu::Buffer(capacity_ * recordBytes);
+  fragsSorted_ = gpu::Buffer(capacity_ * recordBytes);
+  order_ = gpu::Buffer(capacity_ * 4);
+  if (method_ == FillMethod::LinkedList) listNext_ = gpu::Buffer(capacity_ * 4);
+}
+
+void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_.id());
+  glViewport(0, 0, width_, height_);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_BLEND);
+  program.use();
+  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
+  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
+  glUniform1i(program.uniform("uLighting"), u.lighting);
+  glUniform1i(program.uniform("uWidth"), width_);
+  glUniform1ui(program.uniform("uCapacity"), static_cast<GLuint>(capacity_));
+  glUniform1ui(program.uniform("uPrimitiveBase"), 0u);
+  scene.bindObjectTable();
+  scene.draw();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+std::uint32_t FragmentBuffer::prefixSum() {
+  const auto n = static_cast<GLuint>(pixels());
+  const GLuint blocks = (n + kPrefixBlock - 1) / kPrefixBlock;
+  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+  blockSums_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
+  counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
+  for (int phase = 0; phase < 3; ++phase) {
+    const gpu::ShaderProgram& p = *prefix_[phase];
+    p.use();
+    glUniform1ui(p.uniform("uPixels"), n);
+    glUniform1ui(p.uniform("uBlocks"), blocks);
+    glDispatchCompute(phase == 1 ? 1 : groupsFor(blocks), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  }
+  std::uint32_t counters[2] = {0, 0};
+  counters_.download(counters, sizeof(counters));
+  return counters[1];
+}
+
+void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer) {
+  timer.time("fill", [&] {
+    pixelCount_.clearToZero();
+    pixelCursor_.clearToZero();
+    counters_.clearToZero();
+    pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+    rasterize(*countProgram_, scene, u);
+    fragmentCount_ = prefixSum();
+    ensureCapacity(fragmentCount_);
+    pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+    pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
+    fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+    rasterize(*scatterProgram_, scene, u);
+  });
+}
+
+void FragmentBuffer::fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer) {
+  timer.time("fill", [&] {
+    for (;;) {
+      pixelCount_.clearToZero();
+      counters_.clearToZero();
+      pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+      pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
+      listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
+      counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
+      fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+      rasterize(*listProgram_, scene, u);
+      std::uint32_t written = 0;
+      counters_.download(&written, 4);
+      if (written <= capacity_) break;
+      ensureCapacity(written);  // Sec. 4.2: resize to the required size and repeat the rendering
+      ++rerenders_;
+    }
+    fragmentCount_ = prefixSum();
+  });
+}
+
+void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {
+  rerenders_ = 0;
+  poolGrowths_ = 0;
+  if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
+  else fillLinkedList(scene, uniforms, timer);
+  timer.time("sort", [&] {
+    pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+    pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+    pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
+    if (listNext_) listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
+    fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+    fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+    order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
+    sortProgram_->use();
+    glUniform1ui(sortProgram_->uniform("uPixels"), static_cast<GLuint>(pixels()));
+    glDispatchCompute(groupsFor(pixels()), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  });
+  gpu::checkGl("building the illustration buffer");
+}
+
+void FragmentBuffer::bindSorted() const {
+  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+  fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+}
+
+std::vector<std::uint32_t> FragmentBuffer::pixelCounts() const {
+  std::vector<std::uint32_t> v(pixels());
+  pixelCount_.download(v.data(), v.size() * 4);
+  return v;
+}
+
+std::vector<std::uint32_t> FragmentBuffer::pixelHeads() const {
+  std::vector<std::uint32_t> v(pixels());
+  pixelHead_.download(v.data(), v.size() * 4);
+  return v;
+}
+
+std::vector<std::uint32_t> FragmentBuffer::sortedRecords(std::size_t first, std::size_t count) const {
+  std::vector<std::uint32_t> v(count * layout_.stride);
+  fragsSorted_.download(v.data(), v.size() * 4, first * layout_.stride * 4);
+  return v;
+}
+
+}  // namespace tlab::render

@@ -1,0 +1,43 @@
+#include "renderer/buffer/fragment_layout.hpp"
+
+namespace tlab::render {
+
+FragmentLayout::FragmentLayout(FragmentProperties p) : properties(p) {
+  const auto take = [&](FragmentProperty prop, std::uint32_t words, std::uint32_t& offset) {
+    if (!p.has(prop)) return;
+    offset = stride;
+    stride += words;
+  };
+  take(FragmentProperty::Color, 1, colorOffset);
+  take(FragmentProperty::Normal, 3, normalOffset);
+  take(FragmentProperty::DepthGradient, 2, depthGradientOffset);
+  take(FragmentProperty::Ids, 1, idsOffset);
+  take(FragmentProperty::SurfaceParams, 2, stOffset);
+}
+
+gpu::ShaderDefines FragmentLayout::defines() const {
+  gpu::ShaderDefines d = {{"TLAB_STRIDE", std::to_string(stride) + "u"}};
+  const auto add = [&](FragmentProperty prop, const char* name, std::uint32_t offset) {
+    if (!properties.has(prop)) return;
+    d.emplace_back(std::string("TLAB_HAS_") + name, "1");
+    d.emplace_back(std::string("TLAB_OFF_") + name, std::to_string(offset) + "u");
+  };
+  add(FragmentProperty::Color, "COLOR", colorOffset);
+  add(FragmentProperty::Normal, "NORMAL", normalOffset);
+  add(FragmentProperty::DepthGradient, "DEPTH_GRADIENT", depthGradientOffset);
+  add(FragmentProperty::Ids, "IDS", idsOffset);
+  add(FragmentProperty::SurfaceParams, "ST", stOffset);
+  return d;
+}
+
+std::vector<std::string> FragmentLayout::propertyNames() const {
+  std::vector<std::string> names = {"depth", "triangle"};
+  if (properties.has(FragmentProperty::Color)) names.push_back("color");
+  if (properties.has(FragmentProperty::Normal)) names.push_back("normal");
+  if (properties.has(FragmentProperty::DepthGradient)) names.push_back("depth_gradient");
+  if (properties.has(FragmentProperty::Ids)) names.push_back("ids");
+  if (properties.has(FragmentProperty::SurfaceParams)) names.push_back("st");
+  return names;
+}
+
+}  // namespace tlab::render

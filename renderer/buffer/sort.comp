@@ -1,0 +1,53 @@
+#version 450 core
+// Sort pass (Carnecky Sec. 4.3): each pixel's fragments, front to back, into the contiguous
+// block [pixelHead, pixelHead + pixelCount) of the sorted buffer (fragData2). Ties in depth are
+// broken by the global triangle index, so the order never depends on thread scheduling.
+// TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
+#include "buffer/fragment_layout.glsl"
+layout(local_size_x = 64) in;
+layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
+layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
+layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint listHead[]; };
+layout(std430, binding = BIND_LIST_NEXT) readonly buffer ListNext { uint listNext[]; };
+layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer Frags { uint frags[]; };
+layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer Sorted { uint sorted[]; };
+layout(std430, binding = BIND_ORDER) buffer Order { uint order[]; };
+uniform uint uPixels;
+
+bool before(uint a, uint b) {
+  float da = uintBitsToFloat(frags[fragWord(a, OFF_DEPTH)]);
+  float db = uintBitsToFloat(frags[fragWord(b, OFF_DEPTH)]);
+  if (da != db) return da < db;
+  return frags[fragWord(a, OFF_PRIM)] < frags[fragWord(b, OFF_PRIM)];
+}
+
+void main() {
+  uint pixel = gl_GlobalInvocationID.x;
+  if (pixel >= uPixels) return;
+  uint n = pixelCount[pixel];
+  if (n == 0u) return;
+  uint base = pixelHead[pixel];
+#ifdef TLAB_LINKED_LIST
+  uint f = listHead[pixel];
+  for (uint i = 0u; i < n; ++i) {
+    order[base + i] = f;
+    f = listNext[f];
+  }
+#else
+  for (uint i = 0u; i < n; ++i) order[base + i] = base + i;
+#endif
+  // Insertion sort of the indices; lists are short except where a surface is seen edge-on.
+  for (uint i = 1u; i < n; ++i) {
+    uint key = order[base + i];
+    uint j = i;
+    while (j > 0u && before(key, order[base + j - 1u])) {
+      order[base + j] = order[base + j - 1u];
+      --j;
+    }
+    order[base + j] = key;
+  }
+  for (uint i = 0u; i < n; ++i) {
+    uint src = order[base + i];
+    for (uint w = 0u; w < uint(TLAB_STRIDE); ++w) sorted[fragWord(base + i, w)] = frags[fragWord(src, w)];
+  }
+}

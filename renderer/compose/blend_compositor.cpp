@@ -1,0 +1,23 @@
+#include "renderer/compose/blend_compositor.hpp"
+
+#include "renderer/gpu/gl_error.hpp"
+
+namespace tlab::render {
+
+void BlendCompositor::run(FrameContext& frame) {
+  FragmentBuffer& buffer = *frame.buffer;
+  const auto& program = frame.shaders.compute("compose/blend.comp", buffer.layout().defines());
+  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
+  buffer.bindSorted();
+  output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
+  program.use();
+  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
+  glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
+  glUniform1f(program.uniform("uAlpha"), alpha_);
+  glDispatchCompute(static_cast<GLuint>((buffer.pixels() + 63) / 64), 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  readOutputBuffer(output, frame.image);
+  gpu::checkGl("compose/blend.comp");
+}
+
+}  // namespace tlab::render

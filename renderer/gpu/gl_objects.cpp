@@ -1,0 +1,67 @@
+#include "renderer/gpu/gl_objects.hpp"
+
+#include <string>
+
+#include "renderer/gpu/gl_error.hpp"
+
+namespace tlab::gpu {
+
+VertexArray makeVertexArray() {
+  GLuint id = 0;
+  glCreateVertexArrays(1, &id);
+  return VertexArray(id);
+}
+Texture makeTexture(GLenum target) {
+  GLuint id = 0;
+  glCreateTextures(target, 1, &id);
+  return Texture(id);
+}
+Renderbuffer makeRenderbuffer() {
+  GLuint id = 0;
+  glCreateRenderbuffers(1, &id);
+  return Renderbuffer(id);
+}
+Framebuffer makeFramebuffer() {
+  GLuint id = 0;
+  glCreateFramebuffers(1, &id);
+  return Framebuffer(id);
+}
+Query makeQuery(GLenum target) {
+  GLuint id = 0;
+  glCreateQueries(target, 1, &id);
+  return Query(id);
+}
+
+Buffer::Buffer(std::size_t bytes, const void* data) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  name_ = GlName<BufferDeleter>(id);
+  bytes_ = bytes;
+  // GL rejects zero-sized storage; keep one word so binding stays valid.
+  glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes == 0 ? 4 : bytes), data,
+                       GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+  checkGl("allocating a buffer of " + std::to_string(bytes) + " bytes");
+}
+
+void Buffer::resize(std::size_t bytes) {
+  if (name_ && bytes == bytes_) return;
+  *this = Buffer(bytes);
+}
+
+void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
+  if (bytes == 0) return;
+  glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::download(void* data, std::size_t bytes, std::size_t offset) const {
+  if (bytes == 0) return;
+  glGetNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
+}
+
+void Buffer::clearToZero() {
+  glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
+}
+
+void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
+
+}  // namespace tlab::gpu

@@ -1,0 +1,82 @@
+#pragma once
+// RAII owners for GL objects. Each owns one GL name, is movable, not copyable, and deletes the
+// name when it dies. They assume the GpuContext that created them is current.
+#include <cstddef>
+#include <utility>
+
+#include "renderer/gpu/gl.hpp"
+
+namespace tlab::gpu {
+
+template <typename Deleter>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint id) : id_(id) {}
+  GlName(const GlName&) = delete;
+  GlName& operator=(const GlName&) = delete;
+  GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  GlName& operator=(GlName&& o) noexcept {
+    if (this != &o) {
+      reset();
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  ~GlName() { reset(); }
+  GLuint id() const { return id_; }
+  explicit operator bool() const { return id_ != 0; }
+  void reset() {
+    if (id_ != 0) Deleter{}(id_);
+    id_ = 0;
+  }
+
+ private:
+  GLuint id_ = 0;
+};
+
+struct BufferDeleter { void operator()(GLuint id) const { glDeleteBuffers(1, &id); } };
+struct TextureDeleter { void operator()(GLuint id) const { glDeleteTextures(1, &id); } };
+struct FramebufferDeleter { void operator()(GLuint id) const { glDeleteFramebuffers(1, &id); } };
+struct RenderbufferDeleter { void operator()(GLuint id) const { glDeleteRenderbuffers(1, &id); } };
+struct VertexArrayDeleter { void operator()(GLuint id) const { glDeleteVertexArrays(1, &id); } };
+struct ProgramDeleter { void operator()(GLuint id) const { glDeleteProgram(id); } };
+struct ShaderDeleter { void operator()(GLuint id) const { glDeleteShader(id); } };
+struct QueryDeleter { void operator()(GLuint id) const { glDeleteQueries(1, &id); } };
+
+using ShaderName = GlName<ShaderDeleter>;
+using ProgramName = GlName<ProgramDeleter>;
+using VertexArray = GlName<VertexArrayDeleter>;
+using Texture = GlName<TextureDeleter>;
+using Renderbuffer = GlName<RenderbufferDeleter>;
+using Framebuffer = GlName<FramebufferDeleter>;
+using Query = GlName<QueryDeleter>;
+
+VertexArray makeVertexArray();
+Texture makeTexture(GLenum target);
+Renderbuffer makeRenderbuffer();
+Framebuffer makeFramebuffer();
+Query makeQuery(GLenum target);
+
+// A GL buffer object with immutable-size storage that can be resized (re-created).
+class Buffer {
+ public:
+  Buffer() = default;
+  // Allocates `bytes` of storage (contents undefined unless data is given).
+  explicit Buffer(std::size_t bytes, const void* data = nullptr);
+  std::size_t size() const { return bytes_; }
+  GLuint id() const { return name_.id(); }
+  explicit operator bool() const { return static_cast<bool>(name_); }
+  // Re-creates the storage with the new size when it differs (contents lost).
+  void resize(std::size_t bytes);
+  void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
+  void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
+  void clearToZero();
+  void bindBase(GLenum target, GLuint index) const;
+
+ private:
+  GlName<BufferDeleter> name_;
+  std::size_t bytes_ = 0;
+};
+
+}  // namespace tlab::gpu

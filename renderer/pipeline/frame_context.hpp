@@ -1,0 +1,42 @@
+#pragma once
+// What every render pass of one frame sees: the scene on the GPU, the illustration buffer (when
+// the style uses fragment lists), the style's parameters, and the image the frame produces.
+#include <glm/glm.hpp>
+
+#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/gpu/shader_cache.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/scene/scene.hpp"
+#include "renderer/styles/style_params.hpp"
+
+namespace tlab::render {
+
+struct FrameContext {
+  const Scene& scene;
+  const GpuScene& gpuScene;
+  const RasterUniforms& raster;
+  const Camera& camera;
+  const StyleParams& params;
+  int width;
+  int height;
+  glm::vec4 background;
+  FragmentBuffer* buffer;  // null for styles without fragment lists
+  Image& image;            // the frame's result, row 0 = top
+  gpu::ShaderCache& shaders;
+};
+
+// One pass of a style (VTK render-pass style): a small object with one job.
+class RenderPass {
+ public:
+  virtual ~RenderPass() = default;
+  virtual std::string name() const = 0;
+  virtual void run(FrameContext& frame) = 0;
+};
+
+// Reads an RGBA float SSBO of width*height texels in GL order (row 0 = bottom) into the image,
+// flipping so that row 0 is the top.
+void readOutputBuffer(const gpu::Buffer& output, Image& image);
+
+}  // namespace tlab::render

@@ -1,0 +1,9 @@
+#include "renderer/pipeline/pass_timer.hpp"
+
+#include "renderer/gpu/gl.hpp"
+
+namespace tlab::render {
+
+void PassTimer::finish() { glFinish(); }
+
+}  // namespace tlab::render

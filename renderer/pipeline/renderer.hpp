@@ -1,0 +1,83 @@
+#pragma once
+// The picture flow: Scene → (fill → sort → the style's operators → compose) → Image.
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/scene/scene.hpp"
+
+namespace tlab::render {
+
+struct RenderRequest {
+  int width = 512;
+  int height = 512;
+  std::string style = "constant";
+  std::map<std::string, std::string> settings;  // --set key=value
+  std::optional<Camera> camera;                  // default: the scene's own, else fitted
+  FillMethod fill = FillMethod::CountScatter;
+  std::size_t initialPoolFragments = 0;          // 0: one per pixel
+  bool allProperties = false;                    // store every fragment property (for inspect)
+  bool timePasses = true;
+};
+
+struct RenderStats {
+  std::uint64_t fragments = 0;
+  std::uint32_t maxListLength = 0;
+  double meanListLength = 0.0;         // over all pixels
+  double meanCoveredListLength = 0.0;  // over pixels with at least one fragment
+  int rerenders = 0;
+  int poolGrowths = 0;
+  std::size_t poolCapacity = 0;
+  std::size_t triangles = 0;
+  std::string fillMethod;
+  std::vector<std::string> fragmentProperties;
+  std::vector<std::pair<std::string, double>> passMilliseconds;  // in the order they ran
+  Camera camera;
+  int width = 0, height = 0;
+};
+
+// A fragment as `tlab inspect` shows it (all properties of the sorted list at one pixel).
+struct FragmentRecord {
+  float depth = 0;
+  std::uint32_t triangle = 0;
+  glm::vec4 color{0};
+  glm::vec3 normal{0};
+  glm::vec2 depthGradient{0};
+  std::uint32_t object = 0, component = 0;
+  bool frontFacing = false;
+  glm::vec2 st{0};
+};
+
+class Renderer {
+ public:
+  // Uploads the scene; a GpuContext must be current.
+  explicit Renderer(Scene scene);
+  const Scene& scene() const { return scene_; }
+
+  // The camera a request resolves to (given, the scene's own, or fitted to the bounding sphere).
+  Camera resolveCamera(const RenderRequest& request) const;
+
+  Image render(const RenderRequest& request, RenderStats* stats = nullptr);
+
+  // After render(): per-pixel fragment counts (row 0 = top) and one pixel's sorted list (x, y with
+  // row 0 = top). Both need a style with fragment lists.
+  std::vector<std::uint16_t> layerCounts() const;
+  std::vector<FragmentRecord> fragmentsAt(int x, int y) const;
+
+ private:
+  Scene scene_;
+  GpuScene gpuScene_;
+  gpu::ShaderCache shaders_;
+  std::unique_ptr<FragmentBuffer> buffer_;
+};
+
+// Sets near/far so the scene's bounding sphere lies between them.
+Camera fitClipPlanes(Camera camera, const BoundingSphere& sphere);
+
+}  // namespace tlab::render

@@ -1,0 +1,104 @@
+#include "renderer/scene/camera.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tlab::render {
+
+glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
+
+glm::mat4 Camera::projection(float aspect) const {
+  return glm::perspective(glm::radians(fovyDegrees), aspect, nearPlane, farPlane);
+}
+
+Camera fitCamera(const BoundingSphere& sphere, float aspect, float fovyDegrees, glm::vec3 fromDirection) {
+  Camera c;
+  c.fovyDegrees = fovyDegrees;
+  const float halfY = glm::radians(fovyDegrees) * 0.5f;
+  const float halfX = std::atan(std::tan(halfY) * aspect);
+  const float half = std::min(halfX, halfY);
+  const float distance = 1.05f * sphere.radius / std::sin(half);  // a 5 % margin
+  const glm::vec3 dir = glm::normalize(fromDirection);
+  c.target = sphere.center;
+  c.eye = sphere.center + dir * distance;
+  c.up = std::abs(glm::dot(dir, glm::vec3(0, 1, 0))) > 0.99f ? glm::vec3(0, 0, -1) : glm::vec3(0, 1, 0);
+  c.nearPlane = std::max(distance - sphere.radius * 1.05f, distance * 1e-3f);
+  c.farPlane = distance + sphere.radius * 1.05f;
+  return c;
+}
+
+Camera orbit(const Camera& camera, float azimuthDegrees, float elevationDegrees) {
+  Camera c = camera;
+  const glm::vec3 offset = camera.eye - camera.target;
+  const glm::vec3 up = glm::normalize(camera.up);
+  glm::mat4 r = glm::rotate(glm::mat4(1.0f), glm::radians(azimuthDegrees), up);
+  glm::vec3 rotated = glm::vec3(r * glm::vec4(offset, 0.0f));
+  const glm::vec3 right = glm::normalize(glm::cross(up, rotated));
+  r = glm::rotate(glm::mat4(1.0f), glm::radians(-elevationDegrees), right);
+  rotated = glm::vec3(r * glm::vec4(rotated, 0.0f));
+  c.eye = camera.target + rotated;
+  return c;
+}
+
+namespace {
+
+float parseFloat(const std::string& s, const std::string& field) {
+  std::size_t used = 0;
+  float v = 0.0f;
+  try {
+    v = std::stof(s, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != s.size() || !std::isfinite(v))
+    throw std::invalid_argument("--camera field '" + field + "': '" + s + "' is not a number");
+  return v;
+}
+
+glm::vec3 parseVec3(const std::string& s, const std::string& field) {
+  std::istringstream in(s);
+  std::string part;
+  float v[3];
+  int n = 0;
+  while (std::getline(in, part, ',')) {
+    if (n == 3) break;
+    v[n++] = parseFloat(part, field);
+  }
+  if (n != 3 || std::count(s.begin(), s.end(), ',') != 2)
+    throw std::invalid_argument("--camera field '" + field + "': expected X,Y,Z, got '" + s + "'");
+  return {v[0], v[1], v[2]};
+}
+
+}  // namespace
+
+Camera parseCamera(const std::string& text, const Camera& base) {
+  Camera c = base;
+  std::istringstream in(text);
+  std::string token;
+  while (in >> token) {
+    const auto eq = token.find('=');
+    if (eq == std::string::npos)
+      throw std::invalid_argument("--camera: expected key=value, got '" + token + "'");
+    const std::string key = token.substr(0, eq), value = token.substr(eq + 1);
+    if (key == "eye") c.eye = parseVec3(value, key);
+    else if (key == "target") c.target = parseVec3(value, key);
+    else if (key == "up") c.up = parseVec3(value, key);
+    else if (key == "fovy") c.fovyDegrees = parseFloat(value, key);
+    else if (key == "near") c.nearPlane = parseFloat(value, key);
+    else if (key == "far") c.farPlane = parseFloat(value, key);
+    else
+      throw std::invalid_argument("--camera: unknown field '" + key + "' (known: eye, target, up, fovy, near, far)");
+  }
+  if (glm::length(c.eye - c.target) <= 0.0f) throw std::invalid_argument("--camera: eye equals target");
+  if (!(c.fovyDegrees > 0.0f && c.fovyDegrees < 180.0f))
+    throw std::invalid_argument("--camera field 'fovy': must be in (0, 180) degrees");
+  if (!(c.nearPlane > 0.0f && c.farPlane > c.nearPlane))
+    throw std::invalid_argument("--camera: need 0 < near < far");
+  return c;
+}
+
+}  // namespace tlab::render

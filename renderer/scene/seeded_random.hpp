@@ -1,0 +1,29 @@
+#pragma once
+// A seeded random source whose output is identical on every platform and standard library:
+// std::mt19937 is fully specified, the std:: distributions are not, so we map bits ourselves.
+#include <cstdint>
+#include <random>
+
+namespace tlab::render {
+
+class SeededRandom {
+ public:
+  explicit SeededRandom(std::uint64_t seed) : engine_(static_cast<std::uint32_t>(seed ^ (seed >> 32))) {}
+  std::uint32_t bits() { return engine_(); }
+  // Uniform in [0, 1) with 24 bits of resolution.
+  float uniform() { return static_cast<float>(engine_() >> 8) * (1.0f / 16777216.0f); }
+  float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
+  // Uniform integer in [0, n) (n > 0), by rejection: no modulo bias.
+  std::uint32_t below(std::uint32_t n) {
+    const std::uint32_t limit = UINT32_MAX - UINT32_MAX % n;
+    std::uint32_t r;
+    do r = engine_();
+    while (r >= limit);
+    return r % n;
+  }
+
+ private:
+  std::mt19937 engine_;
+};
+
+}  // namespace tlab::render

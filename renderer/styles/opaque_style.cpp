@@ -1,0 +1,13 @@
+#include "renderer/styles/opaque_style.hpp"
+
+#include "renderer/compose/opaque_raster_pass.hpp"
+
+namespace tlab::render {
+
+std::vector<std::unique_ptr<RenderPass>> OpaqueStyle::passes(const StyleParams&) const {
+  std::vector<std::unique_ptr<RenderPass>> p;
+  p.push_back(std::make_unique<OpaqueRasterPass>());
+  return p;
+}
+
+}  // namespace tlab::render

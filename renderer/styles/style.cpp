@@ -1,0 +1,47 @@
+#include "renderer/styles/style.hpp"
+
+#include <stdexcept>
+
+#include "renderer/styles/constant_style.hpp"
+#include "renderer/styles/opaque_style.hpp"
+
+namespace tlab::render {
+
+std::vector<ParamSpec> Style::allParams() const {
+  auto specs = params();
+  specs.push_back(ParamSpec::choice("lighting", "headlight", {"headlight", "none"},
+                                    "surface shading before transparency: two-sided headlight diffuse, or the flat colour"));
+  return specs;
+}
+
+StyleParams Style::resolve(const std::map<std::string, std::string>& settings) const {
+  return StyleParams(name(), allParams(), settings);
+}
+
+namespace {
+const std::vector<std::unique_ptr<Style>>& registry() {
+  static const auto styles = [] {
+    std::vector<std::unique_ptr<Style>> s;
+    s.push_back(std::make_unique<OpaqueStyle>());
+    s.push_back(std::make_unique<ConstantStyle>());
+    return s;
+  }();
+  return styles;
+}
+}  // namespace
+
+std::vector<std::string> styleNames() {
+  std::vector<std::string> names;
+  for (const auto& s : registry()) names.push_back(s->name());
+  return names;
+}
+
+const Style& findStyle(const std::string& name) {
+  for (const auto& s : registry())
+    if (s->name() == name) return *s;
+  std::string known;
+  for (const auto& n : styleNames()) known += (known.empty() ? "" : ", ") + n;
+  throw std::invalid_argument("unknown style '" + name + "' (known: " + known + ")");
+}
+
+}  // namespace tlab::render

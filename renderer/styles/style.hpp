@@ -1,0 +1,35 @@
+#pragma once
+// A transparency style: its parameters, the fragment properties it needs, and the ordered passes
+// (operators, then compositing) it runs on the illustration buffer. The pipeline builds exactly
+// what the style declares.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "renderer/buffer/fragment_layout.hpp"
+#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/styles/style_params.hpp"
+
+namespace tlab::render {
+
+class Style {
+ public:
+  virtual ~Style() = default;
+  virtual std::string name() const = 0;
+  virtual std::string description() const = 0;
+  // The style's own parameters; `lighting` is added for every style (see allParams).
+  virtual std::vector<ParamSpec> params() const = 0;
+  // False for styles that need only the nearest surface (no fragment lists at all).
+  virtual bool usesFragmentLists() const { return true; }
+  virtual FragmentProperties properties(const StyleParams& params) const = 0;
+  virtual std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const = 0;
+
+  std::vector<ParamSpec> allParams() const;
+  StyleParams resolve(const std::map<std::string, std::string>& settings) const;
+};
+
+// The registered styles, by name; throws std::invalid_argument listing the known ones.
+const Style& findStyle(const std::string& name);
+std::vector<std::string> styleNames();
+
+}  // namespace tlab::render
