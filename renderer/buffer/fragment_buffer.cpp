@@ -24,10 +24,11 @@ gpu::ShaderDefines with(gpu::ShaderDefines d, const std::string& name, const std
   return d;
 }
 
-std::string mib(double bytes) {
+std::string humanBytes(double bytes) {
   std::ostringstream s;
   s.precision(1);
-  s << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
+  if (bytes < 1024.0 * 1024.0) s << std::fixed << bytes / 1024.0 << " KiB";
+  else s << std::fixed << bytes / (1024.0 * 1024.0) << " MiB";
   return s.str();
 }
 
@@ -82,7 +83,7 @@ void FragmentBuffer::ensureCapacity(std::size_t fragments) {
   if (need > double(maxBytes_)) {
     std::ostringstream msg;
     msg << "the illustration buffer needs " << fragments << " fragments x " << recordBytes << " bytes = "
-        << mib(need) << " per fragment array, more than the allowed " << mib(double(maxBytes_))
+        << humanBytes(need) << " per fragment array, more than the allowed " << humanBytes(double(maxBytes_))
         << ": use a lower resolution";
     throw gpu::GlError(msg.str());
   }

@@ -1,12 +1,12 @@
 #include "renderer/styles/opaque_style.hpp"
 
-#include "renderer/compose/opaque_raster_pass.hpp"
+#include "renderer/compose/raster_pass.hpp"
 
 namespace tlab::render {
 
 std::vector<std::unique_ptr<RenderPass>> OpaqueStyle::passes(const StyleParams&) const {
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<OpaqueRasterPass>());
+  p.push_back(std::make_unique<RasterPass>(RasterPass::Mode::ZBuffer));
   return p;
 }
 

@@ -4,6 +4,7 @@
 
 #include "renderer/styles/constant_style.hpp"
 #include "renderer/styles/opaque_style.hpp"
+#include "renderer/styles/unsorted_style.hpp"
 
 namespace tlab::render {
 
@@ -24,6 +25,7 @@ const std::vector<std::unique_ptr<Style>>& registry() {
     std::vector<std::unique_ptr<Style>> s;
     s.push_back(std::make_unique<OpaqueStyle>());
     s.push_back(std::make_unique<ConstantStyle>());
+    s.push_back(std::make_unique<UnsortedStyle>());
     return s;
   }();
   return styles;

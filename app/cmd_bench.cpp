@@ -1,0 +1,172 @@
+// tlab bench: speed measurements (never timed assertions in tests).
+//   tlab bench render — the per-pass timing table of Carnecky Figs. 14-15 on the torus, with the
+//   ratio to plain unsorted blending (the floor) and the R² of time vs. fragments.
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "app/commands.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "renderer/pipeline/renderer.hpp"
+#include "renderer/scene/scene_source.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct BenchRenderOptions {
+  bool json = false;
+  bool quick = false;
+  std::string fill = "both";
+  std::string style = "constant";
+  int repeats = 3;
+};
+
+struct Row {
+  std::string sweep, scene;
+  int size = 0;
+  std::size_t triangles = 0;
+  std::string fill;
+  std::uint64_t fragments = 0;
+  std::vector<std::pair<std::string, double>> passes;  // medians
+  double listMs = 0, floorMs = 0;
+};
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+// Median per pass over `repeats` timed frames after one warm-up frame.
+std::vector<std::pair<std::string, double>> timeFrames(render::Renderer& r, const render::RenderRequest& q, int repeats,
+                                                       std::uint64_t* fragments) {
+  render::RenderStats stats;
+  r.render(q, &stats);  // warm-up: shader compilation, pool growth
+  std::vector<std::vector<double>> samples;
+  std::vector<std::string> names;
+  for (int i = 0; i < repeats; ++i) {
+    r.render(q, &stats);
+    for (std::size_t p = 0; p < stats.passMilliseconds.size(); ++p) {
+      if (samples.size() <= p) {
+        samples.emplace_back();
+        names.push_back(stats.passMilliseconds[p].first);
+      }
+      samples[p].push_back(stats.passMilliseconds[p].second);
+    }
+  }
+  if (fragments) *fragments = stats.fragments;
+  std::vector<std::pair<std::string, double>> out;
+  for (std::size_t p = 0; p < names.size(); ++p) out.emplace_back(names[p], median(samples[p]));
+  return out;
+}
+
+double sum(const std::vector<std::pair<std::string, double>>& passes) {
+  double t = 0;
+  for (const auto& p : passes) t += p.second;
+  return t;
+}
+
+// Least-squares line through (x, y) and its coefficient of determination.
+double rSquared(const std::vector<double>& x, const std::vector<double>& y) {
+  const double n = double(x.size());
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i] / n, my += y[i] / n;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  return sxx > 0 && syy > 0 ? (sxy * sxy) / (sxx * syy) : 0.0;
+}
+
+Row measure(const std::string& sweep, const std::string& source, int size, render::FillMethod fill,
+            const BenchRenderOptions& o) {
+  render::Renderer renderer(render::loadScene(source));
+  render::RenderRequest q;
+  q.width = q.height = size;
+  q.style = o.style;
+  q.fill = fill;
+  Row row{sweep, source, size, renderer.scene().triangleCount(), render::fillMethodName(fill)};
+  row.passes = timeFrames(renderer, q, o.repeats, &row.fragments);
+  row.listMs = sum(row.passes);
+  render::RenderRequest floor = q;
+  floor.style = "unsorted";
+  row.floorMs = sum(timeFrames(renderer, floor, o.repeats, nullptr));
+  return row;
+}
+
+void runBenchRender(const BenchRenderOptions& o) {
+  const auto context = gpu::createHeadlessContext();
+  std::vector<render::FillMethod> fills;
+  if (o.fill == "both" || o.fill == "scatter") fills.push_back(render::FillMethod::CountScatter);
+  if (o.fill == "both" || o.fill == "list") fills.push_back(render::FillMethod::LinkedList);
+  if (fills.empty()) throw std::invalid_argument("--fill must be scatter, list or both");
+  const std::vector<int> sizes = o.quick ? std::vector<int>{128, 256, 512} : std::vector<int>{128, 256, 512, 1024, 2048};
+  const std::vector<int> triangles = o.quick ? std::vector<int>{10000, 100000} : std::vector<int>{10000, 30000, 100000, 300000, 1000000};
+  std::vector<Row> rows;
+  for (auto fill : fills) {
+    for (int s : sizes) rows.push_back(measure("resolution", "builtin:torus?triangles=100000", s, fill, o));
+    for (int t : triangles)
+      rows.push_back(measure("triangles", "builtin:torus?triangles=" + std::to_string(t), o.quick ? 512 : 1024, fill, o));
+    rows.push_back(measure("layers", "builtin:quad-stack?n=16", 512, fill, o));
+  }
+  nlohmann::json j = nlohmann::json::array();
+  if (!o.json) {
+    std::printf("tlab bench render: style %s, median of %d frames after a warm-up; ms per pass\n", o.style.c_str(), o.repeats);
+    std::printf("%-10s %-8s %-36s %5s %9s %9s %8s %8s %8s %8s %9s %9s %7s\n", "sweep", "fill", "scene", "size", "triangles",
+                "fragments", "fill", "sort", "compose", "total", "Mfrag/s", "unsorted", "ratio");
+  }
+  for (const auto& r : rows) {
+    const auto get = [&](const char* n) {
+      for (const auto& p : r.passes)
+        if (p.first == n) return p.second;
+      return 0.0;
+    };
+    const double mfs = r.listMs > 0 ? double(r.fragments) / r.listMs / 1000.0 : 0.0;
+    const double ratio = r.floorMs > 0 ? r.listMs / r.floorMs : 0.0;
+    if (o.json) {
+      nlohmann::json passes = nlohmann::json::object();
+      for (const auto& p : r.passes) passes[p.first] = p.second;
+      j.push_back({{"sweep", r.sweep}, {"fill", r.fill}, {"scene", r.scene}, {"size", r.size}, {"triangles", r.triangles},
+                   {"fragments", r.fragments}, {"pass_ms", passes}, {"total_ms", r.listMs},
+                   {"fragments_per_second", mfs * 1e6}, {"unsorted_ms", r.floorMs}, {"ratio_to_unsorted", ratio}});
+    } else {
+      std::printf("%-10s %-8s %-36s %5d %9zu %9llu %8.1f %8.1f %8.1f %8.1f %9.1f %9.1f %7.1f\n", r.sweep.c_str(), r.fill.c_str(),
+                  r.scene.c_str(), r.size, r.triangles, static_cast<unsigned long long>(r.fragments), get("fill"), get("sort"),
+                  get("compose"), r.listMs, mfs, r.floorMs, ratio);
+    }
+  }
+  for (const auto& fill : fills) {
+    std::vector<double> x, y;
+    for (const auto& r : rows)
+      if (r.sweep == "resolution" && r.fill == render::fillMethodName(fill)) {
+        x.push_back(double(r.fragments));
+        y.push_back(r.listMs);
+      }
+    const double r2 = rSquared(x, y);
+    if (o.json) j.push_back({{"fit", "total_ms ~ fragments (resolution sweep)"}, {"fill", render::fillMethodName(fill)}, {"r_squared", r2}});
+    else std::printf("R^2 of a linear fit of total time vs. fragments over the resolution sweep (%s): %.4f\n",
+                     render::fillMethodName(fill).c_str(), r2);
+  }
+  if (o.json) std::cout << j.dump(2) << "\n";
+}
+
+}  // namespace
+
+void addBenchCommand(CLI::App& app) {
+  auto* bench = app.add_subcommand("bench", "Speed measurements (see also the Google Benchmark programs in bench/)");
+  bench->require_subcommand(1);
+  auto o = std::make_shared<BenchRenderOptions>();
+  auto* render = bench->add_subcommand("render", "Per-pass timing of the illustration buffer vs. fragments and triangles (Carnecky Figs. 14-15)");
+  render->add_flag("--json", o->json, "print JSON");
+  render->add_flag("--quick", o->quick, "a smaller sweep (up to 512x512 and 100K triangles)");
+  render->add_option("--fill", o->fill, "scatter, list or both")->capture_default_str();
+  render->add_option("--style", o->style, "style to time")->capture_default_str();
+  render->add_option("--repeats", o->repeats, "timed frames per configuration (median)")->capture_default_str()->check(CLI::Range(1, 100));
+  render->callback([o] { runBenchRender(*o); });
+}
+
+}  // namespace tlab::app

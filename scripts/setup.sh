@@ -1,0 +1,35 @@
+#!/usr/bin/env bash
+# Installs the Debian 12 packages Transparency Lab builds and runs with. Idempotent and
+# non-interactive; as root it installs, otherwise it prints the sudo command to run.
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config git python3 python3-glad
+  libglfw3-dev libglm-dev libtinygltf-dev libosmesa6-dev libgl-dev libegl-dev
+  libsqlite3-dev sqlite3 libboost-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev libcli11-dev
+  libcgal-dev libeigen3-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xdotool
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+    missing+=("$p")
+  fi
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "setup: all ${#packages[@]} Debian packages are installed"
+  exit 0
+fi
+
+echo "setup: installing ${missing[*]}"
+if [ "$(id -u)" -ne 0 ]; then
+  echo "setup: not root - run: sudo apt-get update && sudo apt-get install -y ${missing[*]}" >&2
+  exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "setup: done"

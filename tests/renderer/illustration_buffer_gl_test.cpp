@@ -1,0 +1,140 @@
+// The illustration buffer against analytic layer counts, its overflow handling and determinism.
+#include <gtest/gtest.h>
+
+#include "renderer/pipeline/renderer.hpp"
+#include "renderer/scene/scene_source.hpp"
+#include "tests/support/gl_fixture.hpp"
+
+using namespace tlab::render;
+
+namespace {
+
+RenderRequest request(int w, int h, FillMethod fill = FillMethod::CountScatter) {
+  RenderRequest r;
+  r.width = w;
+  r.height = h;
+  r.style = "constant";
+  r.fill = fill;
+  r.timePasses = false;
+  return r;
+}
+
+std::uint16_t countAt(const Renderer& renderer, int w, int x, int y) { return renderer.layerCounts()[std::size_t(y) * w + x]; }
+
+}  // namespace
+
+class BothFillMethods : public ::testing::TestWithParam<FillMethod> {};
+
+TEST_P(BothFillMethods, NestedSpheresGiveTwoLayersPerShellThroughTheCentre) {
+  Renderer renderer(loadScene("builtin:nested-spheres?n=3"));
+  renderer.render(request(65, 65, GetParam()));
+  EXPECT_EQ(countAt(renderer, 65, 32, 32), 6);
+  EXPECT_EQ(countAt(renderer, 65, 0, 0), 0);
+  EXPECT_EQ(countAt(renderer, 65, 64, 64), 0);
+}
+
+TEST_P(BothFillMethods, CubeGivesTwoLayersInsideItsSilhouette) {
+  Renderer renderer(loadScene("builtin:cube"));
+  renderer.render(request(64, 64, GetParam()));
+  EXPECT_EQ(countAt(renderer, 64, 32, 32), 2);
+  EXPECT_EQ(countAt(renderer, 64, 0, 0), 0);
+}
+
+TEST_P(BothFillMethods, QuadStackGivesNLayersEverywhere) {
+  Renderer renderer(loadScene("builtin:quad-stack?n=32&m=4"));
+  RenderStats stats;
+  renderer.render(request(48, 40, GetParam()), &stats);
+  for (auto c : renderer.layerCounts()) ASSERT_EQ(c, 32);
+  EXPECT_EQ(stats.fragments, 32u * 48u * 40u);
+  EXPECT_EQ(stats.maxListLength, 32u);
+  EXPECT_DOUBLE_EQ(stats.meanListLength, 32.0);
+}
+
+TEST_P(BothFillMethods, ListsAreSortedFrontToBackWithFacingAndIds) {
+  Renderer renderer(loadScene("builtin:nested-spheres?n=3"));
+  RenderRequest r = request(65, 65, GetParam());
+  r.allProperties = true;
+  renderer.render(r);
+  const auto list = renderer.fragmentsAt(32, 32);
+  ASSERT_EQ(list.size(), 6u);
+  const std::uint32_t objects[6] = {0, 1, 2, 2, 1, 0};  // outer shell is object 0
+  for (std::size_t i = 0; i < 6; ++i) {
+    if (i > 0) EXPECT_LT(list[i - 1].depth, list[i].depth);
+    EXPECT_EQ(list[i].object, objects[i]);
+    EXPECT_EQ(list[i].frontFacing, i < 3);
+    EXPECT_NEAR(glm::length(list[i].normal), 1.0f, 1e-3f);
+  }
+  // Each shell is its own connected component.
+  EXPECT_NE(list[0].component, list[1].component);
+  EXPECT_EQ(list[0].component, list[5].component);
+}
+
+TEST_P(BothFillMethods, ForcedOverflowGivesTheSameImage) {
+  const Scene scene = loadScene("builtin:open-cylinders");
+  Renderer large(scene), tiny(scene);
+  RenderRequest big = request(96, 80, GetParam());
+  big.initialPoolFragments = 1u << 20;
+  RenderRequest small = big;
+  small.initialPoolFragments = 16;
+  RenderStats bigStats, smallStats;
+  const Image a = large.render(big, &bigStats);
+  const Image b = tiny.render(small, &smallStats);
+  EXPECT_EQ(encodePng(a), encodePng(b));
+  EXPECT_EQ(bigStats.rerenders, 0);
+  EXPECT_EQ(bigStats.poolGrowths, 0);
+  EXPECT_GE(smallStats.poolGrowths, 1);
+  if (GetParam() == FillMethod::LinkedList) EXPECT_GE(smallStats.rerenders, 1);
+  EXPECT_EQ(bigStats.fragments, smallStats.fragments);
+}
+
+INSTANTIATE_TEST_SUITE_P(Fill, BothFillMethods, ::testing::Values(FillMethod::CountScatter, FillMethod::LinkedList),
+                         [](const auto& info) { return fillMethodName(info.param); });
+
+TEST(IllustrationBuffer, BothFillMethodsGiveIdenticalImages) {
+  Renderer renderer(loadScene("builtin:open-cylinders"));
+  const Image a = renderer.render(request(96, 96, FillMethod::CountScatter));
+  const Image b = renderer.render(request(96, 96, FillMethod::LinkedList));
+  EXPECT_EQ(encodePng(a), encodePng(b));
+}
+
+TEST(IllustrationBuffer, RepeatedRendersAreByteIdentical) {
+  Renderer renderer(loadScene("builtin:torus?major_segments=48&minor_segments=24"));
+  const auto a = encodePng(renderer.render(request(80, 64)));
+  const auto b = encodePng(renderer.render(request(80, 64)));
+  Renderer fresh(loadScene("builtin:torus?major_segments=48&minor_segments=24"));
+  const auto c = encodePng(fresh.render(request(80, 64)));
+  EXPECT_EQ(a, b);
+  EXPECT_EQ(a, c);
+}
+
+TEST(IllustrationBuffer, StylesAllocateOnlyWhatTheyNeed) {
+  Renderer renderer(loadScene("builtin:sphere"));
+  RenderStats stats;
+  renderer.render(request(32, 32), &stats);
+  EXPECT_EQ(stats.fragmentProperties, (std::vector<std::string>{"depth", "triangle", "color"}));
+  RenderRequest opaque = request(32, 32);
+  opaque.style = "opaque";
+  renderer.render(opaque, &stats);
+  EXPECT_EQ(stats.fragments, 0u);
+  EXPECT_TRUE(stats.fragmentProperties.empty());
+  EXPECT_THROW(renderer.layerCounts(), std::logic_error);  // no lists were built
+}
+
+TEST(IllustrationBuffer, ExceedingTheMemoryLimitSaysHowMuchWasNeeded) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentBuffer buffer(shaders, 64, 64, FragmentLayout({}), FillMethod::CountScatter, 0, 40000);
+  const Scene scene = loadScene("builtin:quad-stack?n=8");
+  GpuScene gpu(scene);
+  RasterUniforms u;
+  u.view = scene.camera->view();
+  u.projection = scene.camera->projection(1.0f);
+  PassTimer timer(false);
+  try {
+    buffer.build(gpu, u, timer);
+    FAIL();
+  } catch (const std::exception& e) {
+    const std::string msg = e.what();
+    EXPECT_NE(msg.find("needs 32768 fragments"), std::string::npos) << msg;
+    EXPECT_NE(msg.find("lower resolution"), std::string::npos) << msg;
+  }
+}

@@ -1,0 +1,49 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "renderer/image/image.hpp"
+
+using namespace tlab::render;
+
+TEST(Image, PngBytesAreDeterministicAndRowZeroIsTheTop) {
+  Image img(3, 2, glm::vec4(0, 0, 0, 1));
+  img.at(0, 0) = glm::vec4(1, 0, 0, 1);
+  const auto a = encodePng(img), b = encodePng(img);
+  EXPECT_EQ(a, b);
+  const auto rgba = toRgba8(img);
+  EXPECT_EQ(rgba[0], 255);  // first pixel written = top-left
+  EXPECT_EQ(rgba[4], 0);
+}
+
+TEST(Image, Rgba8RoundsAndClamps) {
+  Image img(3, 1);
+  img.at(0, 0) = glm::vec4(0.5f, -1.0f, 2.0f, 1.0f);
+  const auto rgba = toRgba8(img);
+  EXPECT_EQ(rgba[0], 128);
+  EXPECT_EQ(rgba[1], 0);
+  EXPECT_EQ(rgba[2], 255);
+}
+
+TEST(Image, Pgm16HeaderAndBigEndianSamples) {
+  const auto pgm = encodePgm16({1, 258}, 2, 1);
+  const std::string header = "P5\n2 1\n65535\n";
+  ASSERT_EQ(pgm.size(), header.size() + 4);
+  EXPECT_EQ(std::string(pgm.begin(), pgm.begin() + long(header.size())), header);
+  EXPECT_EQ(pgm[header.size() + 0], 0);
+  EXPECT_EQ(pgm[header.size() + 1], 1);
+  EXPECT_EQ(pgm[header.size() + 2], 1);
+  EXPECT_EQ(pgm[header.size() + 3], 2);
+}
+
+TEST(Image, AtomicWriteLeavesNoPartialFileOnFailure) {
+  EXPECT_THROW(writeFileAtomically("/nonexistent-dir/x.png", {1, 2, 3}), std::runtime_error);
+  const auto dir = std::filesystem::temp_directory_path() / "tlab_image_test";
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "a.bin").string();
+  writeFileAtomically(path, {1, 2, 3});
+  EXPECT_EQ(std::filesystem::file_size(path), 3u);
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos);
+}
