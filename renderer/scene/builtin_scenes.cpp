@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "renderer/scene/seeded_random.hpp"
+#include "renderer/util/parse_number.hpp"
 
 namespace tlab::render {
 
@@ -138,6 +139,17 @@ std::string knownNames(const std::vector<BuiltinSceneSpec>& specs) {
   return out;
 }
 
+// Two counter-clockwise triangles per cell of a (rows+1) x (cols+1) vertex grid laid out row by
+// row, as the torus and the cylinder are.
+void appendGridTriangles(TriangleMesh& m, int rows, int cols) {
+  const auto idx = [&](int r, int c) { return static_cast<std::uint32_t>(r * (cols + 1) + c); };
+  for (int r = 0; r < rows; ++r)
+    for (int c = 0; c < cols; ++c) {
+      m.triangles.push_back({idx(r, c), idx(r, c + 1), idx(r + 1, c)});
+      m.triangles.push_back({idx(r, c + 1), idx(r + 1, c + 1), idx(r + 1, c)});
+    }
+}
+
 }  // namespace
 
 TriangleMesh makeUvSphere(float radius, int segments, int rings) {
@@ -201,12 +213,7 @@ TriangleMesh makeTorus(float R, float r, int majorSegments, int minorSegments) {
       m.st.push_back({u, v});
     }
   }
-  const auto idx = [&](int i, int j) { return static_cast<std::uint32_t>(i * (minorSegments + 1) + j); };
-  for (int i = 0; i < majorSegments; ++i)
-    for (int j = 0; j < minorSegments; ++j) {
-      m.triangles.push_back({idx(i, j), idx(i, j + 1), idx(i + 1, j)});
-      m.triangles.push_back({idx(i, j + 1), idx(i + 1, j + 1), idx(i + 1, j)});
-    }
+  appendGridTriangles(m, majorSegments, minorSegments);
   return m;
 }
 
@@ -222,12 +229,7 @@ TriangleMesh makeOpenCylinder(float radius, float height, int segments, int ring
       m.st.push_back({u, t});
     }
   }
-  const auto idx = [&](int r, int s) { return static_cast<std::uint32_t>(r * (segments + 1) + s); };
-  for (int r = 0; r < rings; ++r)
-    for (int s = 0; s < segments; ++s) {
-      m.triangles.push_back({idx(r, s), idx(r, s + 1), idx(r + 1, s)});
-      m.triangles.push_back({idx(r, s + 1), idx(r + 1, s + 1), idx(r + 1, s)});
-    }
+  appendGridTriangles(m, rings, segments);
   return m;
 }
 
@@ -265,15 +267,10 @@ Scene buildBuiltinScene(const std::string& nameAndQuery, const std::vector<Built
         throw std::invalid_argument("built-in scene '" + name + "' has no parameter '" + key + "' (known: " + known + ")");
       }
       const std::string text = eq == std::string::npos ? "" : pair.substr(eq + 1);
-      std::size_t used = 0;
-      double v = 0;
-      try {
-        v = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (text.empty() || used != text.size() || !std::isfinite(v))
+      const auto parsed = parseFiniteNumber(text);
+      if (!parsed)
         throw std::invalid_argument("built-in scene '" + name + "' parameter '" + key + "': '" + text + "' is not a number");
+      const double v = *parsed;
       if (param->integer && v != std::floor(v))
         throw std::invalid_argument("built-in scene '" + name + "' parameter '" + key + "' must be a whole number, got " + text);
       if (v < param->minValue || v > param->maxValue) {

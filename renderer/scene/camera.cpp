@@ -7,6 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "renderer/util/parse_number.hpp"
+
 namespace tlab::render {
 
 glm::mat4 Camera::view() const { return glm::lookAt(eye, target, up); }
@@ -47,16 +49,9 @@ Camera orbit(const Camera& camera, float azimuthDegrees, float elevationDegrees)
 namespace {
 
 float parseFloat(const std::string& s, const std::string& field) {
-  std::size_t used = 0;
-  float v = 0.0f;
-  try {
-    v = std::stof(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != s.size() || !std::isfinite(v))
-    throw std::invalid_argument("--camera field '" + field + "': '" + s + "' is not a number");
-  return v;
+  const auto v = parseFiniteNumber(s);
+  if (!v) throw std::invalid_argument("--camera field '" + field + "': '" + s + "' is not a number");
+  return static_cast<float>(*v);
 }
 
 glm::vec3 parseVec3(const std::string& s, const std::string& field) {

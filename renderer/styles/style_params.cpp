@@ -4,6 +4,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "renderer/util/parse_number.hpp"
+
 namespace tlab::render {
 
 ParamSpec ParamSpec::number(std::string name, double def, double lo, double hi, std::string help) {
@@ -38,15 +40,10 @@ std::string joined(const std::vector<std::string>& words) {
 }
 
 double parseNumber(const std::string& style, const ParamSpec& spec, const std::string& text) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !std::isfinite(v))
+  const auto parsed = parseFiniteNumber(text);
+  if (!parsed)
     throw std::invalid_argument("style '" + style + "' parameter '" + spec.name + "': '" + text + "' is not a number");
+  const double v = *parsed;
   if (v < spec.minValue || v > spec.maxValue) {
     std::ostringstream msg;
     msg << "style '" << style << "' parameter '" << spec.name << "' = " << text << " is outside [" << spec.minValue
