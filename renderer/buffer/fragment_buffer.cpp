@@ -15,9 +15,6 @@ enum Binding : GLuint {
   kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7,
 };
 constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
-constexpr std::uint32_t kGroupSize = 64;     // local_size_x of the compute passes
-
-GLuint groupsFor(std::size_t items) { return static_cast<GLuint>((items + kGroupSize - 1) / kGroupSize); }
 
 gpu::ShaderDefines with(gpu::ShaderDefines d, const std::string& name, const std::string& value) {
   d.emplace_back(name, value);
@@ -126,7 +123,7 @@ std::uint32_t FragmentBuffer::prefixSum() {
     p.use();
     glUniform1ui(p.uniform("uPixels"), n);
     glUniform1ui(p.uniform("uBlocks"), blocks);
-    glDispatchCompute(phase == 1 ? 1 : groupsFor(blocks), 1, 1);
+    gpu::dispatchLinear(phase == 1 ? 1 : blocks);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
   std::uint32_t counters[2] = {0, 0};
@@ -186,7 +183,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
     order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
     sortProgram_->use();
     glUniform1ui(sortProgram_->uniform("uPixels"), static_cast<GLuint>(pixels()));
-    glDispatchCompute(groupsFor(pixels()), 1, 1);
+    gpu::dispatchLinear(pixels());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   });
   gpu::checkGl("building the illustration buffer");

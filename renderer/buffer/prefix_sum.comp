@@ -3,7 +3,7 @@
 // pixel's fragments occupy one contiguous block). Three phases (TLAB_PHASE 1, 2, 3): block sums,
 // a scan of the block sums, then each block's running sum.
 #include "buffer/fragment_layout.glsl"
-layout(local_size_x = 64) in;
+#include "buffer/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_LIST_NEXT) buffer BlockSums { uint blockSum[]; };
@@ -13,7 +13,7 @@ uniform uint uBlocks;
 const uint BLOCK = 256u;
 
 void main() {
-  uint block = gl_GlobalInvocationID.x;
+  uint block = linearInvocation();
 #if TLAB_PHASE == 1
   if (block >= uBlocks) return;
   uint sum = 0u;

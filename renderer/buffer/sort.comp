@@ -4,7 +4,7 @@
 // broken by the global triangle index, so the order never depends on thread scheduling.
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
 #include "buffer/fragment_layout.glsl"
-layout(local_size_x = 64) in;
+#include "buffer/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint listHead[]; };
@@ -22,7 +22,7 @@ bool before(uint a, uint b) {
 }
 
 void main() {
-  uint pixel = gl_GlobalInvocationID.x;
+  uint pixel = linearInvocation();
   if (pixel >= uPixels) return;
   uint n = pixelCount[pixel];
   if (n == 0u) return;

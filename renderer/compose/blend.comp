@@ -4,7 +4,7 @@
 // The per-fragment opacity comes from TLAB_ALPHA_SOURCE: 0 = the uniform uAlpha (style
 // `constant`); later styles provide their own per-fragment α.
 #include "buffer/fragment_layout.glsl"
-layout(local_size_x = 64) in;
+#include "buffer/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
@@ -14,7 +14,7 @@ uniform vec4 uBackground;
 uniform float uAlpha;
 
 void main() {
-  uint pixel = gl_GlobalInvocationID.x;
+  uint pixel = linearInvocation();
   if (pixel >= uPixels) return;
   uint n = pixelCount[pixel];
   uint base = pixelHead[pixel];

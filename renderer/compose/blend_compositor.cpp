@@ -14,7 +14,7 @@ void BlendCompositor::run(FrameContext& frame) {
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uAlpha"), alpha_);
-  glDispatchCompute(static_cast<GLuint>((buffer.pixels() + 63) / 64), 1, 1);
+  gpu::dispatchLinear(buffer.pixels());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   readOutputBuffer(output, frame.image);
   gpu::checkGl("compose/blend.comp");

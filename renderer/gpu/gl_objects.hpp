@@ -79,4 +79,8 @@ class Buffer {
   std::size_t bytes_ = 0;
 };
 
+// Dispatches enough 64-wide compute groups for `items` invocations as a 2-D grid that stays
+// under the 65535-groups-per-dimension limit; shaders index with buffer/compute_index.glsl.
+void dispatchLinear(std::size_t items);
+
 }  // namespace tlab::gpu

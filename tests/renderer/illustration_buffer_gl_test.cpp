@@ -138,3 +138,14 @@ TEST(IllustrationBuffer, ExceedingTheMemoryLimitSaysHowMuchWasNeeded) {
     EXPECT_NE(msg.find("lower resolution"), std::string::npos) << msg;
   }
 }
+
+// Regression: at 2048x2048 a 1-D dispatch of 64-wide groups needs 65536 groups, one more than GL
+// allows; compute passes now dispatch a 2-D grid.
+TEST(IllustrationBuffer, RendersAt2048x2048) {
+  Renderer renderer(loadScene("builtin:quad-stack?n=1"));
+  RenderStats stats;
+  const Image img = renderer.render(request(2048, 2048), &stats);
+  EXPECT_EQ(stats.fragments, 2048u * 2048u);
+  EXPECT_NE(img.at(2047, 2047), glm::vec4(0.0f));
+  for (auto c : renderer.layerCounts()) ASSERT_EQ(c, 1);
+}
