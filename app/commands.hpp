@@ -12,6 +12,8 @@ void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
 void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
 void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp
 void addStatcheckCommand(CLI::App& app); // cmd_statcheck.cpp
+void addReportCommand(CLI::App& app);    // cmd_report.cpp
+void addTaskCommand(CLI::App& app);      // cmd_task.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
 
 }  // namespace tlab::app

@@ -11,11 +11,13 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   tlab::app::addRenderCommand(app);
   tlab::app::addInspectCommand(app);
-  //TMP tlab::app::addBenchCommand(app);
-  //TMP tlab::app::addGalleryCommand(app);
-  //TMP tlab::app::addStatsCommand(app);
-  //TMP tlab::app::addReproduceCommand(app);
-  //TMP tlab::app::addStatcheckCommand(app);
+  tlab::app::addBenchCommand(app);
+  tlab::app::addGalleryCommand(app);
+  tlab::app::addStatsCommand(app);
+  tlab::app::addReproduceCommand(app);
+  tlab::app::addStatcheckCommand(app);
+  tlab::app::addReportCommand(app);
+  tlab::app::addTaskCommand(app);
   tlab::app::addVersionCommand(app);
   try {
     app.parse(argc, argv);

@@ -1,5 +1,8 @@
 #include "renderer/buffer/fragment_layout.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace tlab::render {
 
 FragmentLayout::FragmentLayout(FragmentProperties p) : properties(p) {
@@ -9,7 +12,7 @@ FragmentLayout::FragmentLayout(FragmentProperties p) : properties(p) {
     stride += words;
   };
   take(FragmentProperty::Color, 1, colorOffset);
-  take(FragmentProperty::Normal, 3, normalOffset);
+  take(FragmentProperty::Normal, 1, normalOffset);
   take(FragmentProperty::DepthGradient, 2, depthGradientOffset);
   take(FragmentProperty::Ids, 1, idsOffset);
   take(FragmentProperty::SurfaceParams, 2, stOffset);
@@ -38,6 +41,22 @@ std::vector<std::string> FragmentLayout::propertyNames() const {
   if (properties.has(FragmentProperty::Ids)) names.push_back("ids");
   if (properties.has(FragmentProperty::SurfaceParams)) names.push_back("st");
   return names;
+}
+
+glm::vec3 decodeNormal(std::uint32_t word) {
+  // unpackSnorm2x16: clamp(int16 / 32767, -1, 1), low half first.
+  const auto component = [](std::uint16_t bits) {
+    return std::clamp(float(static_cast<std::int16_t>(bits)) / 32767.0f, -1.0f, 1.0f);
+  };
+  const glm::vec2 e(component(std::uint16_t(word & 0xFFFF)), component(std::uint16_t(word >> 16)));
+  glm::vec3 n(e, 1.0f - std::abs(e.x) - std::abs(e.y));
+  if (n.z < 0.0f) {
+    const glm::vec2 w = (1.0f - glm::abs(glm::vec2(n.y, n.x))) *
+                        glm::vec2(n.x >= 0.0f ? 1.0f : -1.0f, n.y >= 0.0f ? 1.0f : -1.0f);
+    n.x = w.x;
+    n.y = w.y;
+  }
+  return glm::normalize(n);
 }
 
 }  // namespace tlab::render

@@ -21,3 +21,17 @@
 #define OFF_PRIM 1u
 
 uint fragWord(uint frag, uint offset) { return frag * uint(TLAB_STRIDE) + offset; }
+
+// Unit normals in one word: octahedral mapping, two 16-bit signed-normalised components
+// (angular error below 0.01 degrees), so a record stays within the 128 MiB block limit longer.
+vec2 octahedralWrap(vec2 v) { return (1.0 - abs(v.yx)) * vec2(v.x >= 0.0 ? 1.0 : -1.0, v.y >= 0.0 ? 1.0 : -1.0); }
+uint encodeNormal(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  return packSnorm2x16(n.z >= 0.0 ? n.xy : octahedralWrap(n.xy));
+}
+vec3 decodeNormal(uint word) {
+  vec2 e = unpackSnorm2x16(word);
+  vec3 n = vec3(e, 1.0 - abs(e.x) - abs(e.y));
+  if (n.z < 0.0) n.xy = octahedralWrap(n.xy);
+  return normalize(n);
+}

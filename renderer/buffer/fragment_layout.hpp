@@ -5,13 +5,15 @@
 #include <string>
 #include <vector>
 
+#include <glm/glm.hpp>
+
 #include "renderer/gpu/shader_program.hpp"
 
 namespace tlab::render {
 
 enum class FragmentProperty : std::uint32_t {
   Color = 1u << 0,          // shaded colour, RGBA8 (1 word)
-  Normal = 1u << 1,         // view-space unit normal (3 words)
+  Normal = 1u << 1,         // view-space unit normal, octahedral 2 x 16 bits (1 word)
   DepthGradient = 1u << 2,  // (dz/dx, dz/dy) of eye-space depth (2 words)
   Ids = 1u << 3,            // object id | component id | front-facing flag (1 word)
   SurfaceParams = 1u << 4,  // (s, t) (2 words)
@@ -34,5 +36,8 @@ struct FragmentLayout {
   gpu::ShaderDefines defines() const;
   std::vector<std::string> propertyNames() const;
 };
+
+// The host-side inverse of encodeNormal in buffer/fragment_layout.glsl.
+glm::vec3 decodeNormal(std::uint32_t word);
 
 }  // namespace tlab::render

@@ -24,10 +24,7 @@ void writeFragmentRecord(uint frag) {
       packUnorm4x8(vec4(shadeSurface(vObject, gl_FrontFacing, vViewNormal, vViewPosition), 1.0));
 #endif
 #ifdef TLAB_HAS_NORMAL
-  vec3 n = normalize(vViewNormal);
-  frags[fragWord(frag, TLAB_OFF_NORMAL) + 0u] = floatBitsToUint(n.x);
-  frags[fragWord(frag, TLAB_OFF_NORMAL) + 1u] = floatBitsToUint(n.y);
-  frags[fragWord(frag, TLAB_OFF_NORMAL) + 2u] = floatBitsToUint(n.z);
+  frags[fragWord(frag, TLAB_OFF_NORMAL)] = encodeNormal(normalize(vViewNormal));
 #endif
 #ifdef TLAB_HAS_DEPTH_GRADIENT
   frags[fragWord(frag, TLAB_OFF_DEPTH_GRADIENT) + 0u] = floatBitsToUint(gDepthGradient.x);

@@ -38,7 +38,7 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
   if (style.usesFragmentLists()) {
-    FragmentProperties props = style.properties(params);
+    FragmentProperties props = style.properties(params, SceneFacts{gpuScene_.componentCount()});
     if (request.allProperties) props.bits = 0x1Fu;  // every FragmentProperty
     const FragmentLayout layout(props);
     // Keep the buffer (and its pool) across frames of the same size and layout.
@@ -120,7 +120,7 @@ std::vector<FragmentRecord> Renderer::fragmentsAt(int x, int y) const {
       r.color = glm::vec4(c & 0xFF, (c >> 8) & 0xFF, (c >> 16) & 0xFF, c >> 24) / 255.0f;
     }
     if (L.properties.has(FragmentProperty::Normal))
-      r.normal = {f(i, L.normalOffset), f(i, L.normalOffset + 1), f(i, L.normalOffset + 2)};
+      r.normal = decodeNormal(words[i * L.stride + L.normalOffset]);
     if (L.properties.has(FragmentProperty::DepthGradient))
       r.depthGradient = {f(i, L.depthGradientOffset), f(i, L.depthGradientOffset + 1)};
     if (L.properties.has(FragmentProperty::Ids)) {

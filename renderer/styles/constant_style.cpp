@@ -8,7 +8,7 @@ std::vector<ParamSpec> ConstantStyle::params() const {
   return {ParamSpec::number("alpha", 0.25, 0.0, 1.0, "opacity of every layer")};
 }
 
-FragmentProperties ConstantStyle::properties(const StyleParams&) const {
+FragmentProperties ConstantStyle::properties(const StyleParams&, const SceneFacts&) const {
   FragmentProperties p;
   p |= FragmentProperty::Color;
   return p;

@@ -4,6 +4,7 @@
 
 #include "renderer/styles/constant_style.hpp"
 #include "renderer/styles/opaque_style.hpp"
+#include "renderer/styles/smart_style.hpp"
 #include "renderer/styles/unsorted_style.hpp"
 
 namespace tlab::render {
@@ -16,7 +17,9 @@ std::vector<ParamSpec> Style::allParams() const {
 }
 
 StyleParams Style::resolve(const std::map<std::string, std::string>& settings) const {
-  return StyleParams(name(), allParams(), settings);
+  StyleParams resolved(name(), allParams(), settings);
+  validate(resolved);
+  return resolved;
 }
 
 namespace {
@@ -26,6 +29,7 @@ const std::vector<std::unique_ptr<Style>>& registry() {
     s.push_back(std::make_unique<OpaqueStyle>());
     s.push_back(std::make_unique<ConstantStyle>());
     s.push_back(std::make_unique<UnsortedStyle>());
+    s.push_back(std::make_unique<SmartStyle>());
     return s;
   }();
   return styles;

@@ -2,6 +2,7 @@
 // A transparency style: its parameters, the fragment properties it needs, and the ordered passes
 // (operators, then compositing) it runs on the illustration buffer. The pipeline builds exactly
 // what the style declares.
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -12,6 +13,11 @@
 
 namespace tlab::render {
 
+// Facts about the scene a style may use to leave out what it does not need.
+struct SceneFacts {
+  std::uint32_t componentCount = 1;
+};
+
 class Style {
  public:
   virtual ~Style() = default;
@@ -21,7 +27,9 @@ class Style {
   virtual std::vector<ParamSpec> params() const = 0;
   // False for styles that need only the nearest surface (no fragment lists at all).
   virtual bool usesFragmentLists() const { return true; }
-  virtual FragmentProperties properties(const StyleParams& params) const = 0;
+  virtual FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const = 0;
+  // Checks combinations of parameters (single values are checked against their ParamSpec).
+  virtual void validate(const StyleParams&) const {}
   virtual std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const = 0;
 
   std::vector<ParamSpec> allParams() const;

@@ -1,0 +1,166 @@
+#include "analysis/anova_design.hpp"
+
+#include <map>
+
+#include "analysis/analysis_error.hpp"
+#include "analysis/factor.hpp"
+
+namespace tlab::analysis {
+
+std::size_t AnovaDesign::cellCount() const {
+  std::size_t k = 1;
+  for (const auto& f : within) k *= f.levels.size();
+  return k;
+}
+
+std::vector<std::size_t> withinCellLevels(const AnovaDesign& design, std::size_t cell) {
+  std::vector<std::size_t> levels(design.within.size());
+  for (std::size_t i = design.within.size(); i-- > 0;) {
+    const std::size_t k = design.within[i].levels.size();
+    levels[i] = cell % k;
+    cell /= k;
+  }
+  return levels;
+}
+
+std::string withinCellLabel(const AnovaDesign& design, std::size_t cell) {
+  const auto levels = withinCellLevels(design, cell);
+  std::string label;
+  for (std::size_t i = 0; i < levels.size(); ++i)
+    label += (i ? ", " : "") + design.within[i].name + "=" + design.within[i].levels[levels[i]];
+  return label;
+}
+
+namespace {
+
+void requireDistinctColumns(const std::vector<std::string>& columns) {
+  for (std::size_t i = 0; i < columns.size(); ++i)
+    for (std::size_t j = 0; j < i; ++j)
+      if (columns[i] == columns[j])
+        throw AnalysisError("column '" + columns[i] + "' is used twice in the design");
+}
+
+std::string betweenCellLabel(const std::vector<Factor>& factors, const std::vector<std::size_t>& lv) {
+  std::string label;
+  for (std::size_t i = 0; i < factors.size(); ++i)
+    label += (i ? ", " : "") + factors[i].name + "=" + factors[i].levels[lv[i]];
+  return label;
+}
+
+}  // namespace
+
+AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
+                            const std::vector<std::string>& between,
+                            const std::vector<std::string>& within, const std::string& subject) {
+  if (!within.empty() && subject.empty())
+    throw AnalysisError("within-subject factors need a subject column (--subject)");
+  std::vector<std::string> used = between;
+  used.insert(used.end(), within.begin(), within.end());
+  used.push_back(dv);
+  if (!subject.empty()) used.push_back(subject);
+  requireDistinctColumns(used);
+  if (between.empty() && within.empty())
+    throw AnalysisError("an ANOVA needs at least one factor (--between or --within)");
+
+  const std::vector<double> values = table.numericColumn(dv);
+  if (table.rowCount() == 0) throw AnalysisError(table.source() + ": no data rows");
+  std::vector<Factor> betweenFactors;
+  std::vector<Factor> withinFactors;
+  for (const auto& name : between) {
+    betweenFactors.push_back(makeFactor(table, name));
+    requireLevelCount(betweenFactors.back(), 2, SIZE_MAX, "a between-subject factor");
+  }
+  for (const auto& name : within) {
+    withinFactors.push_back(makeFactor(table, name));
+    requireLevelCount(withinFactors.back(), 2, SIZE_MAX, "a within-subject factor");
+  }
+
+  AnovaDesign design;
+  design.dv = dv;
+  for (const auto& f : betweenFactors) design.between.push_back({f.name, f.levels});
+  for (const auto& f : withinFactors) design.within.push_back({f.name, f.levels});
+  const std::size_t cells = design.cellCount();
+
+  // Subject of each row: the subject column, or the row itself.
+  std::vector<std::size_t> subjectOfRow(table.rowCount());
+  if (subject.empty()) {
+    for (std::size_t r = 0; r < table.rowCount(); ++r) {
+      subjectOfRow[r] = r;
+      design.subjects.push_back("row " + table.where(r));
+    }
+  } else {
+    const Factor s = makeFactor(table, subject);
+    subjectOfRow = s.codes;
+    design.subjects = s.levels;
+  }
+  const std::size_t n = design.subjects.size();
+
+  // Between group of each subject (must be constant within a subject).
+  design.betweenLevels.assign(n, std::vector<std::size_t>(betweenFactors.size(), SIZE_MAX));
+  std::vector<std::size_t> firstRow(n, SIZE_MAX);
+  for (std::size_t r = 0; r < table.rowCount(); ++r) {
+    const std::size_t s = subjectOfRow[r];
+    if (firstRow[s] == SIZE_MAX) firstRow[s] = r;
+    for (std::size_t f = 0; f < betweenFactors.size(); ++f) {
+      const std::size_t level = betweenFactors[f].codes[r];
+      std::size_t& known = design.betweenLevels[s][f];
+      if (known == SIZE_MAX) known = level;
+      if (known != level)
+        throw AnalysisError(table.where(r) + ": subject '" + design.subjects[s] + "' is in " +
+                            betweenFactors[f].name + "=" + betweenFactors[f].levels[level] +
+                            " here but in " + betweenFactors[f].name + "=" +
+                            betweenFactors[f].levels[known] + " at " + table.where(firstRow[s]) +
+                            " (a between-subject factor must be constant within a subject)");
+    }
+  }
+
+  // Cell means per subject.
+  std::vector<std::size_t> counts(n * cells, 0);
+  Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(cells));
+  Eigen::MatrixXd firstValue = sums;
+  for (std::size_t r = 0; r < table.rowCount(); ++r) {
+    std::size_t cell = 0;
+    for (const auto& f : withinFactors) cell = cell * f.levels.size() + f.codes[r];
+    const std::size_t s = subjectOfRow[r];
+    const auto si = static_cast<Eigen::Index>(s);
+    const auto ci = static_cast<Eigen::Index>(cell);
+    // Accumulate deviations from the cell's first value so that large offsets do not cancel.
+    if (counts[s * cells + cell] == 0) firstValue(si, ci) = values[r];
+    sums(si, ci) += values[r] - firstValue(si, ci);
+    ++counts[s * cells + cell];
+  }
+  design.y.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(cells));
+  for (std::size_t s = 0; s < n; ++s)
+    for (std::size_t c = 0; c < cells; ++c) {
+      const std::size_t count = counts[s * cells + c];
+      if (count == 0)
+        throw AnalysisError("unbalanced within-subject data: subject '" + design.subjects[s] +
+                            "' has no observation in cell " + withinCellLabel(design, c) +
+                            " (every subject needs every within-subject cell)");
+      design.maxReplicates = std::max(design.maxReplicates, count);
+      const auto si = static_cast<Eigen::Index>(s);
+      const auto ci = static_cast<Eigen::Index>(c);
+      design.y(si, ci) = firstValue(si, ci) + sums(si, ci) / static_cast<double>(count);
+    }
+
+  // Every between-subject cell needs subjects (otherwise the model is rank deficient).
+  if (!betweenFactors.empty()) {
+    std::map<std::vector<std::size_t>, std::size_t> perCell;
+    for (const auto& lv : design.betweenLevels) ++perCell[lv];
+    std::vector<std::size_t> lv(betweenFactors.size(), 0);
+    while (true) {
+      if (perCell[lv] == 0)
+        throw AnalysisError("between-subject cell " + betweenCellLabel(betweenFactors, lv) +
+                            " has no subjects");
+      std::size_t f = lv.size();
+      while (f-- > 0) {
+        if (++lv[f] < betweenFactors[f].levels.size()) break;
+        lv[f] = 0;
+      }
+      if (f == SIZE_MAX) break;
+    }
+  }
+  return design;
+}
+
+}  // namespace tlab::analysis

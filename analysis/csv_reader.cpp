@@ -1,0 +1,152 @@
+// Why a hand-written parser: of the libraries installed on the Debian 12 build machines, the only
+// CSV-capable one is Boost.Tokenizer's escaped_list_separator, which is not RFC 4180: it treats a
+// backslash as an escape character, turns a doubled quote "" inside a quoted field into nothing
+// (it just toggles the quote state twice), and works line by line, so quoted line breaks are
+// impossible. libcsv (libcsv-dev) would do, but is not installed and would add a dependency for
+// ~100 lines. RFC 4180 is a small regular language, parsed here by a four-state machine.
+#include "analysis/csv_reader.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "analysis/analysis_error.hpp"
+
+namespace tlab::analysis {
+
+namespace {
+
+struct CsvRecord {
+  std::vector<std::string> fields;
+  std::size_t line = 0;  // line on which the record starts
+};
+
+// RFC 4180 section 2 grammar as a state machine over characters.
+class CsvParser {
+ public:
+  CsvParser(std::string_view text, const std::string& source) : text_(text), source_(source) {
+    if (text_.substr(0, 3) == "\xEF\xBB\xBF") text_.remove_prefix(3);  // UTF-8 byte order mark
+  }
+
+  // Next record, or false at the end of input. Blank lines are skipped.
+  bool next(CsvRecord& record) {
+    record.fields.clear();
+    while (pos_ < text_.size() && isLineBreakAt(pos_)) consumeLineBreak();
+    if (pos_ >= text_.size()) return false;
+    record.line = line_;
+    std::string field;
+    State state = State::FieldStart;
+    std::size_t quoteLine = line_;
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      switch (state) {
+        case State::FieldStart:
+          if (c == '"') {
+            state = State::Quoted;
+            quoteLine = line_;
+            ++pos_;
+            continue;
+          }
+          state = State::Unquoted;
+          continue;  // re-read c as part of an unquoted field
+        case State::Unquoted:
+          if (c == ',') {
+            record.fields.push_back(std::move(field));
+            field.clear();
+            state = State::FieldStart;
+            ++pos_;
+            continue;
+          }
+          if (isLineBreakAt(pos_)) {
+            consumeLineBreak();
+            record.fields.push_back(std::move(field));
+            return true;
+          }
+          if (c == '"')
+            throw AnalysisError(source_ + ":" + std::to_string(line_) +
+                                ": stray double quote inside an unquoted field (quote the whole "
+                                "field and double the quote: \"\")");
+          field.push_back(c);
+          ++pos_;
+          continue;
+        case State::Quoted:
+          if (c == '"') {
+            state = State::QuoteInQuoted;
+            ++pos_;
+            continue;
+          }
+          if (c == '\n') ++line_;
+          field.push_back(c);
+          ++pos_;
+          continue;
+        case State::QuoteInQuoted:
+          if (c == '"') {  // "" is an escaped quote
+            field.push_back('"');
+            state = State::Quoted;
+            ++pos_;
+            continue;
+          }
+          if (c == ',') {
+            record.fields.push_back(std::move(field));
+            field.clear();
+            state = State::FieldStart;
+            ++pos_;
+            continue;
+          }
+          if (isLineBreakAt(pos_)) {
+            consumeLineBreak();
+            record.fields.push_back(std::move(field));
+            return true;
+          }
+          throw AnalysisError(source_ + ":" + std::to_string(line_) + ": unexpected character '" +
+                              std::string(1, c) + "' after a closing double quote");
+      }
+    }
+    if (state == State::Quoted)
+      throw AnalysisError(source_ + ":" + std::to_string(quoteLine) +
+                          ": quoted field is never closed (missing \")");
+    record.fields.push_back(std::move(field));
+    return true;
+  }
+
+ private:
+  enum class State { FieldStart, Unquoted, Quoted, QuoteInQuoted };
+
+  bool isLineBreakAt(std::size_t i) const { return text_[i] == '\n' || text_[i] == '\r'; }
+  void consumeLineBreak() {
+    if (text_[pos_] == '\r' && pos_ + 1 < text_.size() && text_[pos_ + 1] == '\n') ++pos_;
+    ++pos_;
+    ++line_;
+  }
+
+  std::string_view text_;
+  const std::string& source_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+};
+
+}  // namespace
+
+Table parseCsv(std::string_view text, const std::string& source) {
+  CsvParser parser(text, source);
+  CsvRecord header;
+  if (!parser.next(header)) throw AnalysisError(source + ": empty CSV file (no header row)");
+  for (std::size_t i = 0; i < header.fields.size(); ++i)
+    if (header.fields[i].empty())
+      throw AnalysisError(source + ":" + std::to_string(header.line) + ": header field " +
+                          std::to_string(i + 1) + " is empty");
+  Table table(source, header.fields);
+  CsvRecord record;
+  while (parser.next(record)) table.addRow(std::move(record.fields), record.line);
+  return table;
+}
+
+Table readCsvFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw AnalysisError(path + ": cannot open file");
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  return parseCsv(buffer.str(), path);
+}
+
+}  // namespace tlab::analysis

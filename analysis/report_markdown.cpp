@@ -1,0 +1,37 @@
+#include "analysis/report_markdown.hpp"
+
+#include "analysis/report_tables.hpp"
+
+namespace tlab::analysis {
+
+MarkdownDocument renderMarkdown(const Report& report, const std::string& figureStem) {
+  MarkdownDocument doc;
+  std::string& md = doc.text;
+  md += "# " + report.title + "\n\n";
+  md += renderMarkdownTable(designTable(report));
+  for (const auto& note : report.notes) md += "_" + note + "_\n\n";
+  for (const auto& dv : report.dependentVariables) {
+    md += "## " + dv.dv + "\n\n";
+    md += renderMarkdownTable(descriptivesTable(dv));
+    const TextTable outliers = outlierTable(dv);
+    md += outliers.rows.empty() ? "Outlier screening: no value beyond the Tukey fences or with |z| > 3.\n\n"
+                                : renderMarkdownTable(outliers);
+    if (dv.anova) {
+      md += renderMarkdownTable(anovaTable(*dv.anova));
+      const TextTable sphericity = sphericityTable(*dv.anova);
+      if (!sphericity.rows.empty()) md += renderMarkdownTable(sphericity);
+    } else if (!dv.anovaError.empty()) {
+      md += "**ANOVA not computed:** " + dv.anovaError + "\n\n";
+    }
+    const TextTable comparisons = comparisonTable(dv.comparisons);
+    if (!comparisons.rows.empty()) md += renderMarkdownTable(comparisons);
+    for (const auto& figure : dv.figures) {
+      const std::string name = figureStem + "_fig" + std::to_string(doc.figures.size() + 1) + ".svg";
+      doc.figures.push_back({name, figure.svg});
+      md += "![" + figure.caption + "](" + name + ")\n\n";
+    }
+  }
+  return doc;
+}
+
+}  // namespace tlab::analysis

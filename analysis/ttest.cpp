@@ -1,0 +1,222 @@
+#include "analysis/ttest.hpp"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "analysis/analysis_error.hpp"
+
+namespace tlab::analysis {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+std::string formatNumber(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+// A standard error of exactly zero makes t = meanDiff / 0: say so instead of printing inf/nan.
+void requireNonzeroStandardError(double se, double meanDiff, const std::string& what) {
+  if (se > 0.0 && std::isfinite(se)) return;
+  std::string consequence =
+      meanDiff == 0.0 ? "t = 0/0 is undefined"
+                      : std::string("t would be ") + (meanDiff > 0 ? "+" : "-") + "infinite";
+  throw AnalysisError("zero variance: " + what + " (mean difference " + formatNumber(meanDiff) +
+                      "), so " + consequence);
+}
+
+// Confidence interval of an estimate with standard error se on df degrees of freedom (R's t.test).
+void setConfidenceInterval(TTestResult& r) {
+  if (r.confidence <= 0.0 || r.confidence >= 1.0)
+    throw AnalysisError("confidence level must lie in (0, 1), got " + formatNumber(r.confidence));
+  switch (r.alternative) {
+    case Alternative::TwoSided: {
+      const double q = studentTQuantile(1.0 - (1.0 - r.confidence) / 2.0, r.df);
+      r.ciLow = r.meanDiff - q * r.se;
+      r.ciHigh = r.meanDiff + q * r.se;
+      break;
+    }
+    case Alternative::Less:
+      r.ciLow = -kInf;
+      r.ciHigh = r.meanDiff + studentTQuantile(r.confidence, r.df) * r.se;
+      break;
+    case Alternative::Greater:
+      r.ciLow = r.meanDiff - studentTQuantile(r.confidence, r.df) * r.se;
+      r.ciHigh = kInf;
+      break;
+  }
+}
+
+void finish(TTestResult& r, double effectSizeDf) {
+  r.t = r.meanDiff / r.se;
+  r.p = studentTPValue(r.t, r.df, r.alternative);
+  setConfidenceInterval(r);
+  r.hedgesG = hedgesCorrection(effectSizeDf) * r.cohensD;
+}
+
+double pooledVariance(const SampleSummary& x, const SampleSummary& y) {
+  const double n1 = static_cast<double>(x.n);
+  const double n2 = static_cast<double>(y.n);
+  return ((n1 - 1.0) * x.variance + (n2 - 1.0) * y.variance) / (n1 + n2 - 2.0);
+}
+
+void requireAtLeastTwo(const SampleSummary& s, const char* which) {
+  if (s.n < 2)
+    throw AnalysisError(std::string(which) + " has n = " + std::to_string(s.n) +
+                        "; at least 2 observations are needed to estimate a variance");
+}
+
+std::vector<double> shiftedBy(std::span<const double> xs, double reference) {
+  std::vector<double> shifted(xs.size());
+  for (std::size_t i = 0; i < xs.size(); ++i) shifted[i] = xs[i] - reference;
+  return shifted;
+}
+
+using TwoSampleFromSummaries = TTestResult (*)(const SampleSummary&, const SampleSummary&, Alternative, double);
+
+// Both samples shifted by the first observation (the differences are exact for nearby values).
+TTestResult twoSampleTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,
+                           double confidence, TwoSampleFromSummaries test) {
+  const double reference = x.empty() ? 0.0 : x[0];
+  TTestResult r = test(summarizeSample(shiftedBy(x, reference), "the first group"),
+                       summarizeSample(shiftedBy(y, reference), "the second group"), alternative, confidence);
+  r.first.mean += reference;
+  r.second.mean += reference;
+  return r;
+}
+
+}  // namespace
+
+std::string_view tTestKindName(TTestKind kind) {
+  switch (kind) {
+    case TTestKind::OneSample: return "one-sample";
+    case TTestKind::Paired: return "paired";
+    case TTestKind::Student: return "student";
+    case TTestKind::Welch: return "welch";
+  }
+  return "welch";
+}
+
+double hedgesCorrection(double m) {
+  if (!(m > 0.0)) return std::nan("");
+  if (m <= 1.0) return 0.0;  // Γ((m-1)/2) → ∞ at m = 1
+  return std::exp(std::lgamma(m / 2.0) - std::lgamma((m - 1.0) / 2.0)) / std::sqrt(m / 2.0);
+}
+
+double welchSatterthwaiteDf(const SampleSummary& x, const SampleSummary& y) {
+  const double a = x.variance / static_cast<double>(x.n);
+  const double b = y.variance / static_cast<double>(y.n);
+  return (a + b) * (a + b) /
+         (a * a / static_cast<double>(x.n - 1) + b * b / static_cast<double>(y.n - 1));
+}
+
+TTestResult oneSampleTTestFromSummary(const SampleSummary& x, double mu0, Alternative alternative,
+                                      double confidence) {
+  requireAtLeastTwo(x, "the sample");
+  TTestResult r;
+  r.kind = TTestKind::OneSample;
+  r.alternative = alternative;
+  r.confidence = confidence;
+  r.first = x;
+  r.meanDiff = x.mean - mu0;
+  r.df = static_cast<double>(x.n - 1);
+  r.se = std::sqrt(x.variance / static_cast<double>(x.n));
+  requireNonzeroStandardError(r.se, r.meanDiff, "all values are equal");
+  r.cohensD = r.meanDiff / std::sqrt(x.variance);
+  finish(r, r.df);
+  r.ciLow += mu0;  // R reports the interval of the mean itself
+  r.ciHigh += mu0;
+  return r;
+}
+
+TTestResult pairedTTestFromDifferences(const SampleSummary& d, Alternative alternative,
+                                       double confidence) {
+  requireAtLeastTwo(d, "the paired sample");
+  TTestResult r;
+  r.kind = TTestKind::Paired;
+  r.alternative = alternative;
+  r.confidence = confidence;
+  r.first = d;
+  r.meanDiff = d.mean;
+  r.df = static_cast<double>(d.n - 1);
+  r.se = std::sqrt(d.variance / static_cast<double>(d.n));
+  requireNonzeroStandardError(r.se, r.meanDiff, "all paired differences are equal");
+  r.cohensD = d.mean / std::sqrt(d.variance);  // d_z
+  finish(r, r.df);
+  return r;
+}
+
+TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
+                                      Alternative alternative, double confidence) {
+  requireAtLeastTwo(x, "the first group");
+  requireAtLeastTwo(y, "the second group");
+  TTestResult r;
+  r.kind = TTestKind::Student;
+  r.alternative = alternative;
+  r.confidence = confidence;
+  r.first = x;
+  r.second = y;
+  r.meanDiff = x.mean - y.mean;
+  r.df = static_cast<double>(x.n + y.n - 2);
+  const double sp2 = pooledVariance(x, y);
+  r.se = std::sqrt(sp2 * (1.0 / static_cast<double>(x.n) + 1.0 / static_cast<double>(y.n)));
+  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant");
+  r.cohensD = r.meanDiff / std::sqrt(sp2);
+  finish(r, r.df);
+  return r;
+}
+
+TTestResult welchTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
+                                    Alternative alternative, double confidence) {
+  requireAtLeastTwo(x, "the first group");
+  requireAtLeastTwo(y, "the second group");
+  TTestResult r;
+  r.kind = TTestKind::Welch;
+  r.alternative = alternative;
+  r.confidence = confidence;
+  r.first = x;
+  r.second = y;
+  r.meanDiff = x.mean - y.mean;
+  r.se = std::sqrt(x.variance / static_cast<double>(x.n) + y.variance / static_cast<double>(y.n));
+  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant");
+  r.df = welchSatterthwaiteDf(x, y);
+  r.cohensD = r.meanDiff / std::sqrt(pooledVariance(x, y));
+  finish(r, static_cast<double>(x.n + y.n - 2));
+  return r;
+}
+
+TTestResult oneSampleTTest(std::span<const double> x, double mu0, Alternative alternative,
+                           double confidence) {
+  SampleSummary shifted = summarizeSample(shiftedBy(x, mu0), "the sample");
+  TTestResult r = oneSampleTTestFromSummary(shifted, 0.0, alternative, confidence);
+  r.first.mean += mu0;
+  r.ciLow += mu0;
+  r.ciHigh += mu0;
+  return r;
+}
+
+TTestResult pairedTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,
+                        double confidence) {
+  if (x.size() != y.size())
+    throw AnalysisError("paired t-test needs equally many x and y values, got " +
+                        std::to_string(x.size()) + " and " + std::to_string(y.size()));
+  std::vector<double> d(x.size());
+  for (std::size_t i = 0; i < x.size(); ++i) d[i] = x[i] - y[i];
+  return pairedTTestFromDifferences(summarizeSample(d, "the paired sample"), alternative, confidence);
+}
+
+TTestResult studentTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,
+                         double confidence) {
+  return twoSampleTTest(x, y, alternative, confidence, studentTTestFromSummaries);
+}
+
+TTestResult welchTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,
+                       double confidence) {
+  return twoSampleTTest(x, y, alternative, confidence, welchTTestFromSummaries);
+}
+
+}  // namespace tlab::analysis

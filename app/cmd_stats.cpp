@@ -1,0 +1,159 @@
+// tlab stats ttest|anova|friedman|wilcoxon|mannwhitney FILE.csv ...: statistical tests on a
+// long-format CSV file. Prints a readable table, or JSON with --json (full double precision).
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "analysis/anova.hpp"
+#include "analysis/anova_design.hpp"
+#include "analysis/analysis_error.hpp"
+#include "analysis/csv_reader.hpp"
+#include "analysis/report_tables.hpp"
+#include "analysis/result_json.hpp"
+#include "analysis/table_tests.hpp"
+#include "app/commands.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+namespace an = tlab::analysis;
+
+struct StatsOptions {
+  std::string file;
+  std::string dv;
+  std::vector<std::string> between;
+  std::vector<std::string> within;
+  std::string subject;
+  bool student = false;
+  bool welch = false;
+  std::string alternative = "two-sided";
+  double mu = 0.0;
+  double confidence = 0.95;
+  std::string ssType = "2";
+  bool json = false;
+};
+
+void addCommonOptions(CLI::App* cmd, StatsOptions& o) {
+  cmd->add_option("file", o.file, "Long-format CSV file (header row)")->required();
+  cmd->add_option("--dv", o.dv, "Column of the dependent variable")->required();
+  cmd->add_flag("--json", o.json, "Print JSON instead of a table");
+}
+
+void print(const an::TextTable& table) { std::cout << an::renderPlainText(table); }
+
+void printJson(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
+
+std::string single(const std::vector<std::string>& columns, const char* option) {
+  if (columns.size() > 1) throw an::AnalysisError(std::string(option) + " takes one column for this test");
+  return columns.empty() ? std::string() : columns.front();
+}
+
+void runTTest(const StatsOptions& o) {
+  an::TTestRequest request;
+  request.dv = o.dv;
+  request.between = single(o.between, "--between");
+  request.within = single(o.within, "--within");
+  request.subject = o.subject;
+  request.student = o.student;
+  request.alternative = an::parseAlternative(o.alternative);
+  request.mu = o.mu;
+  request.confidence = o.confidence;
+  if (!request.within.empty() && request.subject.empty())
+    throw an::AnalysisError("--within needs --subject (the column naming the participant)");
+  if ((o.student || o.welch) && request.between.empty())
+    throw an::AnalysisError("--student/--welch apply to the two-sample test (--between) only");
+  const an::TTestResult r = an::tTestOnTable(an::readCsvFile(o.file), request);
+  if (o.json) return printJson(an::toJson(r));
+  print(an::tTestTable(r));
+}
+
+void runAnova(const StatsOptions& o) {
+  if (!o.within.empty() && o.subject.empty())
+    throw an::AnalysisError("--within needs --subject (the column naming the participant)");
+  const an::Table table = an::readCsvFile(o.file);
+  const an::AnovaDesign design = an::makeAnovaDesign(table, o.dv, o.between, o.within, o.subject);
+  const an::AnovaResult r = an::anova(design, an::parseSumOfSquaresType(o.ssType));
+  if (o.json) return printJson(an::toJson(r));
+  print(an::anovaTable(r));
+  const an::TextTable sphericity = an::sphericityTable(r);
+  if (!sphericity.rows.empty()) {
+    std::cout << "\n";
+    print(sphericity);
+  }
+  if (r.maxReplicates > 1)
+    std::cout << "\nnote: up to " << r.maxReplicates << " observations per subject and cell were averaged.\n";
+}
+
+void runFriedman(const StatsOptions& o) {
+  const an::FriedmanResult r =
+      an::friedmanOnTable(an::readCsvFile(o.file), o.dv, single(o.within, "--within"), o.subject);
+  if (o.json) return printJson(an::toJson(r));
+  print(an::friedmanTable(r));
+}
+
+void runWilcoxon(const StatsOptions& o) {
+  const an::WilcoxonSignedRankResult r = an::wilcoxonOnTable(
+      an::readCsvFile(o.file), o.dv, single(o.within, "--within"), o.subject, an::parseAlternative(o.alternative));
+  if (o.json) return printJson(an::toJson(r));
+  print(an::wilcoxonTable(r));
+}
+
+void runMannWhitney(const StatsOptions& o) {
+  const an::MannWhitneyResult r = an::mannWhitneyOnTable(an::readCsvFile(o.file), o.dv, single(o.between, "--between"),
+                                                         an::parseAlternative(o.alternative));
+  if (o.json) return printJson(an::toJson(r));
+  print(an::mannWhitneyTable(r));
+}
+
+}  // namespace
+
+void addStatsCommand(CLI::App& app) {
+  auto* stats = app.add_subcommand("stats", "Statistical tests on a long-format CSV file");
+  stats->require_subcommand(1);
+  const auto options = std::make_shared<StatsOptions>();
+  StatsOptions& o = *options;
+
+  auto* ttest = stats->add_subcommand("ttest", "t-test: two-sample (--between), paired (--within --subject) or one-sample");
+  addCommonOptions(ttest, o);
+  ttest->add_option("--between", o.between, "Two-level column splitting the rows into two groups");
+  ttest->add_option("--within", o.within, "Two-level within-subject column (paired test)");
+  ttest->add_option("--subject", o.subject, "Subject column (with --within)");
+  auto* student = ttest->add_flag("--student", o.student, "Student's pooled-variance test");
+  auto* welch = ttest->add_flag("--welch", o.welch, "Welch's unequal-variance test (default)");
+  student->excludes(welch);
+  ttest->add_option("--alternative", o.alternative, "two-sided, less or greater")->capture_default_str();
+  ttest->add_option("--mu", o.mu, "Hypothesized mean (one-sample test)")->capture_default_str();
+  ttest->add_option("--conf-level", o.confidence, "Confidence level of the interval")->capture_default_str();
+  ttest->callback([options] { runTTest(*options); });
+
+  auto* anovaCmd = stats->add_subcommand("anova", "ANOVA: between, repeated-measures or mixed");
+  addCommonOptions(anovaCmd, o);
+  anovaCmd->add_option("--between", o.between, "Between-subject factor column(s), comma-separated")->delimiter(',');
+  anovaCmd->add_option("--within", o.within, "Within-subject factor column(s), comma-separated")->delimiter(',');
+  anovaCmd->add_option("--subject", o.subject, "Subject column (required with --within)");
+  anovaCmd->add_option("--ss-type", o.ssType, "Sums of squares for unbalanced data: 2 or 3")->capture_default_str();
+  anovaCmd->callback([options] { runAnova(*options); });
+
+  auto* friedman = stats->add_subcommand("friedman", "Friedman rank sum test (chi-squared form)");
+  addCommonOptions(friedman, o);
+  friedman->add_option("--within", o.within, "Within-subject condition column")->required();
+  friedman->add_option("--subject", o.subject, "Subject column")->required();
+  friedman->callback([options] { runFriedman(*options); });
+
+  auto* wilcoxon = stats->add_subcommand("wilcoxon", "Wilcoxon signed-rank test (paired)");
+  addCommonOptions(wilcoxon, o);
+  wilcoxon->add_option("--within", o.within, "Two-level within-subject column")->required();
+  wilcoxon->add_option("--subject", o.subject, "Subject column")->required();
+  wilcoxon->add_option("--alternative", o.alternative, "two-sided, less or greater")->capture_default_str();
+  wilcoxon->callback([options] { runWilcoxon(*options); });
+
+  auto* mannWhitney = stats->add_subcommand("mannwhitney", "Wilcoxon-Mann-Whitney rank sum test");
+  addCommonOptions(mannWhitney, o);
+  mannWhitney->add_option("--between", o.between, "Two-level column splitting the rows into two groups")->required();
+  mannWhitney->add_option("--alternative", o.alternative, "two-sided, less or greater")->capture_default_str();
+  mannWhitney->callback([options] { runMannWhitney(*options); });
+}
+
+}  // namespace tlab::app

@@ -1,0 +1,27 @@
+#include "renderer/compose/smart_compositor.hpp"
+
+#include "renderer/gpu/gl_error.hpp"
+
+namespace tlab::render {
+
+void composeSmart(FrameContext& frame, const TransparencyFields& fields, const SmartSettings& settings) {
+  const FragmentBuffer& buffer = *frame.buffer;
+  gpu::ShaderDefines defines = buffer.layout().defines();
+  for (const auto& d : fields.defines()) defines.push_back(d);
+  const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
+  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
+  buffer.bindSorted();
+  fields.bindCurrent();
+  output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
+  program.use();
+  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
+  glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
+  glUniform1i(program.uniform("uModifier"), settings.modifier);
+  glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
+  gpu::dispatchLinear(buffer.pixels());
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  readOutputBuffer(output, frame.image);
+  gpu::checkGl("compose/smart_compose.comp");
+}
+
+}  // namespace tlab::render

@@ -1,0 +1,115 @@
+#version 450 core
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel:
+//  1. for every fragment, its geodesic neighbour in each of the 4 adjacent pixels by the
+//     continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), accepted only when mutual (Alg. 2);
+//  2. initial transparency α: constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5);
+//  3. boundary conditions of Sec. 5.3 on β and γ with their b flags.
+#include "buffer/fragment_layout.glsl"
+#include "buffer/compute_index.glsl"
+#include "ops/field_bindings.glsl"
+layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
+layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
+layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
+layout(std430, binding = BIND_LINKS) writeonly buffer Links { uvec4 links[]; };
+layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer Alpha { float alpha[]; };
+#ifdef TLAB_HAS_BETA
+layout(std430, binding = BIND_BETA_OUT) writeonly buffer Beta { float beta[]; };
+#endif
+#ifdef TLAB_HAS_GAMMA
+layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer Gamma { float gamma[]; };
+#endif
+layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
+
+uniform int uWidth;
+uniform int uHeight;
+uniform float uObjectRadius;  // r_obj of Eq. 1
+uniform float uWz;
+uniform float uWn;
+uniform float uS;
+uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
+
+float depthOf(uint f) { return uintBitsToFloat(sorted[fragWord(f, OFF_DEPTH)]); }
+vec3 normalOf(uint f) { return decodeNormal(sorted[fragWord(f, TLAB_OFF_NORMAL)]); }
+vec2 gradientOf(uint f) {
+  uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
+  return vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
+}
+
+// ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3).
+float continuity(uint i, uint j, ivec2 d) {
+#ifdef TLAB_HAS_IDS
+  // Different connected components are never neighbours.
+  if (((sorted[fragWord(i, TLAB_OFF_IDS)] >> 16) & 0x7FFFu) != ((sorted[fragWord(j, TLAB_OFF_IDS)] >> 16) & 0x7FFFu))
+    return 1.0 / 0.0;
+#endif
+  float predicted = depthOf(i) + dot(vec2(d), gradientOf(i));
+  float epsZ = abs(predicted - depthOf(j)) / uObjectRadius;  // Eq. 1
+  float epsN = 1.0 - dot(normalOf(i), normalOf(j));          // Eq. 2
+  return uWz * epsZ + uWn * epsN;                            // Eq. 3
+}
+
+const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
+
+// Alg. 2: the best candidate for fragment a among the list of pixel q, unless some other fragment
+// of a's own list is an even better match for that candidate (the relation must be mutual).
+uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec2 d) {
+  uint best = NO_NEIGHBOR;
+  float bestEps = 1.0 / 0.0;
+  for (uint k = 0u; k < countB; ++k) {
+    float e = continuity(a, headB + k, d);
+    if (e < bestEps) {
+      bestEps = e;
+      best = headB + k;
+    }
+  }
+  if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
+  for (uint k = 0u; k < countA; ++k) {
+    uint a2 = headA + k;
+    if (a2 != a && continuity(a2, best, d) < bestEps) return NO_NEIGHBOR;
+  }
+  return best;
+}
+
+void main() {
+  uint pixel = linearInvocation();
+  if (pixel >= uint(uWidth * uHeight)) return;
+  uint n = pixelCount[pixel];
+  if (n == 0u) return;
+  uint head = pixelHead[pixel];
+  ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
+  float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+  for (uint layer = 0u; layer < n; ++layer) {
+    uint f = head + layer;
+    uint link[4];
+    uint found = 0u;
+    bool nextToSilhouette = false, underSilhouette = false;
+    for (int k = 0; k < 4; ++k) {
+      ivec2 q = xy + kDirections[k];
+      link[k] = NO_NEIGHBOR;
+      if (q.x < 0 || q.y < 0 || q.x >= uWidth || q.y >= uHeight) continue;
+      uint qp = uint(q.y * uWidth + q.x);
+      uint j = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k]);
+      link[k] = j;
+      if (j == NO_NEIGHBOR) continue;
+      ++found;
+      uint neighborLayer = j - pixelHead[qp];
+      nextToSilhouette = nextToSilhouette || layer < neighborLayer;
+      underSilhouette = underSilhouette || layer > neighborLayer;
+    }
+    links[f] = uvec4(link[0], link[1], link[2], link[3]);
+    // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
+    float b = 0.0, g = 0.0;
+    uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;
+    if (found < 4u) { b = 1.0; free &= ~FREE_BETA; }      // boundary or silhouette (red)
+    if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
+    if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }  // right under a silhouette (green)
+    alpha[f] = alphaInit;
+#ifdef TLAB_HAS_BETA
+    beta[f] = b;
+#endif
+#ifdef TLAB_HAS_GAMMA
+    gamma[f] = g;
+#endif
+    flags[f] = free;
+  }
+}

@@ -1,0 +1,17 @@
+#pragma once
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3): geodesic neighbour links by the mutual-best
+// continuity test (Alg. 2, Eqs. 1-3), initial α (Eqs. 4-5), and the boundary conditions of
+// Sec. 5.3 — one full-screen compute pass (ops/connect.comp).
+#include <memory>
+
+#include "renderer/ops/smart_settings.hpp"
+#include "renderer/ops/transparency_fields.hpp"
+#include "renderer/pipeline/frame_context.hpp"
+
+namespace tlab::render {
+
+// Allocates the fields for the buffer's fragments and runs the pass.
+std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
+                                                     const SmartSettings& settings, float objectRadius);
+
+}  // namespace tlab::render

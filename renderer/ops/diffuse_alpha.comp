@@ -1,0 +1,39 @@
+#version 450 core
+// One step of α diffusion on the fragment graph (Carnecky Eq. 7), one invocation per fragment.
+// Δα_i = Σ_{j ∈ N(i)} (α_j − α_i) over the existing geodesic neighbours (Neumann at boundaries).
+//  TLAB_JACOBI undefined: explicit step α' = α + b_α·λ·Δα (Eq. 8). It obeys the maximum principle
+//    (new value a convex combination of old ones: no oscillation, stays in [0, 1]) iff
+//    λ·deg(i) ≤ 1, i.e. λ ≤ 1/4 on the 4-neighbour graph; the host sub-steps larger λ.
+//  TLAB_JACOBI: one Jacobi sweep for the implicit step (1 + λ·deg)α' − λ·Σα'_j = α_old, which is
+//    unconditionally stable; each sweep is again a convex combination.
+#include "buffer/compute_index.glsl"
+#include "ops/field_bindings.glsl"
+layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
+layout(std430, binding = BIND_ALPHA_IN) readonly buffer AlphaIn { float alphaIn[]; };
+layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer AlphaOut { float alphaOut[]; };
+layout(std430, binding = BIND_FLAGS) readonly buffer Flags { uint flags[]; };
+#ifdef TLAB_JACOBI
+layout(std430, binding = BIND_ALPHA_OLD) readonly buffer AlphaOld { float alphaOld[]; };
+#endif
+uniform uint uFragments;
+uniform float uLambda;
+
+void main() {
+  uint f = linearInvocation();
+  if (f >= uFragments) return;
+  uvec4 l = links[f];
+  float sum = 0.0;
+  float degree = 0.0;
+  for (int k = 0; k < 4; ++k)
+    if (l[k] != NO_NEIGHBOR) {
+      sum += alphaIn[l[k]];
+      degree += 1.0;
+    }
+  bool free = (flags[f] & FREE_ALPHA) != 0u;
+#ifdef TLAB_JACOBI
+  alphaOut[f] = free ? (alphaOld[f] + uLambda * sum) / (1.0 + uLambda * degree) : alphaOld[f];
+#else
+  float a = alphaIn[f];
+  alphaOut[f] = free ? a + uLambda * (sum - degree * a) : a;  // Eq. 8
+#endif
+}

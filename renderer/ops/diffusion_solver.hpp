@@ -1,0 +1,31 @@
+#pragma once
+// The solve pass (Carnecky Sec. 5.4): n steps of α diffusion (Eq. 8; explicit, sub-stepped or
+// implicit — see ops/diffuse_alpha.comp for the stability bound) and β/γ spreading (Eq. 9 or
+// Eq. 8), each step a ping-pong compute pass over all fragments.
+#include "renderer/gpu/shader_cache.hpp"
+#include "renderer/ops/smart_settings.hpp"
+#include "renderer/ops/transparency_fields.hpp"
+
+namespace tlab::render {
+
+class DiffusionSolver {
+ public:
+  DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings);
+  // One of the n steps (time λα) on all fields.
+  void step(TransparencyFields& fields) const;
+  void solve(TransparencyFields& fields) const;
+  // Dispatches this solver makes per step (for the statistics and the benchmark).
+  int dispatchesPerStep() const;
+
+ private:
+  void diffuseAlpha(TransparencyFields& fields) const;
+  void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
+
+  SmartSettings settings_;
+  const gpu::ShaderProgram* explicitStep_;
+  const gpu::ShaderProgram* jacobiSweep_;
+  const gpu::ShaderProgram* spreadMax_;
+  const gpu::ShaderProgram* spreadDiffusion_;
+};
+
+}  // namespace tlab::render

@@ -1,0 +1,37 @@
+#pragma once
+// The parameters of smart transparency (Carnecky Fig. 9), read once from the style parameters.
+#include <string>
+
+#include "renderer/styles/style_params.hpp"
+
+namespace tlab::render {
+
+enum class DiffusionScheme { Explicit, Substep, Implicit };
+
+struct SmartSettings {
+  int iterations = 20;            // n of Sec. 5.4
+  double lambdaAlpha = 1.0;       // λα of Eq. 8
+  double lambdaBeta = 0.05;       // λβ of Eq. 9
+  double lambdaGamma = 0.1;       // λγ of Eq. 9
+  double s = 0.3;                 // s of Eqs. 4-5
+  bool adaptiveAlpha = false;     // Eq. 5 instead of Eq. 4
+  int modifier = 1;               // 0 none, 1 exp (Eq. 10), 2 pow (Eq. 11)
+  double p = 3.0;                 // p of Eqs. 10-11
+  bool spreadByMax = true;        // Eq. 9 (max) or Eq. 8 (diffusion) for β and γ
+  bool halos = true;              // γ field
+  bool silhouettes = true;        // β field
+  double wz = 1.0, wn = 1.0;      // Eq. 3
+  DiffusionScheme scheme = DiffusionScheme::Substep;
+  int jacobiSweeps = 10;          // per implicit step
+
+  static SmartSettings from(const StyleParams& params);
+};
+
+// The explicit scheme of Eq. 8 with the 4-neighbour graph Laplacian Σ_j (α_j − α_i) keeps the
+// maximum principle (no oscillation, values stay in [0, 1]) iff λ·deg ≤ 1: λ ≤ 1/4.
+constexpr double kExplicitStableLambda = 0.25;
+
+// Sub-steps needed so that each explicit step has λ/m ≤ 1/4.
+int substepsFor(double lambda);
+
+}  // namespace tlab::render

@@ -1,0 +1,87 @@
+#include "renderer/ops/transparency_fields.hpp"
+
+#include <stdexcept>
+
+namespace tlab::render {
+
+namespace {
+// Binding points of ops/field_bindings.glsl.
+constexpr GLuint kLinks = 10, kAlphaIn = 11, kAlphaOut = 12, kBetaIn = 13, kBetaOut = 14, kGammaIn = 15,
+                 kGammaOut = 16, kFlags = 17, kAlphaOld = 18;
+}  // namespace
+
+TransparencyFields::TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma)
+    : fragments_(fragments), withBeta_(withBeta), withGamma_(withGamma) {
+  const std::size_t floats = fragments * sizeof(float);
+  links_ = gpu::Buffer(fragments * sizeof(glm::uvec4));
+  flags_ = gpu::Buffer(fragments * 4);
+  alphaOld_ = gpu::Buffer(floats);
+  for (auto& b : alpha_.copies) b = gpu::Buffer(floats);
+  if (withBeta)
+    for (auto& b : beta_.copies) b = gpu::Buffer(floats);
+  if (withGamma)
+    for (auto& b : gamma_.copies) b = gpu::Buffer(floats);
+}
+
+gpu::ShaderDefines TransparencyFields::defines() const {
+  gpu::ShaderDefines d;
+  if (withBeta_) d.emplace_back("TLAB_HAS_BETA", "1");
+  if (withGamma_) d.emplace_back("TLAB_HAS_GAMMA", "1");
+  return d;
+}
+
+TransparencyFields::PingPong& TransparencyFields::pair(Field f) {
+  return f == Field::Alpha ? alpha_ : f == Field::Beta ? beta_ : gamma_;
+}
+const TransparencyFields::PingPong& TransparencyFields::pair(Field f) const {
+  return f == Field::Alpha ? alpha_ : f == Field::Beta ? beta_ : gamma_;
+}
+
+void TransparencyFields::bindCurrent() const {
+  links_.bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
+  flags_.bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
+  alphaOld_.bindBase(GL_SHADER_STORAGE_BUFFER, kAlphaOld);
+  bindPair(Field::Alpha, kAlphaIn, kAlphaOut);
+  if (withBeta_) bindPair(Field::Beta, kBetaIn, kBetaOut);
+  if (withGamma_) bindPair(Field::Gamma, kGammaIn, kGammaOut);
+}
+
+void TransparencyFields::bindPair(Field field, unsigned in, unsigned out) const {
+  const PingPong& p = pair(field);
+  p.copies[p.current].bindBase(GL_SHADER_STORAGE_BUFFER, in);
+  p.copies[1 - p.current].bindBase(GL_SHADER_STORAGE_BUFFER, out);
+}
+
+void TransparencyFields::swap(Field field) { pair(field).current ^= 1; }
+
+const gpu::Buffer& TransparencyFields::output(Field field) const {
+  const PingPong& p = pair(field);
+  return p.copies[1 - p.current];
+}
+
+const gpu::Buffer& TransparencyFields::current(Field field) const {
+  const PingPong& p = pair(field);
+  return p.copies[p.current];
+}
+
+std::vector<float> TransparencyFields::read(Field field) const {
+  if ((field == Field::Beta && !withBeta_) || (field == Field::Gamma && !withGamma_))
+    throw std::logic_error("that transparency field is switched off");
+  std::vector<float> v(fragments_);
+  current(field).download(v.data(), v.size() * sizeof(float));
+  return v;
+}
+
+std::vector<glm::uvec4> TransparencyFields::readLinks() const {
+  std::vector<glm::uvec4> v(fragments_);
+  links_.download(v.data(), v.size() * sizeof(glm::uvec4));
+  return v;
+}
+
+std::vector<std::uint32_t> TransparencyFields::readFlags() const {
+  std::vector<std::uint32_t> v(fragments_);
+  flags_.download(v.data(), v.size() * 4);
+  return v;
+}
+
+}  // namespace tlab::render

@@ -1,0 +1,57 @@
+#pragma once
+// The per-fragment state of smart transparency on the GPU (Carnecky Sec. 5.1): neighbour links
+// (Sec. 4.4), the fields α, β, γ with ping-pong copies (fragData/fragData2 of Sec. 4.5), and the
+// b flags. β exists only with silhouettes on, γ only with halos on.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gpu/gl_objects.hpp"
+#include "renderer/gpu/shader_program.hpp"
+
+namespace tlab::render {
+
+enum class Field { Alpha, Beta, Gamma };
+
+class TransparencyFields {
+ public:
+  TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma);
+  std::size_t fragments() const { return fragments_; }
+  bool hasBeta() const { return withBeta_; }
+  bool hasGamma() const { return withGamma_; }
+  gpu::ShaderDefines defines() const;  // TLAB_HAS_BETA / TLAB_HAS_GAMMA
+
+  // Binds links, flags, and the current value of each field as *_IN (and its other copy *_OUT).
+  void bindCurrent() const;
+  // Binds `field`'s current copy as input and the other as output at the given binding points.
+  void bindPair(Field field, unsigned inBinding, unsigned outBinding) const;
+  // After a pass wrote `field`'s output copy: that copy becomes current.
+  void swap(Field field);
+  // The output copy of `field` (the connect pass writes initial values there, then swaps).
+  const gpu::Buffer& output(Field field) const;
+  const gpu::Buffer& current(Field field) const;
+  const gpu::Buffer& links() const { return links_; }
+  const gpu::Buffer& flags() const { return flags_; }
+  gpu::Buffer& scratch() { return alphaOld_; }
+
+  // Read-backs for tests, inspection and the diffusion benchmark.
+  std::vector<float> read(Field field) const;
+  std::vector<glm::uvec4> readLinks() const;
+  std::vector<std::uint32_t> readFlags() const;
+
+ private:
+  struct PingPong {
+    gpu::Buffer copies[2];
+    int current = 0;
+  };
+  PingPong& pair(Field f);
+  const PingPong& pair(Field f) const;
+
+  std::size_t fragments_;
+  bool withBeta_, withGamma_;
+  gpu::Buffer links_, flags_, alphaOld_;
+  PingPong alpha_, beta_, gamma_;
+};
+
+}  // namespace tlab::render

@@ -1,0 +1,94 @@
+#include "renderer/styles/smart_style.hpp"
+
+#include "renderer/compose/smart_compositor.hpp"
+#include "renderer/ops/connect_pass.hpp"
+#include "renderer/ops/diffusion_solver.hpp"
+
+namespace tlab::render {
+
+namespace {
+
+// What the three passes of one frame share.
+struct SmartFrame {
+  SmartSettings settings;
+  std::unique_ptr<TransparencyFields> fields;
+};
+
+class ConnectRenderPass final : public RenderPass {
+ public:
+  explicit ConnectRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "connect"; }
+  void run(FrameContext& frame) override {
+    frame_->fields = connectFragments(*frame.buffer, frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
+  }
+
+ private:
+  std::shared_ptr<SmartFrame> frame_;
+};
+
+class SolveRenderPass final : public RenderPass {
+ public:
+  explicit SolveRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "solve"; }
+  void run(FrameContext& frame) override { DiffusionSolver(frame.shaders, frame_->settings).solve(*frame_->fields); }
+
+ private:
+  std::shared_ptr<SmartFrame> frame_;
+};
+
+class SmartComposePass final : public RenderPass {
+ public:
+  explicit SmartComposePass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "compose"; }
+  void run(FrameContext& frame) override { composeSmart(frame, *frame_->fields, frame_->settings); }
+
+ private:
+  std::shared_ptr<SmartFrame> frame_;
+};
+
+}  // namespace
+
+std::vector<ParamSpec> SmartStyle::params() const {
+  // Defaults from Carnecky Fig. 9 (second column) and Sec. 5.4 (λα = 1, 10-50 iterations).
+  return {
+      ParamSpec::number("iterations", 20, 0, 100000, "diffusion steps n (Sec. 5.4)"),
+      ParamSpec::number("lambda_alpha", 1.0, 0, 1e6, "α diffusion coefficient λα (Eq. 8)"),
+      ParamSpec::number("lambda_beta", 0.05, 0, 1e6, "β spreading λβ (Eq. 9)"),
+      ParamSpec::number("lambda_gamma", 0.1, 0, 1e6, "γ spreading λγ (Eq. 9)"),
+      ParamSpec::number("s", 0.3, 0, 1, "initial transparency parameter s (Eqs. 4-5)"),
+      ParamSpec::choice("alpha_init", "constant", {"constant", "adaptive"}, "initial α: Eq. 4 or Eq. 5"),
+      ParamSpec::choice("modifier", "exp", {"none", "exp", "pow"}, "profile modifier of β and γ: Eq. 10 or Eq. 11"),
+      ParamSpec::number("p", 3, 1e-6, 1e3, "modifier parameter p (Eqs. 10-11)"),
+      ParamSpec::choice("spread", "max", {"max", "diffusion"}, "β/γ spreading: Eq. 9 or Eq. 8"),
+      ParamSpec::choice("halos", "on", {"on", "off"}, "the γ field (halos behind occluding edges)"),
+      ParamSpec::choice("silhouettes", "on", {"on", "off"}, "the β field (silhouette highlights)"),
+      ParamSpec::number("wz", 1, 0, 1e6, "weight of εz in Eq. 3"),
+      ParamSpec::number("wn", 1, 0, 1e6, "weight of εn in Eq. 3"),
+      ParamSpec::choice("solver", "auto", {"auto", "explicit", "substep", "implicit"},
+                        "α diffusion scheme: auto (explicit for λα ≤ 1/4, sub-stepped beyond), or forced"),
+      ParamSpec::number("jacobi_sweeps", 10, 1, 10000, "Jacobi sweeps per implicit step"),
+  };
+}
+
+void SmartStyle::validate(const StyleParams& params) const { SmartSettings::from(params); }
+
+FragmentProperties SmartStyle::properties(const StyleParams&, const SceneFacts& facts) const {
+  FragmentProperties p;
+  p |= FragmentProperty::Color;
+  p |= FragmentProperty::Normal;
+  p |= FragmentProperty::DepthGradient;
+  if (facts.componentCount > 1) p |= FragmentProperty::Ids;  // ε = ∞ across components
+  return p;
+}
+
+std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& params) const {
+  auto frame = std::make_shared<SmartFrame>();
+  frame->settings = SmartSettings::from(params);
+  std::vector<std::unique_ptr<RenderPass>> p;
+  p.push_back(std::make_unique<ConnectRenderPass>(frame));
+  if (frame->settings.iterations > 0) p.push_back(std::make_unique<SolveRenderPass>(frame));
+  p.push_back(std::make_unique<SmartComposePass>(frame));
+  return p;
+}
+
+}  // namespace tlab::render

@@ -1,0 +1,82 @@
+#include "stimuli/scenes/flow_surface_scenes.hpp"
+
+#include "renderer/pipeline/renderer.hpp"
+#include "renderer/scene/seeded_random.hpp"
+#include "stimuli/fields/hills_spherical_vortex.hpp"
+#include "stimuli/fields/swirling_jet.hpp"
+#include "stimuli/fields/vortex_ring.hpp"
+
+namespace tlab::stimuli {
+
+namespace {
+
+// A reproducible jitter of a seed point, at most `amount` per coordinate.
+glm::dvec3 jitter(render::SeededRandom& random, const glm::dvec3& p, double amount) {
+  return p + amount * glm::dvec3(random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f));
+}
+
+IntegratorSettings surfaceIntegrator() {
+  IntegratorSettings s;
+  s.kind = IntegratorKind::DormandPrince;
+  s.step = 0.01;
+  s.absoluteTolerance = 1e-7;
+  s.relativeTolerance = 1e-7;
+  return s;
+}
+
+AdvancingFrontSettings frontSettings(double maxSpacing, double timeStep, double duration, const FlowSurfaceParams& p) {
+  AdvancingFrontSettings f;
+  f.maxSpacing = maxSpacing / p.resolution;
+  f.minSpacing = 0.3 * f.maxSpacing;
+  f.timeStep = timeStep;
+  f.steps = std::max(1, int(duration * p.timeScale / timeStep + 0.5));
+  f.maxParticles = std::size_t(1500 * p.resolution);
+  return f;
+}
+
+render::Scene surfaceScene(const std::string& name, const IntegralSurface& surface, glm::vec3 viewDirection) {
+  render::Scene scene;
+  scene.name = name;
+  scene.objects.push_back(integralSurfaceObject(name, surface));
+  scene.camera = render::fitCamera(scene.boundingSphere(), 1.0f, 40.0f, glm::normalize(viewDirection));
+  scene.camera = render::fitClipPlanes(*scene.camera, scene.boundingSphere());
+  return scene;
+}
+
+}  // namespace
+
+render::SceneObject integralSurfaceObject(const std::string& name, const IntegralSurface& surface) {
+  render::SceneObject object;
+  object.name = name;
+  object.mesh = surface.mesh;
+  object.frontColor = {0.95f, 0.6f, 0.2f, 1.0f};
+  object.backColor = {0.25f, 0.5f, 0.9f, 1.0f};
+  object.roles = render::Role::Transparent;
+  return object;
+}
+
+render::Scene pretzelScene(const FlowSurfaceParams& p) {
+  render::SeededRandom random(p.seed);
+  const HillsSphericalVortex field({1.0, 1.0, 1.5});
+  const SeedCurve seed = SeedCurve::line(jitter(random, {0.3, 0.0, -0.3}, 0.03), jitter(random, {0.8, 0.0, 0.3}, 0.03));
+  const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.035, 0.04, 9.6, p));
+  return surfaceScene("pretzel", surface, {0.3f, 1.0f, 0.6f});
+}
+
+render::Scene bubbleScene(const FlowSurfaceParams& p) {
+  render::SeededRandom random(p.seed);
+  const SwirlingJet field;
+  const SeedCurve seed = SeedCurve::line(jitter(random, {-0.6, 0.08, -2.6}, 0.03), jitter(random, {0.6, 0.08, -2.6}, 0.03));
+  const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.05, 0.04, 5.0, p));
+  return surfaceScene("bubble", surface, {1.0f, 0.3f, 0.2f});
+}
+
+render::Scene toroidScene(const FlowSurfaceParams& p) {
+  render::SeededRandom random(p.seed);
+  const VortexRing field({1.0, 0.35, 4.0, 0.0, 2.0});
+  const SeedCurve seed = SeedCurve::line(jitter(random, {0.7, 0.0, -0.03}, 0.02), jitter(random, {1.3, 0.0, 0.03}, 0.02));
+  const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.03, 0.02, 4.5, p));
+  return surfaceScene("toroid", surface, {0.4f, 0.5f, 1.0f});
+}
+
+}  // namespace tlab::stimuli

@@ -1,0 +1,33 @@
+#pragma once
+// Parsers from typed answer text to values. Each error names what was expected and what was
+// given, so a bad `tlab task check --answer` or a bad response file is easy to fix.
+#include <cstdint>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "tasks/question.hpp"
+
+namespace tlab::tasks {
+
+class AnswerFormatError : public std::invalid_argument {
+ public:
+  using std::invalid_argument::invalid_argument;
+};
+
+std::int64_t parseLayerNumber(const std::string& text);   // whole number >= 1
+std::int64_t parseCount(const std::string& text);         // whole number >= 0
+// Labels separated by commas and/or spaces; "none", "-" or "" is the empty set. Every label must
+// be one of `allowed`; repeated labels are an error.
+std::set<std::string> parseLabelSet(const std::string& text, const std::vector<std::string>& allowed);
+std::string parseLabel(const std::string& text, const std::vector<std::string>& allowed);
+glm::dvec2 parseFloorPoint(const std::string& text);       // "X,Z"
+std::string parseLetter(const std::string& text);          // C, K, R, X or Y (either case)
+
+// Parses `text` as the question's answer kind into the same alternative as its ground truth.
+GroundTruth parseAnswer(const Question& question, const std::string& text);
+
+}  // namespace tlab::tasks

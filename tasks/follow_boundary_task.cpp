@@ -1,0 +1,162 @@
+#include "tasks/follow_boundary_task.hpp"
+
+#include <algorithm>
+#include <numeric>
+#include <stdexcept>
+
+#include "renderer/scene/seeded_random.hpp"
+#include "tasks/boundary_arc.hpp"
+#include "tasks/boundary_loops.hpp"
+#include "tasks/probe_helpers.hpp"
+
+namespace tlab::tasks {
+
+std::vector<SettingSpec> FollowBoundaryTask::settingSpecs() const {
+  auto specs = commonSettings();
+  specs.push_back({"marks", "4", "number of marks besides A and B (at least 2: some on the way, some off)", true});
+  specs.push_back({"margin", "0.1", "the other way must be longer than the shortest by this fraction", true});
+  specs.push_back({"min-arc-gap", "0.04", "minimum arc distance between any two points of a loop, as a fraction of its length", true});
+  specs.push_back({"min-pixel-gap", "12", "minimum pixel distance between any two points of a question", true});
+  specs.push_back({"margin-px", "8", "minimum pixel distance of a point from the image border", true});
+  specs.push_back({"attempts", "400", "candidate questions tried per question before giving up", true});
+  return specs;
+}
+
+namespace {
+
+struct Mark {
+  std::size_t loop;
+  double arc;
+  glm::dvec3 world;
+};
+
+// A point at a random arc position of `loop` that keeps `minGap` arc length from `others` on the
+// same loop; false if the random position is too close.
+bool placeMark(const std::vector<BoundaryLoop>& loops, std::size_t loop, double arc, double minGapFraction,
+               const std::vector<Mark>& others, Mark* out) {
+  const BoundaryLoop& l = loops[loop];
+  const double a = l.wrap(arc), gap = minGapFraction * l.length();
+  for (const auto& o : others)
+    if (o.loop == loop && std::min(forwardArcLength(a, o.arc, l.length()), forwardArcLength(o.arc, a, l.length())) < gap)
+      return false;
+  *out = {loop, a, l.pointAt(a)};
+  return true;
+}
+
+std::size_t pickByLength(const std::vector<BoundaryLoop>& loops, const std::vector<std::size_t>& among, render::SeededRandom& random) {
+  double total = 0.0;
+  for (const auto i : among) total += loops[i].length();
+  double u = double(random.uniform()) * total;
+  for (const auto i : among) {
+    if (u < loops[i].length()) return i;
+    u -= loops[i].length();
+  }
+  return among.back();
+}
+
+}  // namespace
+
+std::vector<Question> FollowBoundaryTask::probe(const ProbeRequest& request) const {
+  requirePositiveCount(name(), request.count);
+  const TaskSettings& s = request.settings;
+  const int markCount = int(s.number("marks"));
+  const double margin = s.number("margin"), arcGap = s.number("min-arc-gap");
+  const double pixelGap = s.number("min-pixel-gap"), borderPx = s.number("margin-px");
+  const int attempts = int(s.number("attempts"));
+  if (markCount < 2) throw std::invalid_argument(name() + ": setting 'marks' must be at least 2");
+
+  const ViewGeometry view(request.camera, request.width, request.height);
+  std::vector<BoundaryLoop> loops;
+  const auto welded = weldSceneObjects(request.scene);
+  for (std::size_t o = 0; o < welded.size(); ++o)
+    for (auto& l : boundaryLoops(welded[o], int(o))) loops.push_back(std::move(l));
+  std::vector<std::size_t> usable;
+  for (std::size_t i = 0; i < loops.size(); ++i)
+    if (loops[i].length() > 0.0) usable.push_back(i);
+  if (usable.empty()) throw std::runtime_error(name() + ": the scene has no surface boundary (no open surface)");
+
+  render::SeededRandom random(request.seed);
+  std::vector<Question> questions;
+  const std::string labelNames = "CDEFGHJKLMNPQRSTUVWXYZ";
+  for (int q = 0; q < request.count; ++q) {
+    bool found = false;
+    for (int a = 0; a < attempts && !found; ++a) {
+      // A and B: B at a fraction u of the loop from A, the shorter way ≤ the longer / (1 + margin).
+      const std::size_t loop = pickByLength(loops, usable, random);
+      const BoundaryLoop& l = loops[loop];
+      const double arcA = double(random.uniform()) * l.length();
+      const double u = 0.1 + 0.8 * double(random.uniform());
+      const BoundaryArc way = shortestBoundaryArc(arcA, arcA + u * l.length(), l.length());
+      const double otherWay = l.length() - way.length;
+      if (otherWay < (1.0 + margin) * way.length) continue;
+      std::vector<Mark> marks;
+      Mark m;
+      placeMark(loops, loop, arcA, 0.0, marks, &m);
+      marks.push_back(m);
+      if (!placeMark(loops, loop, arcA + u * l.length(), arcGap, marks, &m)) continue;
+      marks.push_back(m);
+      // Marks: at least one on the way and one off it (on the other way or another loop).
+      const int onWay = 1 + int(random.below(std::uint32_t(markCount - 1)));
+      bool placed = true;
+      for (int k = 0; k < markCount && placed; ++k) {
+        double arc;
+        std::size_t markLoop = loop;
+        if (k < onWay) {
+          arc = way.from + way.direction * way.length * double(random.uniform());
+        } else if (usable.size() > 1 && random.below(2) == 0) {
+          markLoop = usable[random.below(std::uint32_t(usable.size() - 1))];
+          if (markLoop == loop) markLoop = usable.back();  // any loop but A's
+          arc = double(random.uniform()) * loops[markLoop].length();
+        } else {
+          arc = way.from - way.direction * otherWay * double(random.uniform());
+        }
+        placed = placeMark(loops, markLoop, arc, arcGap, marks, &m);
+        marks.push_back(m);
+      }
+      if (!placed) continue;
+      // Every point inside the image and apart from the others on screen.
+      std::vector<glm::dvec2> pixels;
+      double smallestGap = 1e9;
+      bool visible = true;
+      for (const auto& mk : marks) {
+        if (!view.inImage(mk.world, borderPx)) visible = false;
+        const glm::dvec2 p = view.project(mk.world);
+        smallestGap = std::min(smallestGap, nearestPixelDistance(p, pixels));
+        pixels.push_back(p);
+      }
+      if (!visible || smallestGap < pixelGap) continue;
+      // Shuffle the marks so that their labels say nothing about the way.
+      std::vector<std::size_t> order(marks.size() - 2);
+      std::iota(order.begin(), order.end(), 2);
+      for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.below(std::uint32_t(i))]);
+
+      Question question;
+      question.task = name();
+      question.number = q + 1;
+      question.text = "Follow the shortest way along the surface boundary from A to B. Which marked points do you meet on the way?";
+      question.answerKind = AnswerKind::LabelSet;
+      question.points.push_back(probePoint(view, "A", "start", marks[0].world, l.object()));
+      question.points.push_back(probePoint(view, "B", "end", marks[1].world, l.object()));
+      std::set<std::string> met;
+      for (std::size_t k = 0; k < order.size(); ++k) {
+        const Mark& mk = marks[order[k]];
+        const std::string label(1, labelNames[k % labelNames.size()]);
+        question.points.push_back(probePoint(view, label, "mark", mk.world, loops[mk.loop].object()));
+        if (mk.loop == loop && way.contains(mk.arc)) met.insert(label);
+      }
+      question.truth = met;
+      question.timeLimitSeconds = s.number("time-limit");
+      question.checks = {{"other way / shortest way - 1", otherWay / way.length - 1.0, margin},
+                         {"smallest pixel distance between points", smallestGap, pixelGap}};
+      question.measurements = {{"shortest-way-length", way.length}, {"other-way-length", otherWay}, {"loop-length", l.length()}};
+      questions.push_back(std::move(question));
+      found = true;
+    }
+    if (!found)
+      throwTooFew(name(), questions.size(), request.count,
+                  "boundary points inside the image and apart from each other; try fewer marks, smaller gaps or another view");
+  }
+  return questions;
+}
+
+}  // namespace tlab::tasks

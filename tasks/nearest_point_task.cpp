@@ -1,0 +1,216 @@
+#include "tasks/nearest_point_task.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <optional>
+
+#include "renderer/scene/seeded_random.hpp"
+#include "tasks/geodesic_distances.hpp"
+#include "tasks/probe_helpers.hpp"
+
+namespace tlab::tasks {
+
+std::vector<SettingSpec> NearestPointTask::settingSpecs() const {
+  auto specs = commonSettings();
+  specs.push_back({"candidates", "3", "number of candidate points (at least 2)", true});
+  specs.push_back({"margin", "0.1", "second-nearest geodesic distance must be ≥ (1 + margin) × nearest", true});
+  specs.push_back({"euclidean-trap-share", "0.5", "share of questions whose Euclidean-nearest candidate is not the geodesic-nearest", true});
+  specs.push_back({"min-pixel-gap", "16", "minimum pixel distance between any two points of a question", true});
+  specs.push_back({"margin-px", "8", "minimum pixel distance of a point from the image border", true});
+  specs.push_back({"neighbourhood", "1", "candidates lie within this Euclidean distance of A and within twice it along the surface "
+                                           "(a fraction of the scene's bounding radius; 0: anywhere)", true});
+  specs.push_back({"pool", "32", "surface points sampled per start point A", true});
+  specs.push_back({"sources", "24", "start points A tried per question before giving up", true});
+  return specs;
+}
+
+bool wantsEuclideanTrap(int k, double share) {
+  return std::floor(double(k + 1) * share + 1e-9) > std::floor(double(k) * share + 1e-9);
+}
+
+namespace {
+
+struct PoolPoint {
+  SurfacePoint where;
+  glm::dvec3 world;
+  glm::dvec2 pixel;
+  double geodesic, euclidean;
+};
+
+std::size_t argMin(const std::vector<double>& v) { return std::size_t(std::min_element(v.begin(), v.end()) - v.begin()); }
+
+// The ratio second-smallest / smallest − 1 (the margin by which the smallest is unique).
+double uniquenessMargin(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[0] > 0.0 ? v[1] / v[0] - 1.0 : 0.0;
+}
+
+struct Choice {
+  std::vector<PoolPoint> candidates;
+  double geodesicMargin, euclideanMargin;
+  bool trap;
+};
+
+// Searches the pool (in a seeded random order) for a geodesic-nearest candidate g and others
+// that are all ≥ (1 + margin) × d(g) away along the surface; with a trap, one of the others is
+// Euclidean-nearest by the same margin, else g is also Euclidean-nearest.
+std::optional<Choice> chooseCandidates(std::vector<PoolPoint> pool, int count, double margin, bool wantTrap,
+                                       double pixelGap, render::SeededRandom& random) {
+  for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[random.below(std::uint32_t(i))]);
+  const auto apart = [&](const PoolPoint& p, const std::vector<PoolPoint>& chosen) {
+    for (const auto& c : chosen)
+      if (glm::length(c.pixel - p.pixel) < pixelGap) return false;
+    return true;
+  };
+  for (const auto& g : pool) {
+    std::vector<PoolPoint> chosen = {g};
+    double euclideanLimit = g.euclidean;  // the others must be farther than this in 3-D
+    if (wantTrap) {
+      for (const auto& e : pool)
+        if (e.geodesic >= (1.0 + margin) * g.geodesic && (1.0 + margin) * e.euclidean <= g.euclidean && apart(e, chosen)) {
+          chosen.push_back(e);
+          euclideanLimit = (1.0 + margin) * e.euclidean;
+          break;
+        }
+      if (chosen.size() < 2) continue;
+    }
+    for (const auto& o : pool) {
+      if (int(chosen.size()) == count) break;
+      if (o.geodesic >= (1.0 + margin) * g.geodesic && o.euclidean > euclideanLimit && apart(o, chosen)) chosen.push_back(o);
+    }
+    if (int(chosen.size()) < count) continue;
+    // Shuffle so that the label says nothing about which candidate is nearest.
+    for (std::size_t i = chosen.size(); i > 1; --i) std::swap(chosen[i - 1], chosen[random.below(std::uint32_t(i))]);
+    Choice c;
+    std::vector<double> geo, euc;
+    for (const auto& p : chosen) geo.push_back(p.geodesic), euc.push_back(p.euclidean);
+    c.candidates = std::move(chosen);
+    c.geodesicMargin = uniquenessMargin(geo);
+    c.euclideanMargin = uniquenessMargin(euc);
+    c.trap = argMin(geo) != argMin(euc);
+    return c;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const {
+  requirePositiveCount(name(), request.count);
+  const TaskSettings& s = request.settings;
+  const int count = int(s.number("candidates"));
+  const double margin = s.number("margin"), share = s.number("euclidean-trap-share");
+  const double pixelGap = s.number("min-pixel-gap"), borderPx = s.number("margin-px");
+  const int poolSize = int(s.number("pool")), sources = int(s.number("sources"));
+  const double neighbourhood = s.number("neighbourhood") * double(request.scene.boundingSphere().radius);
+  const double reach = neighbourhood > 0.0 ? neighbourhood : std::numeric_limits<double>::infinity();
+  if (count < 2 || count > 6) throw std::invalid_argument(name() + ": setting 'candidates' must be 2..6");
+  if (share < 0.0 || share > 1.0) throw std::invalid_argument(name() + ": 'euclidean-trap-share' must be in [0, 1]");
+
+  const ViewGeometry view(request.camera, request.width, request.height);
+  const auto welded = weldSceneObjects(request.scene);
+  std::vector<GeodesicDistances> geodesics;
+  std::vector<SurfaceSampler> samplers;
+  double totalArea = 0.0;
+  for (const auto& w : welded) {
+    geodesics.emplace_back(w);
+    samplers.emplace_back(w);
+    totalArea += samplers.back().totalArea();
+  }
+  if (totalArea <= 0.0) throw std::runtime_error(name() + ": the scene has no surface area");
+
+  render::SeededRandom random(request.seed);
+  const auto pickObject = [&] {
+    double u = double(random.uniform()) * totalArea;
+    for (std::size_t o = 0; o < samplers.size(); ++o) {
+      if (u < samplers[o].totalArea()) return o;
+      u -= samplers[o].totalArea();
+    }
+    return samplers.size() - 1;
+  };
+  const auto visibleSample = [&](std::size_t o, SurfacePoint* out) {
+    for (int i = 0; i < 64; ++i) {
+      const SurfacePoint p = samplers[o].sample(random);
+      if (geodesics[o].hasTriangle(p.triangle) && view.inImage(p.position(welded[o]), borderPx)) {
+        *out = p;
+        return true;
+      }
+    }
+    return false;
+  };
+
+  const std::string labels = "XYZUVW";
+  std::vector<Question> questions;
+  for (int q = 0; q < request.count; ++q) {
+    const bool wantTrap = wantsEuclideanTrap(q, share);
+    bool found = false;
+    for (int src = 0; src < sources && !found; ++src) {
+      const std::size_t o = pickObject();
+      SurfacePoint a;
+      if (!visibleSample(o, &a)) continue;
+      const glm::dvec3 aWorld = a.position(welded[o]);
+      const glm::dvec2 aPixel = view.project(aWorld);
+      // The pool: visible points apart from A on screen, within the neighbourhood in 3-D and (by
+      // the edge-path upper bound) within twice it on the surface — which keeps the exact
+      // geodesic computation on a patch around A (GeodesicDistances).
+      std::vector<SurfacePoint> near;
+      for (int i = 0; i < poolSize; ++i)
+        for (int attempt = 0; attempt < 16; ++attempt) {
+          SurfacePoint t;
+          if (!visibleSample(o, &t)) break;
+          const glm::dvec3 tWorld = t.position(welded[o]);
+          if (glm::length(tWorld - aWorld) > reach || glm::length(view.project(tWorld) - aPixel) < pixelGap) continue;
+          near.push_back(t);
+          break;
+        }
+      const auto bounds = geodesics[o].edgePathUpperBounds(a, near);
+      std::vector<SurfacePoint> targets;
+      for (std::size_t i = 0; i < near.size(); ++i)
+        if (bounds[i] && *bounds[i] <= 2.0 * reach) targets.push_back(near[i]);
+      const auto distances = geodesics[o].fromSource(a, targets);
+      std::vector<PoolPoint> pool;
+      for (std::size_t i = 0; i < targets.size(); ++i) {
+        if (!distances[i]) continue;  // another connected component
+        const glm::dvec3 w = targets[i].position(welded[o]);
+        pool.push_back({targets[i], w, view.project(w), *distances[i], glm::length(w - aWorld)});
+      }
+      const auto choice = chooseCandidates(pool, count, margin, wantTrap, pixelGap, random);
+      if (!choice) continue;
+
+      Question question;
+      question.task = name();
+      question.number = q + 1;
+      question.text = "Which of the marked points is nearest to A when walking on the surface?";
+      question.answerKind = AnswerKind::Label;
+      question.points.push_back(probePoint(view, "A", "given", aWorld, int(o)));
+      std::vector<double> geo, euc;
+      for (std::size_t i = 0; i < choice->candidates.size(); ++i) {
+        const auto& c = choice->candidates[i];
+        const std::string label(1, labels[i]);
+        question.points.push_back(probePoint(view, label, "candidate", c.world, int(o)));
+        question.measurements.push_back({"geodesic:" + label, c.geodesic});
+        question.measurements.push_back({"euclidean:" + label, c.euclidean});
+        geo.push_back(c.geodesic);
+        euc.push_back(c.euclidean);
+      }
+      question.truth = std::string(1, labels[argMin(geo)]);
+      question.timeLimitSeconds = s.number("time-limit");
+      question.checks = {{"geodesic second-nearest / nearest - 1", choice->geodesicMargin, margin},
+                         {"euclidean-nearest differs from geodesic-nearest", choice->trap ? 1.0 : 0.0, wantTrap ? 1.0 : 0.0}};
+      if (wantTrap) question.checks.push_back({"euclidean second-nearest / nearest - 1", choice->euclideanMargin, margin});
+      questions.push_back(std::move(question));
+      found = true;
+    }
+    if (!found)
+      throwTooFew(name(), questions.size(), request.count,
+                  std::string("candidates unique by the geodesic margin") +
+                      (wantTrap ? " whose Euclidean-nearest is another candidate (impossible on convex surfaces such as a "
+                                  "sphere; --set euclidean-trap-share=0)"
+                                : "") +
+                      "; try a smaller margin or another view");
+  }
+  return questions;
+}
+
+}  // namespace tlab::tasks

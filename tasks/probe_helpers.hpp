@@ -1,0 +1,30 @@
+#pragma once
+// Small pieces shared by the tasks' probe selection.
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/scene/scene.hpp"
+#include "tasks/question.hpp"
+#include "tasks/view_geometry.hpp"
+#include "tasks/welded_mesh.hpp"
+
+namespace tlab::tasks {
+
+// One welded mesh per scene object, in object order.
+std::vector<WeldedMesh> weldSceneObjects(const render::Scene& scene);
+
+// A ProbePoint with its pixel position in `view`.
+ProbePoint probePoint(const ViewGeometry& view, std::string label, std::string role, glm::dvec3 world, int object);
+
+// The smallest pixel distance between `pixel` and any of `others` (infinity when empty).
+double nearestPixelDistance(glm::dvec2 pixel, const std::vector<glm::dvec2>& others);
+
+// Throws std::runtime_error: "<task>: found only K of N questions ... (<hint>)".
+[[noreturn]] void throwTooFew(const std::string& task, std::size_t found, int wanted, const std::string& hint);
+
+// The count must be ≥ 1.
+void requirePositiveCount(const std::string& task, int count);
+
+}  // namespace tlab::tasks

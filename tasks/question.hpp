@@ -1,0 +1,64 @@
+#pragma once
+// A question of a task: its text, the marked points (3-D world position and 2-D pixel position),
+// the exact ground truth, the kind of answer expected, the time limit, and the checks that made
+// the question unique and unambiguous when it was chosen.
+#include <cstdint>
+#include <set>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tlab::tasks {
+
+// What an answer is. The ground truth holds the matching alternative of GroundTruth.
+enum class AnswerKind {
+  LayerNumber,  // std::int64_t, 1 = front (Carnecky Task 1)
+  LabelSet,     // std::set<std::string>, possibly empty (Carnecky Task 2)
+  Label,        // std::string, one of the candidate labels (Carnecky Task 3)
+  Count,        // std::int64_t >= 0 (Elmqvist T1, T4)
+  FloorPoint,   // glm::dvec2 = world (x, z) on the floor plan (Elmqvist T3)
+  Letter,       // std::string, one of C K R X Y (Elmqvist T2)
+};
+
+const char* answerKindName(AnswerKind kind);
+// How to type an answer of this kind, for messages and --help.
+const char* answerFormat(AnswerKind kind);
+
+using GroundTruth = std::variant<std::int64_t, std::string, std::set<std::string>, glm::dvec2>;
+
+// A marked point. `pixel` is continuous: pixel (x, y) covers [x, x+1) × [y, y+1), row 0 = top,
+// so the pixel containing the point is floor(pixel).
+struct ProbePoint {
+  std::string label;   // "A", "B", "X", ...
+  std::string role;    // "probe", "start", "end", "mark", "given", "candidate", "target"
+  glm::dvec3 world{0.0};
+  glm::dvec2 pixel{0.0};
+  int object = -1;     // index into Scene::objects, -1 if none
+};
+
+// A rule the question satisfied when it was chosen: `value` met `required` (see `rule`).
+struct UniquenessCheck {
+  std::string rule;
+  double value = 0.0;
+  double required = 0.0;
+};
+
+struct Question {
+  std::string task;
+  int number = 1;                 // 1-based, in the order probe() produced it
+  std::string text;
+  AnswerKind answerKind = AnswerKind::Label;
+  std::vector<ProbePoint> points;
+  GroundTruth truth;
+  double timeLimitSeconds = 120.0;  // Carnecky Sec. 8: strictly limited time
+  double correctWithin = 0.0;       // FloorPoint only: error distance counted as correct
+  std::vector<UniquenessCheck> checks;
+  std::vector<std::pair<std::string, double>> measurements;  // distances etc., for reports
+
+  std::vector<std::string> labels() const;  // labels of the points, in order
+};
+
+}  // namespace tlab::tasks

@@ -1,0 +1,87 @@
+// statcheck: extraction of APA results from text (including the seeds' extraction artefacts) and
+// the consistency rules. Expected p-values: R's pt/pf/pchisq.
+#include "analysis/statcheck.hpp"
+
+#include <fstream>
+
+#include "tests/analysis/test_support.hpp"
+
+namespace tlab::analysis {
+namespace {
+
+TEST(Statcheck, ExtractsTheVariantsOfApaResults) {
+  const std::string text =
+      "We found t(35) = \xE2\x88\x92" "2.66, p = .006 and F(1, 15) = 49.54, p < .001.\n"
+      "A \xCF\x87\xC2\xB2(2) = 11.14, p = .004; chi2(1, N = 40) = 3.2, p > .05; X2(3) = 7.9, ns.\n"
+      "Across a line break: F(2,\n 27) = 4.85, p = .016. Not a result: p = .5 alone.";
+  const std::vector<ApaResult> r = extractApaResults(text);
+  ASSERT_EQ(r.size(), 6u);  // the F(2, 27) split by a line break is found too
+  EXPECT_EQ(r[0].kind, StatisticKind::T);
+  EXPECT_EQ(r[0].df1, 35.0);
+  EXPECT_DOUBLE_EQ(r[0].statistic.value, -2.66);
+  EXPECT_EQ(r[0].statistic.decimals, 2);
+  EXPECT_EQ(r[1].kind, StatisticKind::F);
+  EXPECT_EQ(r[1].df2, 15.0);
+  EXPECT_EQ(r[1].pRelation, PRelation::Less);
+  EXPECT_EQ(r[2].kind, StatisticKind::ChiSquared);
+  EXPECT_EQ(r[2].line, 2u);
+  EXPECT_EQ(r[3].pRelation, PRelation::Greater);
+  EXPECT_EQ(r[4].kind, StatisticKind::ChiSquared);
+  EXPECT_EQ(r[4].pRelation, PRelation::NotSignificant);
+  EXPECT_EQ(r[5].kind, StatisticKind::F);
+  EXPECT_EQ(r[5].df2, 27.0);
+  EXPECT_EQ(r[5].line, 3u);
+  const StatcheckReport report = statcheck(text, "mem.txt");
+  ASSERT_EQ(report.verdicts.size(), 6u);
+  EXPECT_EQ(report.pValuesWithoutStatistic, 1u);
+}
+
+TEST(Statcheck, ConsistencyRules) {
+  // t(35) = 2.66: two-tailed p = 2·pt(-2.66, 35) = 0.01170 (R), range over [2.655, 2.665]
+  // ≈ [0.01155, 0.01186]; one-tailed ≈ 0.00585.
+  const auto verdict = [](const std::string& text, bool oneTailed = false) {
+    const auto r = extractApaResults(text);
+    EXPECT_EQ(r.size(), 1u) << text;
+    return checkApaResult(r.at(0), oneTailed);
+  };
+  EXPECT_TRUE(verdict("t(35) = 2.66, p = .012").consistent);
+  const StatcheckVerdict oneSided = verdict("t(35) = 2.66, p = .006");
+  EXPECT_FALSE(oneSided.consistent);
+  EXPECT_TRUE(oneSided.consistentIfOneTailed);
+  EXPECT_FALSE(oneSided.decisionError);
+  EXPECT_TRUE(verdict("t(35) = 2.66, p = .006", true).consistent);  // "one-tailed" in the text
+  // Decision error: F(1, 15) = 4.12 gives p = 0.0605 (R), reported as significant.
+  const StatcheckVerdict decision = verdict("F(1, 15) = 4.12, p = .04");
+  EXPECT_FALSE(decision.consistent);
+  EXPECT_TRUE(decision.decisionError);
+  EXPECT_TRUE(verdict("F(1, 15) = 4.12, p = .061").consistent);
+  EXPECT_TRUE(verdict("F(1, 15) = 4.12, p < .10").consistent);
+  EXPECT_FALSE(verdict("F(1, 15) = 4.12, p < .05").consistent);
+  EXPECT_TRUE(verdict("F(1, 15) = 4.12, ns").consistent);
+  // Rounding of the statistic: F = .068 → p = 0.7978 at the point, .797 only inside the range.
+  EXPECT_TRUE(verdict("F(1, 15) = .068, p = .797").consistent);
+  EXPECT_FALSE(verdict("F(1, 15) = 0.07, p = .70").consistent);
+  // p = .000 is never right.
+  EXPECT_FALSE(verdict("F(1, 15) = 49.54, p = .000").consistent);
+  // chi2(2) = 11.14: p = exp(-5.57) = 0.003810 (closed form for df = 2).
+  EXPECT_NEAR(verdict("chi2(2) = 11.14, p = .004").pComputed, std::exp(-5.57), 1e-15);
+}
+
+TEST(Statcheck, SeedPapers) {
+  // Seed 004 (Elmqvist) reports five F(1,15) results in APA style; all consistent (R: pf).
+  // Seed 000 (Carnecky) gives its t-tests only in Table 1 and quotes bare p-values in the text.
+  const std::string seeds = std::string(TLAB_SOURCE_DIR) + "/../shared/seeds/";
+  std::ifstream probe(seeds + "004_5a2d71233f7987a3.txt");
+  if (!probe) GTEST_SKIP() << "seed papers not found next to the source tree";
+  const StatcheckReport elmqvist = statcheckFile(seeds + "004_5a2d71233f7987a3.txt");
+  ASSERT_EQ(elmqvist.verdicts.size(), 5u);
+  EXPECT_EQ(elmqvist.inconsistencies(), 0u);
+  EXPECT_EQ(elmqvist.verdicts[0].result.line, 460u);
+  EXPECT_DOUBLE_EQ(elmqvist.verdicts[4].result.statistic.value, 0.068);
+  const StatcheckReport carnecky = statcheckFile(seeds + "000_30b23ea88644c383.txt");
+  EXPECT_EQ(carnecky.verdicts.size(), 0u);
+  EXPECT_EQ(carnecky.pValuesWithoutStatistic, 3u);
+}
+
+}  // namespace
+}  // namespace tlab::analysis
