@@ -1,16 +1,19 @@
 #version 450 core
-// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel:
-//  1. for every fragment, its geodesic neighbour in each of the 4 adjacent pixels by the
-//     continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), accepted only when mutual (Alg. 2);
-//  2. initial transparency α: constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5);
-//  3. boundary conditions of Sec. 5.3 on β and γ with their b flags.
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel, in two dispatches:
+//  TLAB_PHASE 1: for every fragment, its geodesic neighbour in each of the 4 adjacent pixels by
+//     the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only when no other fragment of
+//     its own list matches that candidate better (Alg. 2);
+//  TLAB_PHASE 2: links kept only when both fragments chose each other (ε is not symmetric: εz
+//     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
+//     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
+//     boundary conditions of Sec. 5.3 on β and γ with their b flags.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
-layout(std430, binding = BIND_LINKS) writeonly buffer Links { uvec4 links[]; };
+layout(std430, binding = BIND_LINKS) buffer Links { uvec4 links[]; };
 layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer Alpha { float alpha[]; };
 #ifdef TLAB_HAS_BETA
 layout(std430, binding = BIND_BETA_OUT) writeonly buffer Beta { float beta[]; };
@@ -77,32 +80,47 @@ void main() {
   if (n == 0u) return;
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
-  float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+#if TLAB_PHASE == 1
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     uint link[4];
-    uint found = 0u;
-    bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {
       ivec2 q = xy + kDirections[k];
       link[k] = NO_NEIGHBOR;
       if (q.x < 0 || q.y < 0 || q.x >= uWidth || q.y >= uHeight) continue;
       uint qp = uint(q.y * uWidth + q.x);
-      uint j = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k]);
-      link[k] = j;
+      link[k] = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k]);
+    }
+    links[f] = uvec4(link[0], link[1], link[2], link[3]);
+  }
+#else
+  float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+  for (uint layer = 0u; layer < n; ++layer) {
+    uint f = head + layer;
+    uvec4 link = links[f];
+    uint found = 0u;
+    bool nextToSilhouette = false, underSilhouette = false;
+    for (int k = 0; k < 4; ++k) {
+      uint j = link[k];
       if (j == NO_NEIGHBOR) continue;
+      // Directions come in pairs (0,1), (2,3): k ^ 1 is the way back.
+      if (links[j][k ^ 1] != f) {
+        link[k] = NO_NEIGHBOR;
+        continue;
+      }
       ++found;
-      uint neighborLayer = j - pixelHead[qp];
+      ivec2 q = xy + kDirections[k];
+      uint neighborLayer = j - pixelHead[uint(q.y * uWidth + q.x)];
       nextToSilhouette = nextToSilhouette || layer < neighborLayer;
       underSilhouette = underSilhouette || layer > neighborLayer;
     }
-    links[f] = uvec4(link[0], link[1], link[2], link[3]);
+    links[f] = link;
     // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
     float b = 0.0, g = 0.0;
     uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;
-    if (found < 4u) { b = 1.0; free &= ~FREE_BETA; }      // boundary or silhouette (red)
+    if (found < 4u) { b = 1.0; free &= ~FREE_BETA; }          // boundary or silhouette (red)
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
-    if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }  // right under a silhouette (green)
+    if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
     alpha[f] = alphaInit;
 #ifdef TLAB_HAS_BETA
     beta[f] = b;
@@ -112,4 +130,5 @@ void main() {
 #endif
     flags[f] = free;
   }
+#endif
 }

@@ -9,6 +9,11 @@ int substepsFor(double lambda) {
   return lambda <= kExplicitStableLambda ? 1 : static_cast<int>(std::ceil(lambda / kExplicitStableLambda - 1e-12));
 }
 
+DiffusionScheme automaticScheme(double lambda) {
+  if (lambda <= kExplicitStableLambda) return DiffusionScheme::Explicit;
+  return substepsFor(lambda) <= kMaxAutoSubsteps ? DiffusionScheme::Substep : DiffusionScheme::Implicit;
+}
+
 SmartSettings SmartSettings::from(const StyleParams& params) {
   SmartSettings s;
   s.iterations = static_cast<int>(std::lround(params.number("iterations")));
@@ -28,7 +33,8 @@ SmartSettings SmartSettings::from(const StyleParams& params) {
   s.jacobiSweeps = static_cast<int>(std::lround(params.number("jacobi_sweeps")));
   if (solver == "implicit") s.scheme = DiffusionScheme::Implicit;
   else if (solver == "explicit") s.scheme = DiffusionScheme::Explicit;
-  else s.scheme = DiffusionScheme::Substep;  // auto: explicit when λ ≤ 1/4, sub-stepped beyond
+  else if (solver == "substep") s.scheme = DiffusionScheme::Substep;
+  else s.scheme = automaticScheme(s.lambdaAlpha);
   if (s.scheme == DiffusionScheme::Explicit && s.lambdaAlpha > kExplicitStableLambda)
     throw std::invalid_argument("style 'smart': solver=explicit is unstable for lambda_alpha > 0.25 (Eq. 8 needs "
                                 "lambda*4 <= 1 on the 4-neighbour graph); use solver=auto, substep or implicit");

@@ -34,4 +34,9 @@ constexpr double kExplicitStableLambda = 0.25;
 // Sub-steps needed so that each explicit step has λ/m ≤ 1/4.
 int substepsFor(double lambda);
 
+// solver=auto: explicit for λ ≤ 1/4, sub-stepped up to kMaxAutoSubsteps sub-steps (λ ≤ 2), and
+// implicit beyond, where sub-stepping would cost more passes than the Jacobi sweeps.
+constexpr int kMaxAutoSubsteps = 8;
+DiffusionScheme automaticScheme(double lambda);
+
 }  // namespace tlab::render

@@ -53,8 +53,8 @@ std::vector<ParamSpec> SmartStyle::params() const {
   return {
       ParamSpec::number("iterations", 20, 0, 100000, "diffusion steps n (Sec. 5.4)"),
       ParamSpec::number("lambda_alpha", 1.0, 0, 1e6, "α diffusion coefficient λα (Eq. 8)"),
-      ParamSpec::number("lambda_beta", 0.05, 0, 1e6, "β spreading λβ (Eq. 9)"),
-      ParamSpec::number("lambda_gamma", 0.1, 0, 1e6, "γ spreading λγ (Eq. 9)"),
+      ParamSpec::number("lambda_beta", 0.05, 0, 1, "β spreading λβ (Eq. 9)"),
+      ParamSpec::number("lambda_gamma", 0.1, 0, 1, "γ spreading λγ (Eq. 9)"),
       ParamSpec::number("s", 0.3, 0, 1, "initial transparency parameter s (Eqs. 4-5)"),
       ParamSpec::choice("alpha_init", "constant", {"constant", "adaptive"}, "initial α: Eq. 4 or Eq. 5"),
       ParamSpec::choice("modifier", "exp", {"none", "exp", "pow"}, "profile modifier of β and γ: Eq. 10 or Eq. 11"),
@@ -65,7 +65,7 @@ std::vector<ParamSpec> SmartStyle::params() const {
       ParamSpec::number("wz", 1, 0, 1e6, "weight of εz in Eq. 3"),
       ParamSpec::number("wn", 1, 0, 1e6, "weight of εn in Eq. 3"),
       ParamSpec::choice("solver", "auto", {"auto", "explicit", "substep", "implicit"},
-                        "α diffusion scheme: auto (explicit for λα ≤ 1/4, sub-stepped beyond), or forced"),
+                        "α diffusion scheme: auto (explicit for λα ≤ 1/4, sub-stepped up to λα = 2, implicit beyond), or forced"),
       ParamSpec::number("jacobi_sweeps", 10, 1, 10000, "Jacobi sweeps per implicit step"),
   };
 }
