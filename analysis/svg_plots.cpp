@@ -287,4 +287,73 @@ std::string renderBoxPlotSvg(const BoxPlot& plot, double width, double height) {
   return canvas.finish();
 }
 
+std::string renderLinePlotSvg(const LinePlot& plot, double width, double height) {
+  // Values are drawn in axis space: log10 of the value on a log axis (non-positive values skipped).
+  const auto axis = [](double v, bool log) { return log ? std::log10(v) : v; };
+  const auto usable = [](double v, bool log) { return std::isfinite(v) && (!log || v > 0); };
+  double xMin = INFINITY, xMax = -INFINITY, yMin = INFINITY, yMax = -INFINITY;
+  for (const auto& s : plot.series)
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+      if (usable(s.x[i], plot.logX) && usable(s.y[i], plot.logY)) {
+        xMin = std::min(xMin, axis(s.x[i], plot.logX));
+        xMax = std::max(xMax, axis(s.x[i], plot.logX));
+        yMin = std::min(yMin, axis(s.y[i], plot.logY));
+        yMax = std::max(yMax, axis(s.y[i], plot.logY));
+      }
+  if (!std::isfinite(xMin)) throw AnalysisError("line plot '" + plot.title + "' has no drawable points");
+  const auto xTicks = niceTicks(xMin, xMax), yTicks = niceTicks(yMin, yMax);
+  SvgCanvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  Frame f;
+  f.right = width - 170;
+  f.bottom = height - 50;
+  f.yMin = yTicks.front();
+  f.yMax = yTicks.back();
+  const double x0 = xTicks.front(), x1 = xTicks.back();
+  const auto px = [&](double v) { return f.left + (v - x0) / (x1 - x0) * (f.right - f.left); };
+  const auto label = [](double v, bool log) { return log ? "1e" + tickLabel(v) : tickLabel(v); };
+  drawText(cr, plot.title, width / 2, 22, 14, Align::Center, true);
+  cairo_set_line_width(cr, 1.0);
+  for (const double t : yTicks) {
+    cairo_set_source_rgb(cr, 0.88, 0.88, 0.88);
+    cairo_move_to(cr, f.left, f.y(t));
+    cairo_line_to(cr, f.right, f.y(t));
+    cairo_stroke(cr);
+    drawText(cr, label(t, plot.logY), f.left - 6, f.y(t) + 4, 11, Align::Right);
+  }
+  for (const double t : xTicks) drawText(cr, label(t, plot.logX), px(t), f.bottom + 16, 11, Align::Center);
+  cairo_set_source_rgb(cr, 0.2, 0.2, 0.2);
+  cairo_move_to(cr, f.left, f.top);
+  cairo_line_to(cr, f.left, f.bottom);
+  cairo_line_to(cr, f.right, f.bottom);
+  cairo_stroke(cr);
+  drawText(cr, plot.yLabel, 18, (f.top + f.bottom) / 2, 12, Align::Center, false, -M_PI / 2);
+  drawText(cr, plot.xLabel, (f.left + f.right) / 2, height - 12, 12, Align::Center);
+  for (std::size_t k = 0; k < plot.series.size(); ++k) {
+    const auto& s = plot.series[k];
+    const Rgb c = paletteColor(k);
+    cairo_set_source_rgb(cr, c.r, c.g, c.b);
+    cairo_set_line_width(cr, 2.0);
+    bool first = true;
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!usable(s.x[i], plot.logX) || !usable(s.y[i], plot.logY)) continue;
+      const double x = px(axis(s.x[i], plot.logX)), y = f.y(axis(s.y[i], plot.logY));
+      if (first) cairo_move_to(cr, x, y);
+      else cairo_line_to(cr, x, y);
+      first = false;
+    }
+    cairo_stroke(cr);
+    for (std::size_t i = 0; i < s.x.size() && i < s.y.size(); ++i) {
+      if (!usable(s.x[i], plot.logX) || !usable(s.y[i], plot.logY)) continue;
+      cairo_arc(cr, px(axis(s.x[i], plot.logX)), f.y(axis(s.y[i], plot.logY)), 3.5, 0, 2 * M_PI);
+      cairo_fill(cr);
+    }
+    const double ly = f.top + 18 * double(k);
+    cairo_rectangle(cr, f.right + 14, ly - 8, 12, 10);
+    cairo_fill(cr);
+    drawText(cr, s.label, f.right + 32, ly + 1, 11, Align::Left);
+  }
+  return canvas.finish();
+}
+
 }  // namespace tlab::analysis

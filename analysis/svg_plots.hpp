@@ -33,8 +33,22 @@ struct BoxPlot {
   std::vector<BoxPlotGroup> groups;
 };
 
+// Lines through (x, y) points, one per series, on linear or log10 axes (error-vs-time plots).
+struct LineSeries {
+  std::string label;
+  std::vector<double> x, y;
+};
+
+struct LinePlot {
+  std::string title;
+  std::string xLabel, yLabel;
+  bool logX = false, logY = false;
+  std::vector<LineSeries> series;
+};
+
 std::string renderBarChartSvg(const BarChart& chart, double width = 640, double height = 400);
 std::string renderBoxPlotSvg(const BoxPlot& plot, double width = 640, double height = 400);
+std::string renderLinePlotSvg(const LinePlot& plot, double width = 640, double height = 400);
 
 // "Nice" axis ticks covering [lo, hi] (Heckbert 1990, "Nice numbers for graph labels",
 // Graphics Gems I): steps of 1, 2 or 5 × 10^k, about `targetCount` of them.

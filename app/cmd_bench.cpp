@@ -113,14 +113,20 @@ void runBenchRender(const BenchRenderOptions& o) {
       rows.push_back(measure("triangles", "builtin:torus?triangles=" + std::to_string(t), o.quick ? 512 : 1024, fill, o));
     rows.push_back(measure("layers", "builtin:quad-stack?n=16", 512, fill, o));
   }
+  // Columns: every pass that ran, in the order passes run (fill, sort, [connect, solve,] compose).
+  std::vector<std::string> passNames;
+  for (const auto& r : rows)
+    for (const auto& p : r.passes)
+      if (std::find(passNames.begin(), passNames.end(), p.first) == passNames.end()) passNames.push_back(p.first);
   nlohmann::json j = nlohmann::json::array();
   if (!o.json) {
     std::printf("tlab bench render: style %s, median of %d frames after a warm-up; ms per pass\n", o.style.c_str(), o.repeats);
-    std::printf("%-10s %-8s %-36s %5s %9s %9s %8s %8s %8s %8s %9s %9s %7s\n", "sweep", "fill", "scene", "size", "triangles",
-                "fragments", "fill", "sort", "compose", "total", "Mfrag/s", "unsorted", "ratio");
+    std::printf("%-10s %-8s %-36s %5s %9s %9s", "sweep", "fill", "scene", "size", "triangles", "fragments");
+    for (const auto& n : passNames) std::printf(" %8s", n.c_str());
+    std::printf(" %8s %9s %9s %7s\n", "total", "Mfrag/s", "unsorted", "ratio");
   }
   for (const auto& r : rows) {
-    const auto get = [&](const char* n) {
+    const auto get = [&](const std::string& n) {
       for (const auto& p : r.passes)
         if (p.first == n) return p.second;
       return 0.0;
@@ -134,9 +140,10 @@ void runBenchRender(const BenchRenderOptions& o) {
                    {"fragments", r.fragments}, {"pass_ms", passes}, {"total_ms", r.listMs},
                    {"fragments_per_second", mfs * 1e6}, {"unsorted_ms", r.floorMs}, {"ratio_to_unsorted", ratio}});
     } else {
-      std::printf("%-10s %-8s %-36s %5d %9zu %9llu %8.1f %8.1f %8.1f %8.1f %9.1f %9.1f %7.1f\n", r.sweep.c_str(), r.fill.c_str(),
-                  r.scene.c_str(), r.size, r.triangles, static_cast<unsigned long long>(r.fragments), get("fill"), get("sort"),
-                  get("compose"), r.listMs, mfs, r.floorMs, ratio);
+      std::printf("%-10s %-8s %-36s %5d %9zu %9llu", r.sweep.c_str(), r.fill.c_str(), r.scene.c_str(), r.size, r.triangles,
+                  static_cast<unsigned long long>(r.fragments));
+      for (const auto& n : passNames) std::printf(" %8.1f", get(n));
+      std::printf(" %8.1f %9.1f %9.1f %7.1f\n", r.listMs, mfs, r.floorMs, ratio);
     }
   }
   for (const auto& fill : fills) {
@@ -167,6 +174,7 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--style", o->style, "style to time")->capture_default_str();
   render->add_option("--repeats", o->repeats, "timed frames per configuration (median)")->capture_default_str()->check(CLI::Range(1, 100));
   render->callback([o] { runBenchRender(*o); });
+  addDiffusionBench(*bench);
 }
 
 }  // namespace tlab::app

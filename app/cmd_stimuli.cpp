@@ -8,8 +8,14 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/scene_options.hpp"
 #include "renderer/image/image.hpp"
 #include "stimuli/bench/integrator_benchmark.hpp"
+#include "stimuli/sets/probe_source.hpp"
+#include "stimuli/sets/stimulus_set_file.hpp"
+#include "stimuli/sets/stimulus_set_renderer.hpp"
+#include "tasks/question_json.hpp"
+#include "tasks/task_registry.hpp"
 
 namespace tlab::app {
 
@@ -44,6 +50,52 @@ void runIntegrateBench(const IntegrateBenchOptions& o) {
   }
 }
 
+// The hook between stimuli and tasks: the tasks' questions with their exact ground truth, plus the
+// stimuli library's own labelled points ("points").
+class TaskProbeSource final : public stimuli::ProbeSource {
+ public:
+  std::vector<std::string> taskNames() const override {
+    std::vector<std::string> names = points_.taskNames();
+    for (const auto& n : tasks::taskNames()) names.push_back(n);
+    return names;
+  }
+
+  std::vector<stimuli::ProbeQuestion> probe(const stimuli::ProbeView& view, const stimuli::ProbeSetSpec& spec) const override {
+    if (spec.task == "points") return points_.probe(view, spec);
+    const auto task = tasks::makeTask(spec.task);
+    const tasks::ProbeRequest request{view.scene, view.camera, view.width, view.height, spec.count, spec.seed, task->settings(spec.settings)};
+    std::vector<stimuli::ProbeQuestion> out;
+    for (const auto& q : task->probe(request)) {
+      stimuli::ProbeQuestion p;
+      p.text = q.text;
+      p.answerFormat = tasks::answerFormat(q.answerKind);
+      p.groundTruth = tasks::toJson(q);
+      for (const auto& point : q.points) p.marks.push_back({point.label, point.role, point.world, point.pixel});
+      out.push_back(std::move(p));
+    }
+    return out;
+  }
+
+ private:
+  stimuli::SurfacePointProbes points_;
+};
+
+struct StimuliOptions {
+  std::string setFile;
+  std::string out;
+  int jobs = 1;
+  bool quiet = false;
+};
+
+void runStimuli(const StimuliOptions& o) {
+  const stimuli::StimulusSetSpec spec = stimuli::readStimulusSetFile(o.setFile);
+  const TaskProbeSource probes;
+  const stimuli::StimulusSetRenderer renderer(sceneCatalog(), probes);
+  const auto result = renderer.render(spec, {o.out, o.jobs, !o.quiet});
+  std::cout << "tlab stimuli: " << result.stimuli.size() << " images of '" << spec.name << "' in " << o.out << "; " << result.manifestPath
+            << (result.bookletPath.empty() ? std::string() : ", " + result.bookletPath) << "\n";
+}
+
 }  // namespace
 
 void addIntegrateBench(CLI::App& bench) {
@@ -58,7 +110,14 @@ void addIntegrateBench(CLI::App& bench) {
 }
 
 void addStimuliCommand(CLI::App& app) {
-  (void)app;
+  auto o = std::make_shared<StimuliOptions>();
+  auto* cmd = app.add_subcommand("stimuli", "Render a stimulus set (scenes x styles x views x probe sets) to labelled PNGs, manifest.json and a PDF booklet");
+  cmd->add_option("set", o->setFile, "stimulus-set file (TOML; see examples/stimulus-sets/)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("-o,--out", o->out, "output folder")->required();
+  cmd->add_option("--jobs", o->jobs, "worker threads, each with its own GL context (output is identical for any value)")
+      ->capture_default_str()->check(CLI::Range(1, 64));
+  cmd->add_flag("--quiet", o->quiet, "no progress bar");
+  cmd->callback([o] { runStimuli(*o); });
 }
 
 }  // namespace tlab::app

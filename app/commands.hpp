@@ -8,6 +8,7 @@ namespace tlab::app {
 void addRenderCommand(CLI::App& app);    // cmd_render.cpp
 void addInspectCommand(CLI::App& app);   // cmd_inspect.cpp
 void addBenchCommand(CLI::App& app);     // cmd_bench.cpp
+void addDiffusionBench(CLI::App& bench); // cmd_bench_diffusion.cpp (tlab bench diffusion)
 void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
 void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
 void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp

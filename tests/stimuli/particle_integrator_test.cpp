@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "stimuli/fields/abc_flow.hpp"
+#include "stimuli/fields/double_gyre.hpp"
 #include "stimuli/fields/field_registry.hpp"
 #include "stimuli/fields/linear_saddle.hpp"
 #include "stimuli/fields/solid_rotation.hpp"
@@ -107,6 +108,41 @@ TEST(StiffRelaxationField, Rosenbrock4TakesAHundredTimesFewerStepsThanRk4AtEqual
   }
   ASSERT_GT(rk4Steps, 0u);
   EXPECT_GE(double(rk4Steps), 100.0 * double(rosenbrock.steps)) << "rk4 " << rk4Steps << " rosenbrock4 " << rosenbrock.steps;
+}
+
+// A time-dependent field with a closed form: v = (cos t, −x sin t ... ) kept simple: v = (cos t, x, 0)
+// gives x = x0 + sin t − sin t0 and y = y0 + ∫ x dt.
+class OscillatingShear final : public VectorField {
+ public:
+  std::string name() const override { return "oscillating-shear"; }
+  bool steady() const override { return false; }
+  FieldDomain domain() const override { return {glm::dvec3(-100.0), glm::dvec3(100.0)}; }
+  glm::dvec3 velocity(const glm::dvec3& p, double t) const override { return {std::cos(t), p.x, 0.0}; }
+  static glm::dvec3 exact(const glm::dvec3& p0, double t1) {  // from t0 = 0
+    return {p0.x + std::sin(t1), p0.y + p0.x * t1 + 1.0 - std::cos(t1), p0.z};
+  }
+};
+
+TEST(ParticleIntegrator, EveryMethodFollowsATimeDependentClosedForm) {
+  const OscillatingShear field;
+  const glm::dvec3 x0(0.3, -0.2, 0.1);
+  const glm::dvec3 exact = OscillatingShear::exact(x0, 6.0);
+  EXPECT_LT(glm::distance(ParticleIntegrator(field, fixedStep(0.01)).advance(x0, 0.0, 6.0).position, exact), 1e-8);
+  for (const auto kind : {IntegratorKind::DormandPrince, IntegratorKind::Rosenbrock4})
+    EXPECT_LT(glm::distance(ParticleIntegrator(field, adaptive(kind, 1e-8)).advance(x0, 0.0, 6.0).position, exact), 1e-6)
+        << integratorName(kind);
+}
+
+TEST(DoubleGyre, AnalyticDerivativesMatchFiniteDifferences) {
+  const DoubleGyre gyre;
+  for (const double t : {0.0, 1.3, 4.0}) {
+    const glm::dvec3 p(0.7, 0.35, 0.0);
+    const glm::dmat3 exact = gyre.jacobian(p, t), numeric = gyre.VectorField::jacobian(p, t);
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) EXPECT_NEAR(exact[c][r], numeric[c][r], 1e-6);
+    const glm::dvec3 dt = gyre.timeDerivative(p, t), numericDt = gyre.VectorField::timeDerivative(p, t);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(dt[i], numericDt[i], 1e-6);
+  }
 }
 
 TEST(FieldRegistry, BuildsEveryNamedFieldAndRejectsUnknownNames) {

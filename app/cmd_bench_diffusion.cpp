@@ -1,0 +1,180 @@
+// tlab bench diffusion: error of the α field against run time for each diffusion scheme
+// (explicit at its stability bound, sub-stepped, implicit with Jacobi sweeps), so a user can choose
+// iterations by accuracy per millisecond (Carnecky Eq. 8; see ops/diffuse_alpha.comp).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/svg_plots.hpp"
+#include "app/commands.hpp"
+#include "app/scene_options.hpp"
+#include "renderer/gpu/gl.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "renderer/image/image.hpp"
+#include "renderer/ops/connect_pass.hpp"
+#include "renderer/ops/diffusion_solver.hpp"
+#include "renderer/scene/scene_source.hpp"
+#include "renderer/styles/smart_style.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct DiffusionBenchOptions {
+  std::string scene = "builtin:open-cylinders";
+  std::string size = "256x256";
+  double time = 20.0;  // diffusion time T = n·λα (the paper's default n = 20, λα = 1)
+  std::string out = "out/bench";
+  bool json = false;
+};
+
+struct Run {
+  std::string scheme;
+  std::string setting;
+  int passes = 0;
+  double ms = 0, maxError = 0, rmsError = 0;
+};
+
+// The fields of one frame, reconnected for every run so each starts from the same α.
+struct Frame {
+  render::Scene scene;
+  render::GpuScene gpu;
+  gpu::ShaderCache shaders;
+  std::unique_ptr<render::FragmentBuffer> buffer;
+  float radius;
+  Frame(render::Scene s, int w, int h) : scene(std::move(s)), gpu(scene), radius(scene.boundingSphere().radius) {
+    const render::SmartStyle style;
+    const auto params = style.resolve({});
+    buffer = std::make_unique<render::FragmentBuffer>(shaders, w, h, render::FragmentLayout(style.properties(params, {gpu.componentCount()})),
+                                                      render::FillMethod::CountScatter);
+    const render::Camera camera = scene.camera ? *scene.camera : render::fitCamera(scene.boundingSphere(), float(w) / float(h));
+    render::RasterUniforms u;
+    u.view = camera.view();
+    u.projection = camera.projection(float(w) / float(h));
+    render::PassTimer timer(false);
+    buffer->build(gpu, u, timer);
+  }
+  // α after diffusing for the settings' n·λα, and the milliseconds the solve took.
+  std::vector<float> diffuse(const render::SmartSettings& s, double* ms) {
+    auto fields = render::connectFragments(*buffer, shaders, s, radius);
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    render::DiffusionSolver(shaders, s).solve(*fields);
+    glFinish();
+    *ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return fields->read(render::Field::Alpha);
+  }
+};
+
+render::SmartSettings settingsFor(render::DiffusionScheme scheme, int steps, double lambda, int sweeps) {
+  render::SmartSettings s;
+  s.adaptiveAlpha = true;  // α varies with the layer count: something to diffuse
+  s.s = 0.7;
+  s.halos = false;
+  s.silhouettes = false;  // time α alone
+  s.scheme = scheme;
+  s.iterations = steps;
+  s.lambdaAlpha = lambda;
+  s.jacobiSweeps = sweeps;
+  return s;
+}
+
+void runDiffusionBench(const DiffusionBenchOptions& o) {
+  const auto [w, h] = parseSize(o.size);
+  const auto context = gpu::createHeadlessContext();
+  Frame frame(render::loadScene(o.scene, sceneCatalog()), w, h);
+  const auto T = o.time;
+  // Reference: explicit steps of λ = 1/64, 16 times finer than the stability bound.
+  double refMs = 0;
+  const int refSteps = static_cast<int>(std::lround(T * 64));
+  const auto reference = frame.diffuse(settingsFor(render::DiffusionScheme::Explicit, refSteps, 1.0 / 64, 1), &refMs);
+  std::vector<Run> runs;
+  const auto measure = [&](const std::string& scheme, const std::string& setting, const render::SmartSettings& s) {
+    frame.diffuse(s, &refMs);  // warm-up (shader compilation)
+    Run r{scheme, setting};
+    const auto alpha = frame.diffuse(s, &r.ms);
+    r.passes = s.iterations * render::DiffusionSolver(frame.shaders, s).dispatchesPerStep();
+    double sum = 0;
+    for (std::size_t i = 0; i < alpha.size(); ++i) {
+      const double e = std::fabs(double(alpha[i]) - reference[i]);
+      r.maxError = std::max(r.maxError, e);
+      sum += e * e;
+    }
+    r.rmsError = alpha.empty() ? 0 : std::sqrt(sum / double(alpha.size()));
+    runs.push_back(r);
+  };
+  for (int m : {1, 2, 4, 8})  // explicit: λ = 1/(4m), the bound and finer
+    measure("explicit", "lambda=1/" + std::to_string(4 * m),
+            settingsFor(render::DiffusionScheme::Explicit, static_cast<int>(std::lround(T * 4 * m)), 0.25 / m, 1));
+  for (double lambda : {1.0, 2.0})  // sub-stepped: the paper's λα = 1 (4 sub-steps) and 2 (8)
+    measure("substep", "lambda=" + std::to_string(int(lambda)),
+            settingsFor(render::DiffusionScheme::Substep, static_cast<int>(std::lround(T / lambda)), lambda, 1));
+  for (double lambda : {1.0, 4.0})
+    for (int sweeps : {2, 5, 10, 20})
+      measure("implicit", "lambda=" + std::to_string(int(lambda)) + " sweeps=" + std::to_string(sweeps),
+              settingsFor(render::DiffusionScheme::Implicit, static_cast<int>(std::lround(T / lambda)), lambda, sweeps));
+
+  std::filesystem::create_directories(o.out);
+  std::string csv = "scheme,setting,passes,ms,max_error,rms_error\n";
+  for (const auto& r : runs)
+    csv += r.scheme + "," + r.setting + "," + std::to_string(r.passes) + "," + std::to_string(r.ms) + "," +
+           std::to_string(r.maxError) + "," + std::to_string(r.rmsError) + "\n";
+  const auto csvPath = (std::filesystem::path(o.out) / "diffusion.csv").string();
+  const auto svgPath = (std::filesystem::path(o.out) / "diffusion.svg").string();
+  render::writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
+  analysis::LinePlot plot;
+  plot.title = "alpha diffusion to time " + std::to_string(int(T)) + ": error vs. run time";
+  plot.xLabel = "solve time [ms]";
+  plot.yLabel = "max |alpha - reference|";
+  plot.logX = plot.logY = true;
+  // One line per scheme, and per λ for the implicit runs (their sweeps vary along the line).
+  const auto seriesOf = [](const Run& r) {
+    return r.scheme == "implicit" ? r.scheme + " " + r.setting.substr(0, r.setting.find(' ')) : r.scheme;
+  };
+  for (const auto& r : runs) {
+    const std::string name = seriesOf(r);
+    auto it = std::find_if(plot.series.begin(), plot.series.end(), [&](const auto& s) { return s.label == name; });
+    if (it == plot.series.end()) it = plot.series.insert(plot.series.end(), analysis::LineSeries{name, {}, {}});
+    it->x.push_back(r.ms);
+    it->y.push_back(std::max(r.maxError, 1e-9));
+  }
+  const std::string svg = analysis::renderLinePlotSvg(plot);
+  render::writeFileAtomically(svgPath, std::vector<std::uint8_t>(svg.begin(), svg.end()));
+  if (o.json) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const auto& r : runs)
+      j.push_back({{"scheme", r.scheme}, {"setting", r.setting}, {"passes", r.passes}, {"ms", r.ms},
+                   {"max_error", r.maxError}, {"rms_error", r.rmsError}});
+    std::cout << nlohmann::json{{"scene", o.scene}, {"size", o.size}, {"fragments", frame.buffer->fragmentCount()},
+                                {"time", T}, {"runs", j}}.dump(2) << "\n";
+    return;
+  }
+  std::printf("tlab bench diffusion: %s at %s (%llu fragments), diffusion time T = n*lambda = %g;\n"
+              "reference: explicit steps of lambda = 1/64. Errors of alpha in [0, 1].\n",
+              o.scene.c_str(), o.size.c_str(), static_cast<unsigned long long>(frame.buffer->fragmentCount()), T);
+  std::printf("%-9s %-22s %7s %10s %12s %12s\n", "scheme", "setting", "passes", "ms", "max error", "rms error");
+  for (const auto& r : runs)
+    std::printf("%-9s %-22s %7d %10.1f %12.2e %12.2e\n", r.scheme.c_str(), r.setting.c_str(), r.passes, r.ms, r.maxError, r.rmsError);
+  std::printf("wrote %s and %s\n", csvPath.c_str(), svgPath.c_str());
+}
+
+}  // namespace
+
+void addDiffusionBench(CLI::App& bench) {
+  auto o = std::make_shared<DiffusionBenchOptions>();
+  auto* cmd = bench.add_subcommand("diffusion", "Error of the alpha field vs. run time for each diffusion scheme (CSV + SVG plot)");
+  cmd->add_option("--scene", o->scene, "scene")->capture_default_str();
+  cmd->add_option("--size", o->size, "image size WxH")->capture_default_str();
+  cmd->add_option("--time", o->time, "diffusion time n*lambda_alpha")->capture_default_str()->check(CLI::Range(0.25, 1000.0));
+  cmd->add_option("--out", o->out, "folder for diffusion.csv and diffusion.svg")->capture_default_str();
+  cmd->add_flag("--json", o->json, "print JSON");
+  cmd->callback([o] { runDiffusionBench(*o); });
+}
+
+}  // namespace tlab::app
