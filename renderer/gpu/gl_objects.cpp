@@ -65,7 +65,7 @@ void Buffer::clearToZero() {
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
 void dispatchLinear(std::size_t items) {
-  const std::size_t groups = (items + 63) / 64;
+  const std::size_t groups = (items + kComputeGroupSize - 1) / kComputeGroupSize;
   const std::size_t perRow = 32768;
   const auto x = static_cast<GLuint>(groups < perRow ? groups : perRow);
   const auto y = static_cast<GLuint>((groups + perRow - 1) / perRow);

@@ -6,6 +6,8 @@
 //    λ·deg(i) ≤ 1, i.e. λ ≤ 1/4 on the 4-neighbour graph; the host sub-steps larger λ.
 //  TLAB_JACOBI: one Jacobi sweep for the implicit step (1 + λ·deg)α' − λ·Σα'_j = α_old, which is
 //    unconditionally stable; each sweep is again a convex combination.
+//  TLAB_FUSED_SPREAD: the same invocation also spreads β and γ by Eq. 9 (max-propagation), so a
+//    step reads each fragment's links once (the first α dispatch of a step does this).
 #include "buffer/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
@@ -14,6 +16,18 @@ layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer AlphaOut { float alpha
 layout(std430, binding = BIND_FLAGS) readonly buffer Flags { uint flags[]; };
 #ifdef TLAB_JACOBI
 layout(std430, binding = BIND_ALPHA_OLD) readonly buffer AlphaOld { float alphaOld[]; };
+#endif
+#ifdef TLAB_FUSED_SPREAD
+#ifdef TLAB_HAS_BETA
+layout(std430, binding = BIND_BETA_IN) readonly buffer BetaIn { float betaIn[]; };
+layout(std430, binding = BIND_BETA_OUT) writeonly buffer BetaOut { float betaOut[]; };
+#endif
+#ifdef TLAB_HAS_GAMMA
+layout(std430, binding = BIND_GAMMA_IN) readonly buffer GammaIn { float gammaIn[]; };
+layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer GammaOut { float gammaOut[]; };
+#endif
+uniform float uLambdaBeta;
+uniform float uLambdaGamma;
 #endif
 uniform uint uFragments;
 uniform float uLambda;
@@ -29,7 +43,25 @@ void main() {
       sum += alphaIn[l[k]];
       degree += 1.0;
     }
-  bool free = (flags[f] & FREE_ALPHA) != 0u;
+  uint fragFlags = flags[f];
+  bool free = (fragFlags & FREE_ALPHA) != 0u;
+#ifdef TLAB_FUSED_SPREAD
+  // Eq. 9 on β and γ; fixed fragments (b = 0) keep their value.
+#ifdef TLAB_HAS_BETA
+  float b = betaIn[f];
+  if ((fragFlags & FREE_BETA) != 0u)
+    for (int k = 0; k < 4; ++k)
+      if (l[k] != NO_NEIGHBOR) b = max(b, betaIn[l[k]] - uLambdaBeta);
+  betaOut[f] = b;
+#endif
+#ifdef TLAB_HAS_GAMMA
+  float g = gammaIn[f];
+  if ((fragFlags & FREE_GAMMA) != 0u)
+    for (int k = 0; k < 4; ++k)
+      if (l[k] != NO_NEIGHBOR) g = max(g, gammaIn[l[k]] - uLambdaGamma);
+  gammaOut[f] = g;
+#endif
+#endif
 #ifdef TLAB_JACOBI
   alphaOut[f] = free ? (alphaOld[f] + uLambda * sum) / (1.0 + uLambda * degree) : alphaOld[f];
 #else

@@ -5,11 +5,11 @@
 namespace tlab::render {
 
 namespace {
-constexpr GLuint kAlphaIn = 11, kAlphaOut = 12, kFieldIn = 13, kFieldOut = 14;  // ops/field_bindings.glsl
+constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/field_bindings.glsl
 constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;
 
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
-  program.use();
+  program.use();  // (callers may have set further uniforms on it already)
   glUniform1ui(program.uniform("uFragments"), static_cast<GLuint>(fragments));
   glUniform1f(program.uniform("uLambda"), static_cast<float>(lambda));
   gpu::dispatchLinear(fragments);
@@ -19,32 +19,55 @@ void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda
 
 DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings)
     : settings_(settings),
-      explicitStep_(&shaders.compute("ops/diffuse_alpha.comp")),
-      jacobiSweep_(&shaders.compute("ops/diffuse_alpha.comp", {{"TLAB_JACOBI", "1"}})),
+      shaders_(shaders),
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")) {}
 
-void DiffusionSolver::diffuseAlpha(TransparencyFields& fields) const {
+const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const {
+  gpu::ShaderDefines d;
+  if (jacobi) d.emplace_back("TLAB_JACOBI", "1");
+  if (fused) {
+    d.emplace_back("TLAB_FUSED_SPREAD", "1");
+    for (const auto& f : fields.defines()) d.push_back(f);
+  }
+  const auto& program = shaders_.compute("ops/diffuse_alpha.comp", d);
+  if (fused) {
+    program.use();
+    glUniform1f(program.uniform("uLambdaBeta"), static_cast<float>(settings_.lambdaBeta));
+    glUniform1f(program.uniform("uLambdaGamma"), static_cast<float>(settings_.lambdaGamma));
+  }
+  return program;
+}
+
+void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const {
   const std::size_t n = fields.fragments();
   const double lambda = settings_.lambdaAlpha;
+  // After the first dispatch of a fused step, β and γ are done: swap them to current.
+  const auto afterFirst = [&](bool first) {
+    if (!(first && fusedSpread)) return;
+    if (fields.hasBeta()) fields.swap(Field::Beta);
+    if (fields.hasGamma()) fields.swap(Field::Gamma);
+  };
   if (settings_.scheme == DiffusionScheme::Implicit) {
     // Backward Euler (I + λL)α' = α: keep α in the scratch buffer, Jacobi sweeps from α.
     glCopyNamedBufferSubData(fields.current(Field::Alpha).id(), fields.scratch().id(), 0, 0,
                              static_cast<GLsizeiptr>(n * sizeof(float)));
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     for (int sweep = 0; sweep < settings_.jacobiSweeps; ++sweep) {
-      fields.bindPair(Field::Alpha, kAlphaIn, kAlphaOut);
-      run(*jacobiSweep_, n, lambda);
+      fields.bindCurrent();
+      run(alphaProgram(true, fusedSpread && sweep == 0, fields), n, lambda);
       fields.swap(Field::Alpha);
+      afterFirst(sweep == 0);
     }
     return;
   }
   // Explicit (λ ≤ 1/4) or sub-stepped: m steps of λ/m cover the same diffusion time λ.
   const int m = settings_.scheme == DiffusionScheme::Explicit ? 1 : substepsFor(lambda);
   for (int k = 0; k < m; ++k) {
-    fields.bindPair(Field::Alpha, kAlphaIn, kAlphaOut);
-    run(*explicitStep_, n, lambda / m);
+    fields.bindCurrent();
+    run(alphaProgram(false, fusedSpread && k == 0, fields), n, lambda / m);
     fields.swap(Field::Alpha);
+    afterFirst(k == 0);
   }
 }
 
@@ -63,10 +86,13 @@ void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lam
 
 void DiffusionSolver::step(TransparencyFields& fields) const {
   if (fields.fragments() == 0) return;
-  fields.bindCurrent();  // links and flags
-  diffuseAlpha(fields);
-  if (fields.hasBeta()) spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
-  if (fields.hasGamma()) spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
+  // Eq. 9 spreading rides along with the first α dispatch; Eq. 8 spreading needs its own passes.
+  const bool fused = settings_.spreadByMax && (fields.hasBeta() || fields.hasGamma());
+  diffuseAlpha(fields, fused);
+  if (!fused) {
+    if (fields.hasBeta()) spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
+    if (fields.hasGamma()) spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
+  }
   gpu::checkGl("the diffusion solver");
 }
 
@@ -78,9 +104,9 @@ int DiffusionSolver::dispatchesPerStep() const {
   const int alpha = settings_.scheme == DiffusionScheme::Implicit ? settings_.jacobiSweeps
                     : settings_.scheme == DiffusionScheme::Explicit ? 1
                                                                     : substepsFor(settings_.lambdaAlpha);
-  const auto spreadCount = [&](double l) { return settings_.spreadByMax ? 1 : substepsFor(l); };
-  return alpha + (settings_.silhouettes ? spreadCount(settings_.lambdaBeta) : 0) +
-         (settings_.halos ? spreadCount(settings_.lambdaGamma) : 0);
+  if (settings_.spreadByMax) return alpha;  // fused into the first α dispatch
+  return alpha + (settings_.silhouettes ? substepsFor(settings_.lambdaBeta) : 0) +
+         (settings_.halos ? substepsFor(settings_.lambdaGamma) : 0);
 }
 
 }  // namespace tlab::render

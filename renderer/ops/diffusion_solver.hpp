@@ -18,12 +18,13 @@ class DiffusionSolver {
   int dispatchesPerStep() const;
 
  private:
-  void diffuseAlpha(TransparencyFields& fields) const;
+  // α diffusion for one step; with `fusedSpread` the first dispatch also spreads β and γ.
+  void diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const;
+  const gpu::ShaderProgram& alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
 
   SmartSettings settings_;
-  const gpu::ShaderProgram* explicitStep_;
-  const gpu::ShaderProgram* jacobiSweep_;
+  gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
 };

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "renderer/styles/constant_style.hpp"
+#include "renderer/styles/iris_style.hpp"
 #include "renderer/styles/opaque_style.hpp"
 #include "renderer/styles/smart_style.hpp"
 #include "renderer/styles/unsorted_style.hpp"
@@ -30,6 +31,9 @@ const std::vector<std::unique_ptr<Style>>& registry() {
     s.push_back(std::make_unique<ConstantStyle>());
     s.push_back(std::make_unique<UnsortedStyle>());
     s.push_back(std::make_unique<SmartStyle>());
+    s.push_back(std::make_unique<IrisStyle>("angle", IllustrativeSettings::Opacity::Angle, false));
+    s.push_back(std::make_unique<IrisStyle>("normal-variation", IllustrativeSettings::Opacity::NormalVariation, false));
+    s.push_back(std::make_unique<IrisStyle>("iris", IllustrativeSettings::Opacity::Constant, true));
     return s;
   }();
   return styles;

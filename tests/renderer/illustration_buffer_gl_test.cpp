@@ -59,7 +59,9 @@ TEST_P(BothFillMethods, ListsAreSortedFrontToBackWithFacingAndIds) {
   ASSERT_EQ(list.size(), 6u);
   const std::uint32_t objects[6] = {0, 1, 2, 2, 1, 0};  // outer shell is object 0
   for (std::size_t i = 0; i < 6; ++i) {
-    if (i > 0) EXPECT_LT(list[i - 1].depth, list[i].depth);
+    if (i > 0) {
+      EXPECT_LT(list[i - 1].depth, list[i].depth);
+    }
     EXPECT_EQ(list[i].object, objects[i]);
     EXPECT_EQ(list[i].frontFacing, i < 3);
     EXPECT_NEAR(glm::length(list[i].normal), 1.0f, 1e-3f);
@@ -83,7 +85,9 @@ TEST_P(BothFillMethods, ForcedOverflowGivesTheSameImage) {
   EXPECT_EQ(bigStats.rerenders, 0);
   EXPECT_EQ(bigStats.poolGrowths, 0);
   EXPECT_GE(smallStats.poolGrowths, 1);
-  if (GetParam() == FillMethod::LinkedList) EXPECT_GE(smallStats.rerenders, 1);
+  if (GetParam() == FillMethod::LinkedList) {
+    EXPECT_GE(smallStats.rerenders, 1);
+  }
   EXPECT_EQ(bigStats.fragments, smallStats.fragments);
 }
 

@@ -1,0 +1,15 @@
+#pragma once
+// Compositing of the IRIS local styles on the illustration buffer
+// (compose/illustrative_compose.comp): shading, opacity, window, stripes and silhouettes per
+// fragment, front-to-back blending with float accumulation.
+#include "renderer/gpu/gl_objects.hpp"
+#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/styles/illustrative_settings.hpp"
+
+namespace tlab::render {
+
+// `links` holds the connect pass's neighbour links (uvec4 per fragment) when the settings need
+// screen-space derivatives; null otherwise.
+void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings, const gpu::Buffer* links);
+
+}  // namespace tlab::render

@@ -1,0 +1,63 @@
+#pragma once
+// The local illustrative shading of IRIS (Hummel et al. 2010, Secs. 3-5): view-dependent opacity
+// (angle, Sec. 3.1; normal variation, Eq. 2), window transparency (Sec. 3.3), two-sided
+// colouring, Phong or Gooch shading, adaptive stripe patterns (Sec. 4.1, Eqs. 3-5) and Sobel
+// silhouettes (Sec. 5.1). One set of settings drives both ways of compositing: the illustration
+// buffer (compose/illustrative_compose.comp) and depth peeling (peel/peel_layer.frag); the
+// GLSL side is styles/illustrative_shading.glsl.
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "renderer/gpu/shader_program.hpp"
+#include "renderer/styles/style_params.hpp"
+
+namespace tlab::render {
+
+struct IllustrativeSettings {
+  enum class Opacity { Constant, Angle, NormalVariation };
+  enum class Shading { Flat, Headlight, Phong, Gooch };
+  enum StripeAxis : std::uint32_t { StripeS = 1u, StripeT = 2u };
+
+  Opacity opacity = Opacity::Constant;
+  float alpha = 0.25f;                    // Constant
+  float alphaMin = 0.1f, alphaMax = 0.9f;  // [α_min, α_max] of IRIS Sec. 3.2
+  float gamma = 0.5f;                      // γ of IRIS Eq. 2
+
+  Shading shading = Shading::Headlight;
+  bool twoSided = true;   // back faces in the object's back colour
+  float specular = 0.4f;  // Phong k_s (also α_spec, IRIS Sec. 5.1 "Combination")
+  float shininess = 32.0f;
+
+  int windowLayers = 0;                // window transparency on the first N layers (0: off)
+  glm::vec2 windowCenter{0.5f, 0.5f};  // image fractions, y from the top
+  float windowRadius = 0.25f;          // fraction of the image height
+  float windowFalloff = 0.1f;          // fraction of the image height
+  float windowOpacity = 0.1f;          // opacity factor at the centre
+
+  std::uint32_t stripes = 0;  // StripeAxis bits
+  float stripePeriod = 16.0f; // requested image-space period in pixels
+  float stripeWidth = 0.5f;   // stripe fraction of one period
+  float stripeStrength = 0.8f;
+  float stripeDarken = 0.3f;
+  bool stripeAdditive = false;
+
+  bool silhouettes = false;
+  glm::vec3 silhouetteColor{0.0f};
+  float silhouetteThreshold = 0.3f, silhouetteSoftness = 0.5f;
+
+  // Parameters shared by the IRIS styles (everything but the opacity mode and its α values).
+  static std::vector<ParamSpec> params();
+  // Reads params() and the opacity values present in `p` (alpha, alpha_min, alpha_max, gamma).
+  static IllustrativeSettings from(const StyleParams& p, Opacity opacity);
+  // The `constant` style: one α, the common `lighting` choice, nothing else.
+  static IllustrativeSettings constant(float alpha, bool lighting);
+
+  // Normal variation and stripes need screen-space derivatives of n_z and (s, t).
+  bool needsScreenDerivatives() const { return opacity == Opacity::NormalVariation || stripes != 0; }
+  // Sets every uniform of styles/illustrative_shading.glsl and ops/sobel_silhouette.glsl.
+  void setUniforms(const gpu::ShaderProgram& program, int width, int height) const;
+};
+
+}  // namespace tlab::render
