@@ -175,6 +175,8 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--repeats", o->repeats, "timed frames per configuration (median)")->capture_default_str()->check(CLI::Range(1, 100));
   render->callback([o] { runBenchRender(*o); });
   addDiffusionBench(*bench);
+  addPeelBench(*bench);
+  addIntegrateBench(*bench);
 }
 
 }  // namespace tlab::app

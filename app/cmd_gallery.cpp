@@ -8,6 +8,7 @@
 #include "renderer/image/image.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
+#include "stimuli/sets/label_painter.hpp"
 
 namespace tlab::app {
 
@@ -24,15 +25,28 @@ void runGallery(const GalleryOptions& o) {
   std::filesystem::create_directories(o.out);
   const auto context = gpu::createHeadlessContext();
   render::Renderer renderer(render::loadScene(o.scene, sceneCatalog()));
-  for (const auto& style : render::styleNames()) {
+  // Every style to its own PNG, and all of them on one labelled contact sheet (4 per row).
+  const auto styles = render::styleNames();
+  const int columns = 4, rows = int((styles.size() + columns - 1) / columns);
+  render::Image sheet(columns * w, rows * h, glm::vec4(1.0f));
+  const stimuli::LabelPainter painter;
+  for (std::size_t i = 0; i < styles.size(); ++i) {
     render::RenderRequest q;
     q.width = w;
     q.height = h;
-    q.style = style;
-    const auto path = (std::filesystem::path(o.out) / (style + ".png")).string();
-    render::writeFileAtomically(path, render::encodePng(renderer.render(q)));
-    std::cout << "  " << style << ": " << path << "  (" << render::findStyle(style).description() << ")\n";
+    q.style = styles[i];
+    const render::Image image = renderer.render(q);
+    const auto path = (std::filesystem::path(o.out) / (styles[i] + ".png")).string();
+    render::writeFileAtomically(path, render::encodePng(image));
+    std::cout << "  " << styles[i] << ": " << path << "  (" << render::findStyle(styles[i]).description() << ")\n";
+    const int x0 = int(i % columns) * w, y0 = int(i / columns) * h;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) sheet.at(x0 + x, y0 + y) = image.at(x, y);
+    painter.drawText(sheet, x0 + 6, y0 + 6, styles[i], h * 0.07, glm::vec4(0, 0, 0, 1));
   }
+  const auto sheetPath = (std::filesystem::path(o.out) / "gallery.png").string();
+  render::writeFileAtomically(sheetPath, render::encodePng(sheet));
+  std::cout << "  contact sheet: " << sheetPath << "\n";
   std::cout << "gallery of " << render::styleNames().size() << " styles on " << o.scene << " written to " << o.out << "/\n";
 }
 

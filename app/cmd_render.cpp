@@ -1,6 +1,7 @@
 // tlab render: one picture of a scene in a transparency style.
 #include <fstream>
 #include <iostream>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -10,6 +11,7 @@
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/gpu/window_context.hpp"
 #include "renderer/image/image.hpp"
+#include "renderer/peel/peeling_renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 
 namespace tlab::app {
@@ -21,8 +23,24 @@ struct RenderOptions {
   std::string output;
   std::string statsJson;
   std::string layersOut;
+  std::string renderer = "buffer";
   bool window = false;
 };
+
+// Depth peeling (IRIS Sec. 5.1) instead of the illustration buffer, for the local styles.
+render::Image renderPeeled(render::Scene scene, const render::RenderRequest& request, render::RenderStats& stats,
+                           int& iterations) {
+  render::PeelingRenderer peeler(std::move(scene));
+  render::PeelStats peel;
+  render::Image image = peeler.render(request, &peel);
+  stats.triangles = peeler.scene().triangleCount();
+  stats.passMilliseconds = peel.passMilliseconds;
+  stats.camera = peel.camera;
+  stats.width = request.width;
+  stats.height = request.height;
+  iterations = peel.iterations;
+  return image;
+}
 
 void runRender(const RenderOptions& o) {
   if (o.output.empty() && !o.window) throw std::invalid_argument("render: give -o FILE.png (or --window)");
@@ -37,17 +55,28 @@ void runRender(const RenderOptions& o) {
   } else {
     context = gpu::createHeadlessContext();
   }
-  render::Renderer renderer(std::move(scene));
+  if (o.renderer != "buffer" && o.renderer != "peel") throw std::invalid_argument("--renderer must be buffer or peel");
+  if (o.renderer == "peel" && !o.layersOut.empty()) throw std::invalid_argument("--layers-out needs --renderer buffer");
   render::RenderStats stats;
-  const render::Image image = renderer.render(request, &stats);
+  int peelIterations = 0;
+  std::optional<render::Renderer> renderer;
+  render::Image image;
+  if (o.renderer == "peel") {
+    image = renderPeeled(std::move(scene), request, stats, peelIterations);
+  } else {
+    renderer.emplace(std::move(scene));
+    image = renderer->render(request, &stats);
+  }
   if (!o.output.empty()) render::writeFileAtomically(o.output, render::encodePng(image));
   if (!o.layersOut.empty())
-    render::writeFileAtomically(o.layersOut, render::encodePgm16(renderer.layerCounts(), image.width, image.height));
+    render::writeFileAtomically(o.layersOut, render::encodePgm16(renderer->layerCounts(), image.width, image.height));
   if (!o.statsJson.empty()) {
     nlohmann::json j = statsToJson(stats, context->info());
     j["style"] = request.style;
     j["settings"] = request.settings;
     j["scene"] = o.scene.scene;
+    j["renderer"] = o.renderer;
+    if (o.renderer == "peel") j["peel_iterations"] = peelIterations;
     const std::string text = j.dump(2) + "\n";
     render::writeFileAtomically(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
   }
@@ -68,6 +97,9 @@ void addRenderCommand(CLI::App& app) {
   cmd->add_option("--stats-json", options->statsJson,
                   "write fragment counts, list lengths, per-pass ms, re-renders and the camera used");
   cmd->add_option("--layers-out", options->layersOut, "write the per-pixel fragment count as a 16-bit PGM");
+  cmd->add_option("--renderer", options->renderer,
+                  "buffer (the illustration buffer) or peel (depth peeling, local styles only: IRIS Sec. 5.1)")
+      ->capture_default_str();
   cmd->add_flag("--window", options->window, "show the result in a GLFW window instead of rendering headless");
   cmd->callback([options] { runRender(*options); });
 }

@@ -1,6 +1,8 @@
 // tlab report FILE.csv --dv COL [--within A[,B] --subject S] [--between A] -o report.html
 // [--markdown report.md]: an HTML (and optionally Markdown) report with design, descriptives,
 // outlier screening, ANOVA, two-condition/rank tests and plots.
+// tlab report study.db -o report.html: the same for a study database, following the analysis plan
+// of the experiment file stored in it (one report per [[analysis]]: report.html, report-2.html, ...).
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -12,6 +14,7 @@
 #include "analysis/report_html.hpp"
 #include "analysis/report_markdown.hpp"
 #include "app/commands.hpp"
+#include "study/study_analysis.hpp"
 
 namespace tlab::app {
 
@@ -38,7 +41,43 @@ void writeFile(const std::filesystem::path& path, const std::string& content) {
   if (!out) throw an::AnalysisError(path.string() + ": write failed");
 }
 
+void writeReport(const an::Report& report, const std::string& output, const std::string& markdown) {
+  writeFile(output, an::renderHtml(report));
+  std::cout << "wrote " << output << "\n";
+  if (!markdown.empty()) {
+    const std::filesystem::path md(markdown);
+    const an::MarkdownDocument doc = an::renderMarkdown(report, md.stem().string());
+    writeFile(md, doc.text);
+    for (const auto& figure : doc.figures) writeFile(md.parent_path() / figure.fileName, figure.svg);
+    std::cout << "wrote " << markdown << " and " << doc.figures.size() << " SVG figures\n";
+  }
+}
+
+// "report.html", 2 → "report-2.html"
+std::string numbered(const std::string& path, std::size_t index) {
+  if (path.empty() || index == 0) return path;
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "-" + std::to_string(index + 1) + p.extension().string())).string();
+}
+
+void runDatabase(const ReportOptions& o) {
+  if (!o.dvs.empty() || !o.within.empty() || !o.between.empty() || !o.subject.empty())
+    throw an::AnalysisError("a study database is reported by its experiment's analysis plan; --dv/--within/--between/--subject are for CSV files");
+  if (!std::filesystem::exists(o.file)) throw an::AnalysisError(o.file + ": no such database");
+  study::SessionStore store(o.file, false);
+  const study::StoredExperiment stored = study::storedExperiment(store);
+  const auto analyses = study::analyzeStudy(store, stored);
+  if (analyses.empty()) throw an::AnalysisError(o.file + ": the experiment plans no [[analysis]]");
+  for (std::size_t i = 0; i < analyses.size(); ++i) {
+    an::Report report = analyses[i].report;
+    if (!o.title.empty()) report.title = analyses.size() == 1 ? o.title : o.title + " - " + report.title;
+    writeReport(report, numbered(o.output, i), numbered(o.markdown, i));
+  }
+}
+
 void run(const ReportOptions& o) {
+  if (std::filesystem::path(o.file).extension() == ".db") return runDatabase(o);
+  if (o.dvs.empty()) throw an::AnalysisError("--dv is required for a CSV file");
   if (!o.within.empty() && o.subject.empty())
     throw an::AnalysisError("--within needs --subject (the column naming the participant)");
   an::AnalysisPlan plan;
@@ -48,26 +87,17 @@ void run(const ReportOptions& o) {
   plan.within = o.within;
   plan.subject = o.subject;
   plan.ssType = an::parseSumOfSquaresType(o.ssType);
-  const an::Report report = an::makeReport(an::readCsvFile(o.file), plan);
-  writeFile(o.output, an::renderHtml(report));
-  std::cout << "wrote " << o.output << "\n";
-  if (!o.markdown.empty()) {
-    const std::filesystem::path md(o.markdown);
-    const an::MarkdownDocument doc = an::renderMarkdown(report, md.stem().string());
-    writeFile(md, doc.text);
-    for (const auto& figure : doc.figures) writeFile(md.parent_path() / figure.fileName, figure.svg);
-    std::cout << "wrote " << o.markdown << " and " << doc.figures.size() << " SVG figures\n";
-  }
+  writeReport(an::makeReport(an::readCsvFile(o.file), plan), o.output, o.markdown);
 }
 
 }  // namespace
 
 void addReportCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("report", "Write an HTML (and Markdown) analysis report for a long-format CSV file");
+  auto* cmd = app.add_subcommand("report", "Write an HTML (and Markdown) analysis report for a long-format CSV file or a study database");
   const auto options = std::make_shared<ReportOptions>();
   ReportOptions& o = *options;
-  cmd->add_option("file", o.file, "Long-format CSV file (header row)")->required();
-  cmd->add_option("--dv", o.dvs, "Dependent variable column(s), comma-separated")->required()->delimiter(',');
+  cmd->add_option("file", o.file, "Long-format CSV file (header row), or a study database (.db)")->required();
+  cmd->add_option("--dv", o.dvs, "Dependent variable column(s), comma-separated (CSV files)")->delimiter(',');
   cmd->add_option("--between", o.between, "Between-subject factor column(s)")->delimiter(',');
   cmd->add_option("--within", o.within, "Within-subject factor column(s)")->delimiter(',');
   cmd->add_option("--subject", o.subject, "Subject column (required with --within)");

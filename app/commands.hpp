@@ -9,11 +9,14 @@ void addRenderCommand(CLI::App& app);    // cmd_render.cpp
 void addInspectCommand(CLI::App& app);   // cmd_inspect.cpp
 void addBenchCommand(CLI::App& app);     // cmd_bench.cpp
 void addDiffusionBench(CLI::App& bench); // cmd_bench_diffusion.cpp (tlab bench diffusion)
+void addPeelBench(CLI::App& bench);      // cmd_bench_peel.cpp (tlab bench peel)
 void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
 void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
 void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp
 void addStatcheckCommand(CLI::App& app); // cmd_statcheck.cpp
 void addReportCommand(CLI::App& app);    // cmd_report.cpp
+void addStimuliCommand(CLI::App& app);   // cmd_stimuli.cpp
+void addIntegrateBench(CLI::App& bench); // cmd_stimuli.cpp: tlab bench integrate
 void addTaskCommand(CLI::App& app);      // cmd_task.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
 

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   tlab::app::addStatcheckCommand(app);
   tlab::app::addReportCommand(app);
   tlab::app::addTaskCommand(app);
+  tlab::app::addStimuliCommand(app);
   tlab::app::addVersionCommand(app);
   try {
     app.parse(argc, argv);

@@ -3,7 +3,10 @@
 #include <regex>
 #include <stdexcept>
 
+#include "renderer/scene/technical_scenes.hpp"
 #include "renderer/styles/style.hpp"
+#include "stimuli/scenes/stimulus_scenes.hpp"
+#include "tasks/letter_patterns.hpp"
 
 namespace tlab::app {
 
@@ -28,7 +31,16 @@ std::pair<int, int> parseSize(const std::string& text) {
   return {w, h};
 }
 
-const std::vector<render::BuiltinSceneSpec>& sceneCatalog() { return render::builtinScenes(); }
+const std::vector<render::BuiltinSceneSpec>& sceneCatalog() {
+  // The renderer's built-ins, the stimuli library's scenes, the technical scenes, and the T2
+  // letter-pattern world (its 5x7 bitmaps come from the tasks library).
+  static const std::vector<render::BuiltinSceneSpec> catalog = [] {
+    std::vector<render::BuiltinSceneSpec> extra = render::technicalScenes();
+    extra.push_back(stimuli::abstractPatternSpec(tasks::patternLetters(), tasks::letterCells));
+    return stimuli::allSceneSpecs(extra);
+  }();
+  return catalog;
+}
 
 render::RenderRequest SceneOptions::request(const render::Scene& scene) const {
   render::RenderRequest r;

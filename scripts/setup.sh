@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git python3 python3-glad
   libglfw3-dev libglm-dev libtinygltf-dev libosmesa6-dev libgl-dev libegl-dev
   libsqlite3-dev sqlite3 libboost-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev libcli11-dev
-  libcgal-dev libeigen3-dev libcairo2-dev libfreetype-dev fonts-dejavu-core
+  libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool
 )

@@ -88,7 +88,7 @@ void FragmentBuffer::ensureCapacity(std::size_t fragments) {
   capacity_ = fragments;
   fragsUnsorted_ = gpu::Buffer(capacity_ * recordBytes);
   fragsSorted_ = gpu::Buffer(capacity_ * recordBytes);
-  order_ = gpu::Buffer(capacity_ * 4);
+  order_ = gpu::Buffer(capacity_ * 8);  // (depth bits, source) per fragment
   if (method_ == FillMethod::LinkedList) listNext_ = gpu::Buffer(capacity_ * 4);
 }
 

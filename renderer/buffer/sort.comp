@@ -11,15 +11,17 @@ layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint list
 layout(std430, binding = BIND_LIST_NEXT) readonly buffer ListNext { uint listNext[]; };
 layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer Frags { uint frags[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer Sorted { uint sorted[]; };
-layout(std430, binding = BIND_ORDER) buffer Order { uint order[]; };
+// Per fragment: (depth bits, source index). Positive floats order like their bit patterns, so
+// the keys compare as integers, and each pixel's keys sit together in memory.
+layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
 uniform uint uPixels;
 
-bool before(uint a, uint b) {
-  float da = uintBitsToFloat(frags[fragWord(a, OFF_DEPTH)]);
-  float db = uintBitsToFloat(frags[fragWord(b, OFF_DEPTH)]);
-  if (da != db) return da < db;
-  return frags[fragWord(a, OFF_PRIM)] < frags[fragWord(b, OFF_PRIM)];
+bool before(uvec2 a, uvec2 b) {
+  if (a.x != b.x) return a.x < b.x;
+  return frags[fragWord(a.y, OFF_PRIM)] < frags[fragWord(b.y, OFF_PRIM)];
 }
+
+uvec2 keyOf(uint src) { return uvec2(frags[fragWord(src, OFF_DEPTH)], src); }
 
 void main() {
   uint pixel = linearInvocation();
@@ -30,15 +32,15 @@ void main() {
 #ifdef TLAB_LINKED_LIST
   uint f = listHead[pixel];
   for (uint i = 0u; i < n; ++i) {
-    order[base + i] = f;
+    order[base + i] = keyOf(f);
     f = listNext[f];
   }
 #else
-  for (uint i = 0u; i < n; ++i) order[base + i] = base + i;
+  for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(base + i);
 #endif
   // Insertion sort of the indices; lists are short except where a surface is seen edge-on.
   for (uint i = 1u; i < n; ++i) {
-    uint key = order[base + i];
+    uvec2 key = order[base + i];
     uint j = i;
     while (j > 0u && before(key, order[base + j - 1u])) {
       order[base + j] = order[base + j - 1u];
@@ -47,7 +49,7 @@ void main() {
     order[base + j] = key;
   }
   for (uint i = 0u; i < n; ++i) {
-    uint src = order[base + i];
+    uint src = order[base + i].y;
     for (uint w = 0u; w < uint(TLAB_STRIDE); ++w) sorted[fragWord(base + i, w)] = frags[fragWord(src, w)];
   }
 }

@@ -79,7 +79,8 @@ float layerSilhouette(ivec2 xy, uint layer) {
       uint qp = uint(q.y * uWidth + q.x);
       if (pixelCount[qp] <= layer) continue;
       uint g = pixelHead[qp] + layer;
-      depth[k] = depthOf(g);
+      bool context = isContext(sorted[fragWord(g, TLAB_OFF_IDS)] & 0xFFFFu);
+      depth[k] = context ? -depthOf(g) : depthOf(g);
       normal[k] = normalOf(g);
     }
   return sobelStrength(depth, normal);

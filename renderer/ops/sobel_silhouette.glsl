@@ -1,7 +1,9 @@
 // Silhouette strength by a Sobel filter on one layer's depth and normal images (IRIS Sec. 5.1,
 // after Saito and Takahashi): the caller gathers the 3x3 neighbourhood of the same layer, row by
 // row from the bottom (index 4 is the centre). A neighbour without a fragment of this layer
-// counts as twice as far with a zero normal, so every layer's outline is an edge.
+// counts as twice as far with a zero normal, so every layer's outline is an edge. As in IRIS, a
+// mask keeps silhouettes off context geometry: no silhouette where any of the nine samples is
+// context (depth < 0 marks a context sample).
 uniform int uSilhouettes;
 uniform vec3 uSilhouetteColor;
 uniform float uSilhouetteThreshold;
@@ -10,8 +12,10 @@ uniform float uSilhouetteSoftness;
 const float kSobelX[9] = float[9](-1.0, 0.0, 1.0, -2.0, 0.0, 2.0, -1.0, 0.0, 1.0);
 const float kSobelY[9] = float[9](-1.0, -2.0, -1.0, 0.0, 0.0, 0.0, 1.0, 2.0, 1.0);
 
-// depth: eye-space depth (<= 0: no fragment); normal: unit view-space normal.
+// depth: eye-space depth (0: no fragment, negative: context); normal: unit view-space normal.
 float sobelStrength(float depth[9], vec3 normal[9]) {
+  for (int k = 0; k < 9; ++k)
+    if (depth[k] < 0.0) return 0.0;
   float zc = depth[4];
   vec2 gz = vec2(0.0);
   vec3 gnx = vec3(0.0), gny = vec3(0.0);

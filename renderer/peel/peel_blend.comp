@@ -15,7 +15,7 @@ void main() {
   if (pixel >= uint(uWidth * uHeight)) return;
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
   vec4 nd = texelFetch(uLayerNormalDepth, xy, 0);
-  if (nd.w <= 0.0) return;  // no fragment in this layer
+  if (nd.w == 0.0) return;  // no fragment in this layer
   vec4 ca = texelFetch(uLayerColor, xy, 0);
   if (uSilhouettes != 0) {
     float depth[9];

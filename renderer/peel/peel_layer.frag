@@ -13,7 +13,8 @@ in vec2 vST;
 flat in uint vObject;
 flat in uint vComponent;
 layout(location = 0) out vec4 outColor;         // (c, α) of this layer
-layout(location = 1) out vec4 outNormalDepth;   // (view normal, eye depth); w = 0: no fragment
+layout(location = 1) out vec4 outNormalDepth;   // (view normal, eye depth); w = 0: no fragment,
+                                                // w < 0: context geometry (the silhouette mask)
 uniform sampler2D uPreviousDepth;
 uniform int uLayer;
 
@@ -34,5 +35,5 @@ void main() {
   s.nzGradient = nzGradient;
   s.stGradient = stGradient;
   outColor = illustrate(s);
-  outNormalDepth = vec4(n, -vViewPosition.z);
+  outNormalDepth = vec4(n, isContext(vObject) ? vViewPosition.z : -vViewPosition.z);
 }

@@ -29,8 +29,8 @@ std::vector<ParamSpec> IllustrativeSettings::params() {
       ParamSpec::number("silhouette_r", 0, 0, 1, "silhouette colour, red"),
       ParamSpec::number("silhouette_g", 0, 0, 1, "silhouette colour, green"),
       ParamSpec::number("silhouette_b", 0, 0, 1, "silhouette colour, blue"),
-      ParamSpec::number("silhouette_threshold", 0.3, 0, 100, "Sobel strength where the fade to the silhouette colour starts"),
-      ParamSpec::number("silhouette_softness", 0.5, 1e-6, 100, "Sobel strength range of the fade"),
+      ParamSpec::number("silhouette_threshold", 1.0, 0, 100, "Sobel strength where the fade to the silhouette colour starts"),
+      ParamSpec::number("silhouette_softness", 1.0, 1e-6, 100, "Sobel strength range of the fade"),
   };
 }
 
@@ -67,8 +67,8 @@ IllustrativeSettings IllustrativeSettings::from(const StyleParams& p, Opacity op
   s.silhouetteThreshold = num("silhouette_threshold");
   s.silhouetteSoftness = num("silhouette_softness");
   if (s.alphaMin > s.alphaMax)
-    throw std::invalid_argument("alpha_min (" + std::to_string(s.alphaMin) + ") must not exceed alpha_max (" +
-                                std::to_string(s.alphaMax) + ")");
+    throw std::invalid_argument("alpha_min (" + p.values().at("alpha_min") + ") must not exceed alpha_max (" +
+                                p.values().at("alpha_max") + ")");
   return s;
 }
 

@@ -45,7 +45,7 @@ struct IllustrativeSettings {
 
   bool silhouettes = false;
   glm::vec3 silhouetteColor{0.0f};
-  float silhouetteThreshold = 0.3f, silhouetteSoftness = 0.5f;
+  float silhouetteThreshold = 1.0f, silhouetteSoftness = 1.0f;
 
   // Parameters shared by the IRIS styles (everything but the opacity mode and its α values).
   static std::vector<ParamSpec> params();

@@ -2,6 +2,8 @@
 // illustration-buffer compositor and the depth-peeling layer shader: each caller fills a
 // SurfaceSample (with its own screen-space derivatives: neighbour links or dFdx/dFdy) and gets the
 // fragment's (c, α). Needs buffer/surface_shading.glsl (the object table) included first.
+// Objects with Role::Opaque are IRIS's context geometry (Sec. 5): shaded alike, always opaque,
+// without view-dependent opacity, stripes or window, and masked out of the silhouettes.
 const float kPi = 3.14159265358979;
 
 struct SurfaceSample {
@@ -36,6 +38,8 @@ uniform float uStripeWidth;
 uniform float uStripeStrength;
 uniform float uStripeDarken;
 uniform int uStripeAdditive;
+
+bool isContext(uint object) { return (objects[object].info.x & 2u) != 0u; }  // Role::Opaque
 
 // α_view mapped to [α_min, α_max] (IRIS Sec. 3.2: α = (1 − α_view)·α_min + α_view·α_max).
 float viewOpacity(SurfaceSample s) {
@@ -122,6 +126,7 @@ Shaded shadeIllustrative(SurfaceSample s) {
 // α_view + α_tex + α_spec (additive); c = c_diffuse·c_tex + c_spec; then the window factor.
 vec4 illustrate(SurfaceSample s) {
   Shaded shaded = shadeIllustrative(s);
+  if (isContext(s.object)) return vec4(clamp(shaded.diffuse + shaded.specular, 0.0, 1.0), 1.0);
   float alphaView = viewOpacity(s);
   float alpha = alphaView;
   vec3 ctex = vec3(1.0);

@@ -7,6 +7,7 @@
 #include "renderer/styles/opaque_style.hpp"
 #include "renderer/styles/smart_style.hpp"
 #include "renderer/styles/unsorted_style.hpp"
+#include "renderer/styles/view_dependent_style.hpp"
 
 namespace tlab::render {
 
@@ -34,6 +35,7 @@ const std::vector<std::unique_ptr<Style>>& registry() {
     s.push_back(std::make_unique<IrisStyle>("angle", IllustrativeSettings::Opacity::Angle, false));
     s.push_back(std::make_unique<IrisStyle>("normal-variation", IllustrativeSettings::Opacity::NormalVariation, false));
     s.push_back(std::make_unique<IrisStyle>("iris", IllustrativeSettings::Opacity::Constant, true));
+    s.push_back(std::make_unique<ViewDependentStyle>());
     return s;
   }();
   return styles;

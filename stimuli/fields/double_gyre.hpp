@@ -22,8 +22,14 @@ class DoubleGyre final : public VectorField {
   bool steady() const override { return false; }
   FieldDomain domain() const override { return {glm::dvec3(0.0, 0.0, -100.0), glm::dvec3(2.0, 1.0, 100.0)}; }
   glm::dvec3 velocity(const glm::dvec3& x, double t) const override;
+  glm::dmat3 jacobian(const glm::dvec3& x, double t) const override;
+  glm::dvec3 timeDerivative(const glm::dvec3& x, double t) const override;
 
  private:
+  struct Forcing {
+    double f, fx, fxx, ft, fxt;  // f(x, t) and its partial derivatives
+  };
+  Forcing forcing(double x, double t) const;
   DoubleGyreParams p_;
 };
 

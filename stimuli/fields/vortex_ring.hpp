@@ -15,6 +15,7 @@ struct VortexRingParams {
   double circulation = 4.0;    // Γ
   double travelSpeed = 0.0;    // U
   double swirl = 0.6;          // S: velocity along the core at its centre
+  double extent = 4.0;         // the domain is [−extent, extent]³
 };
 
 class VortexRing final : public VectorField {
@@ -22,7 +23,7 @@ class VortexRing final : public VectorField {
   explicit VortexRing(VortexRingParams p = {}) : p_(p) {}
   std::string name() const override { return "vortex-ring"; }
   bool steady() const override { return true; }
-  FieldDomain domain() const override { return {glm::dvec3(-4.0), glm::dvec3(4.0)}; }
+  FieldDomain domain() const override { return {glm::dvec3(-p_.extent), glm::dvec3(p_.extent)}; }
   glm::dvec3 velocity(const glm::dvec3& x, double t) const override;
 
  private:

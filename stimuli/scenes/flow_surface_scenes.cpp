@@ -34,11 +34,24 @@ AdvancingFrontSettings frontSettings(double maxSpacing, double timeStep, double 
   return f;
 }
 
+// The bounding sphere of the vertices that triangles use (particles that left the domain or
+// tore off keep their last vertices, which must not pull the view away).
+render::BoundingSphere surfaceBounds(const render::TriangleMesh& mesh) {
+  glm::vec3 lo(1e30f), hi(-1e30f);
+  for (const auto& t : mesh.triangles)
+    for (const auto v : t) lo = glm::min(lo, mesh.positions[v]), hi = glm::max(hi, mesh.positions[v]);
+  const glm::vec3 center = 0.5f * (lo + hi);
+  float radius = 0.0f;
+  for (const auto& t : mesh.triangles)
+    for (const auto v : t) radius = std::max(radius, glm::distance(center, mesh.positions[v]));
+  return {center, radius};
+}
+
 render::Scene surfaceScene(const std::string& name, const IntegralSurface& surface, glm::vec3 viewDirection) {
   render::Scene scene;
   scene.name = name;
   scene.objects.push_back(integralSurfaceObject(name, surface));
-  scene.camera = render::fitCamera(scene.boundingSphere(), 1.0f, 40.0f, glm::normalize(viewDirection));
+  scene.camera = render::fitCamera(surfaceBounds(surface.mesh), 1.0f, 40.0f, glm::normalize(viewDirection));
   scene.camera = render::fitClipPlanes(*scene.camera, scene.boundingSphere());
   return scene;
 }
@@ -73,9 +86,9 @@ render::Scene bubbleScene(const FlowSurfaceParams& p) {
 
 render::Scene toroidScene(const FlowSurfaceParams& p) {
   render::SeededRandom random(p.seed);
-  const VortexRing field({1.0, 0.35, 4.0, 0.0, 2.0});
+  const VortexRing field({1.0, 0.35, 4.0, 0.0, 2.0, 1.6});  // particles streaming away leave the domain
   const SeedCurve seed = SeedCurve::line(jitter(random, {0.7, 0.0, -0.03}, 0.02), jitter(random, {1.3, 0.0, 0.03}, 0.02));
-  const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.03, 0.02, 4.5, p));
+  const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.06, 0.025, 4.5, p));
   return surfaceScene("toroid", surface, {0.4f, 0.5f, 1.0f});
 }
 

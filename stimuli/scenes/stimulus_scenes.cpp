@@ -2,7 +2,6 @@
 
 #include "stimuli/scenes/abstract_world.hpp"
 #include "stimuli/scenes/flow_surface_scenes.hpp"
-#include "stimuli/scenes/technical_scenes.hpp"
 #include "stimuli/scenes/walkthrough_scene.hpp"
 
 namespace tlab::stimuli {
@@ -45,16 +44,10 @@ const std::vector<render::BuiltinSceneSpec>& stimulusScenes() {
        [](const Params& p) { return bubbleScene(toFlowSurfaceParams(p)); }},
       {"toroid", "stream surface rolling up around a vortex ring's core (Carnecky's toroid)", flowSurfaceParams(),
        [](const Params& p) { return toroidScene(toFlowSurfaceParams(p)); }},
-      {"mug-box", "a mug with an explicit inner wall and an opaque box inside (Diepstraten)", {},
-       [](const Params&) { return mugBoxScene(); }},
-      {"mugs", "several mugs with inner walls (Diepstraten)", {seedParam(), {"n", 5, 1, 12, true, "number of mugs"}},
-       [](const Params& p) { return mugsScene(asSeed(p), int(p.at("n"))); }},
-      {"crank-cylinder", "an opaque crank shaft inside a transparent cylinder housing (Diepstraten)", {},
-       [](const Params&) { return crankCylinderScene(); }},
       {"abstract", "Elmqvist's ABSTRACT world: 200 spheres/cones/boxes/tori in a 100^3 cube, 10-20 % red targets", {seedParam()},
        buildAbstract},
       {"walkthrough", "Elmqvist's WALKTHROUGH: 16x16 rooms with doorways, 50 objects, one unique trophy, counted chairs",
-       {seedParam(), {"objects", 50, 20, 200, true, "number of objects"}}, buildWalkthrough},
+       {seedParam(), {"objects", 50, 30, 200, true, "number of objects (at least 30: every kind twice, the counted kind up to 10 times)"}}, buildWalkthrough},
   };
   return specs;
 }

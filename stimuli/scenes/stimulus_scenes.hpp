@@ -1,6 +1,7 @@
 #pragma once
 // The stimuli library's built-in scenes, for `builtin:NAME` next to the renderer's own:
-// pretzel, bubble, toroid, mug-box, mugs, crank-cylinder, abstract, walkthrough; and
+// pretzel, bubble, toroid, abstract, walkthrough (Diepstraten's mug-box, mugs and crank-cylinder
+// are the renderer's technicalScenes()); and
 // abstract-pattern, whose letter bitmaps are owned by the tasks library: the application passes
 // them in (abstractPatternSpec), so stimuli never depends on tasks.
 #include <functional>

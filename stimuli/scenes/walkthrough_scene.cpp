@@ -1,6 +1,7 @@
 #include "stimuli/scenes/walkthrough_scene.hpp"
 
 #include <numeric>
+#include <regex>
 #include <stdexcept>
 
 #include "renderer/pipeline/renderer.hpp"
@@ -101,6 +102,18 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
   const render::BoundingSphere sphere = scene.boundingSphere();
   scene.camera = render::fitClipPlanes(render::fitCamera(sphere, 1.0f, 40.0f, glm::normalize(glm::vec3(0.3f, 1.6f, 1.0f))), sphere);
   return scene;
+}
+
+std::optional<render::Image> walkthroughFloorPlanForSource(const std::string& source) {
+  static const std::regex pattern(R"(^builtin:walkthrough(\?.*)?$)");
+  std::smatch m;
+  if (!std::regex_match(source, m, pattern)) return std::nullopt;
+  WalkthroughParams params;
+  static const std::regex seed(R"([?&]seed=(\d+))");
+  std::smatch s;
+  const std::string query = m[1].str();
+  if (std::regex_search(query, s, seed)) params.seed = std::stoull(s[1].str());
+  return floorPlanImage(walkthroughFloorPlan(params));
 }
 
 }  // namespace tlab::stimuli

@@ -4,6 +4,7 @@
 // trophy (Role::Target, the T3 target), a counted kind (T4, "chair" by default) appearing
 // 6–10 times, and the other kinds at least twice each. Names are "<kind>-<n>".
 #include <cstdint>
+#include <optional>
 #include <string>
 
 #include "renderer/scene/scene.hpp"
@@ -23,5 +24,8 @@ struct WalkthroughParams {
 // The floor plan the scene of `params` is built on (the same seed gives the same plan).
 WalkthroughFloorPlan walkthroughFloorPlan(const WalkthroughParams& params);
 render::Scene walkthroughScene(const WalkthroughParams& params);
+
+// For `builtin:walkthrough[?seed=S...]`: the floor-plan image of that scene; nothing otherwise.
+std::optional<render::Image> walkthroughFloorPlanForSource(const std::string& source);
 
 }  // namespace tlab::stimuli

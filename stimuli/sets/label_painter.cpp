@@ -6,9 +6,13 @@
 #include <iterator>
 #include <stdexcept>
 
+// stb_truetype's implementation lives in this file only (static: no clash with other users).
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-function"
 #define STB_TRUETYPE_IMPLEMENTATION
 #define STBTT_STATIC
 #include <stb_truetype.h>
+#pragma GCC diagnostic pop
 
 namespace tlab::stimuli {
 

@@ -16,12 +16,12 @@ glm::dvec2 projectToPixel(const render::Camera& camera, int width, int height, c
 }
 
 std::string probeLabel(std::size_t index) {
-  std::string label;
+  std::string reversed;  // bijective base 26: A..Z, AA..AZ, ...
   do {
-    label.insert(label.begin(), char('A' + index % 26));
+    reversed.push_back(char('A' + index % 26));
     index = index / 26;
   } while (index-- > 0);
-  return label;
+  return std::string(reversed.rbegin(), reversed.rend());
 }
 
 std::vector<ProbeQuestion> SurfacePointProbes::probe(const ProbeView& view, const ProbeSetSpec& spec) const {

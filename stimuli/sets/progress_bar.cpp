@@ -6,8 +6,8 @@
 
 namespace tlab::stimuli {
 
-ProgressBar::ProgressBar(std::string title, std::size_t total)
-    : title_(std::move(title)), total_(total), visible_(::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {
+ProgressBar::ProgressBar(std::string title, std::size_t total, bool enabled)
+    : title_(std::move(title)), total_(total), visible_(enabled && ::isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {
   if (visible_) draw();
 }
 

@@ -10,7 +10,8 @@ namespace tlab::stimuli {
 
 class ProgressBar {
  public:
-  ProgressBar(std::string title, std::size_t total);
+  // `enabled` = false never draws (e.g. --quiet).
+  ProgressBar(std::string title, std::size_t total, bool enabled = true);
   ~ProgressBar();
   void advance(std::size_t done = 1);
   bool visible() const { return visible_; }

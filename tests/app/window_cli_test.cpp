@@ -27,18 +27,22 @@ TEST(WindowCli, ShowsTheImageInAGlfwWindowUnderXvfb) {
   if (!haveTool("Xvfb") || !haveTool("xdotool"))
     GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
   const auto dir = freshDir("window_xvfb");
-  const std::string display = ":" + std::to_string(90 + ::getpid() % 100);
   const auto windowPng = (dir / "window.png").string(), headlessPng = (dir / "headless.png").string();
+  const auto displayFile = (dir / "display").string(), errFile = (dir / "err.txt").string();
   const std::string args = " render builtin:open-cylinders --size 160x120 --style constant -o ";
-  // Xvfb in the background; tlab in the background on it; wait for the window; press Escape.
+  // Xvfb picks a free display itself (-displayfd); tlab runs on it in the background; we wait for
+  // its window, press Escape, and a watchdog ends tlab if the window never shows up.
   const std::string script =
-      "Xvfb " + display + " -screen 0 640x480x24 >/dev/null 2>&1 & XPID=$!; sleep 1; "
-      "DISPLAY=" + display + " " + kTlab + args + windowPng + " --window >/dev/null 2>" + (dir / "err.txt").string() + " & TPID=$!; "
-      "WID=$(DISPLAY=" + display + " timeout 20 xdotool search --sync --name tlab.render | head -1); "
-      "DISPLAY=" + display + " xdotool key --window \"$WID\" Escape 2>/dev/null; "
-      "wait $TPID; RC=$?; kill $XPID; echo \"window=$WID rc=$RC\"";
+      "Xvfb -displayfd 3 -screen 0 640x480x24 3>" + displayFile + " >/dev/null 2>&1 & XPID=$!; "
+      "for i in $(seq 100); do [ -s " + displayFile + " ] && break; sleep 0.1; done; "
+      "export DISPLAY=:$(cat " + displayFile + "); "
+      + kTlab + args + windowPng + " --window >/dev/null 2>" + errFile + " & TPID=$!; "
+      "(sleep 60; kill $TPID) >/dev/null 2>&1 & WATCHDOG=$!; "
+      "WID=$(timeout 30 xdotool search --sync --name tlab.render | head -1); "
+      "xdotool key --window \"$WID\" Escape 2>/dev/null; "
+      "wait $TPID; RC=$?; kill $WATCHDOG $XPID 2>/dev/null; echo \"window=$WID rc=$RC\"";
   const auto r = runCommand("bash -c " + quoted(script));
-  EXPECT_NE(r.out.find("rc=0"), std::string::npos) << r.out << readText((dir / "err.txt").string());
+  EXPECT_NE(r.out.find("rc=0"), std::string::npos) << r.out << readText(errFile);
   EXPECT_EQ(r.out.find("window= "), std::string::npos) << "no window appeared: " << r.out;
   ASSERT_EQ(runCommand(kTlab + args + headlessPng).exitCode, 0);
   EXPECT_TRUE(readText(windowPng) == readText(headlessPng)) << "the window's image differs from the headless one";

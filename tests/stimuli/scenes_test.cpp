@@ -1,5 +1,5 @@
 // The seeds' procedural scenes: Elmqvist's ABSTRACT world and its T2 letter pattern, the
-// WALKTHROUGH floor plan and objects, Diepstraten's technical scenes, and the catalog.
+// WALKTHROUGH floor plan and objects, and the catalog.
 #include <gtest/gtest.h>
 
 #include <map>
@@ -8,7 +8,6 @@
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/abstract_world.hpp"
 #include "stimuli/scenes/stimulus_scenes.hpp"
-#include "stimuli/scenes/technical_scenes.hpp"
 #include "stimuli/scenes/walkthrough_objects.hpp"
 #include "stimuli/scenes/walkthrough_scene.hpp"
 #include "tasks/letter_patterns.hpp"
@@ -156,25 +155,9 @@ TEST(WalkthroughScene, FloorPlanForASourceMatchesTheScenesSeed) {
   EXPECT_EQ(a->pixels, floorPlanImage(walkthroughFloorPlan(p)).pixels);
 }
 
-TEST(TechnicalScenes, MugHasAnInnerWallAndTheBoxIsOpaqueInside) {
-  const render::Scene scene = mugBoxScene();
-  ASSERT_EQ(scene.objects.size(), 2u);
-  const auto& mug = scene.objects[0].mesh;
-  bool outer = false, inner = false;
-  for (const auto& p : mug.positions) {
-    const float r = std::hypot(p.x, p.z);
-    outer |= std::abs(r - 1.0f) < 1e-4f && p.y > 1.0f;
-    inner |= std::abs(r - 0.88f) < 1e-4f && p.y > 1.0f;
-  }
-  EXPECT_TRUE(outer);
-  EXPECT_TRUE(inner);
-  EXPECT_TRUE(render::hasRole(scene.objects[1].roles, render::Role::Opaque));
-  for (const auto& p : scene.objects[1].mesh.positions) EXPECT_LT(std::hypot(p.x, p.z), 0.88f);
-}
-
 TEST(StimulusScenes, EverySceneBuildsFromTheCatalogWithTriangles) {
   const auto specs = allSceneSpecs({abstractPatternSpec(tasks::patternLetters(), tasks::letterCells)});
-  for (const char* name : {"pretzel", "bubble", "toroid", "mug-box", "mugs", "crank-cylinder", "abstract", "abstract-pattern", "walkthrough"}) {
+  for (const char* name : {"pretzel", "bubble", "toroid", "abstract", "abstract-pattern", "walkthrough"}) {
     const render::Scene scene = render::loadScene(std::string("builtin:") + name, specs);
     EXPECT_GT(scene.triangleCount(), 100u) << name;
     EXPECT_TRUE(scene.camera.has_value()) << name;

@@ -47,8 +47,9 @@ class StimulusSetCli : public ::testing::Test {
 TEST_F(StimulusSetCli, WritesLabelledImagesManifestFloorPlanAndBooklet) {
   ASSERT_EQ(first_.exitCode, 0) << first_.err;
   const auto manifest = nlohmann::json::parse(readText((root_ / "a" / "manifest.json").string()));
-  // mug-box: 2 views × 2 styles × 1 question; walkthrough: 1 view × 2 styles unlabelled.
-  ASSERT_EQ(manifest["stimuli"].size(), 6u);
+  // open cylinders: 2 views × 2 styles × 1 question; walkthrough: 1 view × 2 styles unlabelled;
+  // nested spheres: 1 view × 2 styles × 1 layer-index question.
+  ASSERT_EQ(manifest["stimuli"].size(), 8u);
   for (const auto& s : manifest["stimuli"]) {
     const std::string bytes = readText((root_ / "a" / s["image"].get<std::string>()).string());
     ASSERT_FALSE(bytes.empty());
@@ -69,6 +70,12 @@ TEST_F(StimulusSetCli, WritesLabelledImagesManifestFloorPlanAndBooklet) {
   EXPECT_TRUE(labelled["question"]["ground_truth"].is_null());  // "points" has no ground truth
   EXPECT_EQ(manifest["scenes"][1]["floor_plan"], "floor-plans/s02-walkthrough.png");
   EXPECT_TRUE(fs::exists(root_ / "a" / "floor-plans" / "s02-walkthrough.png"));
+  // A task's question carries its exact ground truth (the hook to the tasks library).
+  const auto& task = manifest["stimuli"][6];
+  EXPECT_EQ(task["scene"], 3);
+  EXPECT_EQ(task["question"]["ground_truth"]["task"], "layer-index");
+  EXPECT_TRUE(task["question"]["ground_truth"].contains("truth"));
+  EXPECT_FALSE(task["question"]["probes"].empty());
   const std::string pdf = readText((root_ / "a" / "booklet.pdf").string());
   EXPECT_EQ(pdf.substr(0, 5), "%PDF-");
 }
@@ -77,7 +84,7 @@ TEST_F(StimulusSetCli, SameInputsGiveTheSameBytesForAnyNumberOfJobs) {
   ASSERT_EQ(second_.exitCode, 0) << second_.err;
   ASSERT_EQ(parallel_.exitCode, 0) << parallel_.err;
   const auto a = folderBytes(root_ / "a");
-  EXPECT_EQ(a.size(), 9u);  // 6 images, manifest, floor plan, booklet
+  EXPECT_EQ(a.size(), 11u);  // 8 images, manifest, floor plan, booklet
   EXPECT_TRUE(a == folderBytes(root_ / "b"));
   EXPECT_TRUE(a == folderBytes(root_ / "c"));
 }

@@ -23,14 +23,14 @@ TEST(StimulusSetFile, ReadsStylesScenesViewsAndProbeSets) {
   ASSERT_EQ(spec.styles.size(), 2u);
   EXPECT_EQ(spec.styles[1].name, "constant");
   EXPECT_EQ(spec.styles[1].settings.at("alpha"), "0.4");
-  ASSERT_EQ(spec.scenes.size(), 2u);
+  ASSERT_EQ(spec.scenes.size(), 3u);
   EXPECT_EQ(spec.scenes[0].views.size(), 2u);
   EXPECT_DOUBLE_EQ(spec.scenes[0].views[1].azimuthDegrees, 40.0);
   ASSERT_EQ(spec.scenes[0].probeSets.size(), 1u);
   EXPECT_EQ(spec.scenes[0].probeSets[0].spec.task, "points");
   EXPECT_EQ(spec.scenes[0].probeSets[0].spec.count, 2);
   EXPECT_EQ(spec.scenes[1].views.size(), 1u);  // the default view
-  EXPECT_EQ(spec.scenes[1].place.line, 15);
+  EXPECT_EQ(spec.scenes[1].place.line, 16);
 }
 
 TEST(StimulusSetFile, AnUnknownStyleNamesItsLine) {

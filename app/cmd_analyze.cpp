@@ -1,0 +1,109 @@
+// tlab analyze study.db [--json]: runs the analysis plan of the experiment stored in the database
+// ([[analysis]] in its file) — ANOVA, t-tests and rank tests through analysis/, plus pairwise
+// paired t-tests for within factors with more than two levels — and prints the results.
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "analysis/number_format.hpp"
+#include "analysis/result_json.hpp"
+#include "analysis/text_table.hpp"
+#include "app/commands.hpp"
+#include "study/study_analysis.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct AnalyzeOptions {
+  std::string db;
+  bool json = false;
+  std::string experiment;
+};
+
+nlohmann::json toJson(const study::StudyAnalysis& a) {
+  nlohmann::json j = {{"title", a.spec.title}, {"tasks", a.spec.tasks}, {"within", a.spec.within}, {"between", a.spec.between},
+                      {"alpha", a.spec.alpha}, {"subjects", a.report.design.subjects}, {"rows", a.report.design.rows}};
+  j["dependent_variables"] = nlohmann::json::array();
+  for (const auto& dv : a.report.dependentVariables) {
+    nlohmann::json d = {{"dv", dv.dv}};
+    if (dv.anova) d["anova"] = analysis::toJson(*dv.anova);
+    if (!dv.anovaError.empty()) d["anova_error"] = dv.anovaError;
+    d["comparisons"] = nlohmann::json::array();
+    for (const auto& c : dv.comparisons) {
+      nlohmann::json cj = {{"factor", c.factor}, {"description", c.description}};
+      if (c.tTest) cj["t_test"] = analysis::toJson(*c.tTest);
+      if (c.wilcoxon) cj["wilcoxon"] = analysis::toJson(*c.wilcoxon);
+      if (c.mannWhitney) cj["mann_whitney"] = analysis::toJson(*c.mannWhitney);
+      if (c.friedman) cj["friedman"] = analysis::toJson(*c.friedman);
+      if (!c.error.empty()) cj["error"] = c.error;
+      d["comparisons"].push_back(cj);
+    }
+    j["dependent_variables"].push_back(d);
+  }
+  j["pairwise"] = nlohmann::json::array();
+  for (const auto& p : a.pairwise)
+    j["pairwise"].push_back({{"dv", p.dv}, {"factor", p.factor}, {"first", p.first}, {"second", p.second}, {"t_test", analysis::toJson(p.test)}});
+  j["errors"] = a.errors;
+  return j;
+}
+
+void printText(const study::StudyAnalysis& a) {
+  std::printf("== %s (%zu subjects, %zu rows)\n", a.spec.title.c_str(), a.report.design.subjects, a.report.design.rows);
+  analysis::TextTable table;
+  table.header = {"dv", "test", "statistic", "p"};
+  for (const auto& dv : a.report.dependentVariables) {
+    if (dv.anova)
+      for (const auto& e : dv.anova->effects)
+        table.rows.push_back({dv.dv, "ANOVA " + e.name,
+                              "F(" + analysis::formatNumber(e.df1) + ", " + analysis::formatNumber(e.df2) + ") = " + analysis::formatNumber(e.F),
+                              analysis::formatP(e.p)});
+    if (!dv.anovaError.empty()) table.rows.push_back({dv.dv, "ANOVA", dv.anovaError, ""});
+    for (const auto& c : dv.comparisons) {
+      if (c.tTest)
+        table.rows.push_back({dv.dv, c.description, "t(" + analysis::formatNumber(c.tTest->df) + ") = " + analysis::formatNumber(c.tTest->t),
+                              analysis::formatP(c.tTest->p)});
+      if (c.wilcoxon) table.rows.push_back({dv.dv, c.factor + " Wilcoxon", "V = " + analysis::formatNumber(c.wilcoxon->V), analysis::formatP(c.wilcoxon->p)});
+      if (c.friedman)
+        table.rows.push_back({dv.dv, c.factor + " Friedman", "chi2 = " + analysis::formatNumber(c.friedman->chiSquared), analysis::formatP(c.friedman->p)});
+      if (c.mannWhitney) table.rows.push_back({dv.dv, c.factor + " Mann-Whitney", "W = " + analysis::formatNumber(c.mannWhitney->W), analysis::formatP(c.mannWhitney->p)});
+      if (!c.error.empty()) table.rows.push_back({dv.dv, c.factor, c.error, ""});
+    }
+  }
+  for (const auto& p : a.pairwise)
+    table.rows.push_back({p.dv, p.factor + ": " + p.first + " vs " + p.second + " (paired)",
+                          "t(" + analysis::formatNumber(p.test.df) + ") = " + analysis::formatNumber(p.test.t), analysis::formatP(p.test.p)});
+  std::fputs(analysis::renderPlainText(table).c_str(), stdout);
+  for (const auto& e : a.errors) std::printf("note: %s\n", e.c_str());
+}
+
+void run(const AnalyzeOptions& o) {
+  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
+  study::SessionStore store(o.db, false);
+  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment);
+  if (stored.experiment.analyses.empty()) throw std::runtime_error(stored.experiment.path + ": the experiment plans no [[analysis]]");
+  const auto analyses = study::analyzeStudy(store, stored);
+  if (o.json) {
+    nlohmann::json j = {{"experiment", stored.experiment.id}, {"database", o.db}, {"analyses", nlohmann::json::array()}};
+    for (const auto& a : analyses) j["analyses"].push_back(toJson(a));
+    std::cout << j.dump(2) << "\n";
+    return;
+  }
+  for (const auto& a : analyses) printText(a);
+}
+
+}  // namespace
+
+void addAnalyzeCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("analyze", "Run the experiment's analysis plan on a study database");
+  auto o = std::make_shared<AnalyzeOptions>();
+  cmd->add_option("db", o->db, "study database")->required();
+  cmd->add_flag("--json", o->json, "print JSON");
+  cmd->add_option("--experiment", o->experiment, "experiment id (when the database holds several)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace tlab::app

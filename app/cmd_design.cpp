@@ -1,0 +1,95 @@
+// tlab design EXPERIMENT.toml [--db study.db]: the experiment's design — counterbalancing, the
+// participant slot → block order table, trials per participant — and, with --db, who holds which
+// slot (dropped-out slots are re-assigned to the next newcomer).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "analysis/text_table.hpp"
+#include "app/commands.hpp"
+#include "study/counterbalancing.hpp"
+#include "study/experiment_file.hpp"
+#include "study/session_plan.hpp"
+#include "study/session_store.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct DesignOptions {
+  std::string experiment;
+  std::string db;
+  int participants = 0;
+};
+
+std::string blockTasks(const study::SessionPlan& plan, int block) {
+  std::string text;
+  std::string last;
+  for (const auto& t : plan.trials) {
+    if (t.block != block || t.phase != study::Phase::Test || t.taskId == last) continue;
+    last = t.taskId;
+    text += (text.empty() ? "" : "+") + t.taskId;
+  }
+  return text;
+}
+
+void run(const DesignOptions& o) {
+  const study::Experiment e = study::readExperimentFile(o.experiment);
+  const study::Design design = study::makeDesign(e);
+  const int participants = o.participants > 0 ? o.participants : e.participants;
+  std::printf("experiment %s: %s\n", e.id.c_str(), e.title.c_str());
+  std::printf("counterbalancing %s: %zu order rows x %zu between cells, %zu blocks per participant\n",
+              study::counterbalancingName(e.counterbalancing), design.rowCount(), design.betweenCellCount(), design.blocksPerRow());
+  const std::size_t multiple = design.balancedMultiple();
+  std::printf("participants %d: %s (balanced for multiples of %zu)\n", participants,
+              participants % int(multiple) == 0 ? "balanced" : "NOT balanced", multiple);
+
+  analysis::TextTable table;
+  table.caption = "Assignment of participant slots";
+  table.header = {"slot", "row", "cell"};
+  for (std::size_t b = 1; b <= design.blocksPerRow(); ++b) table.header.push_back("block " + std::to_string(b));
+  table.header.push_back("records");
+  for (int slot = 0; slot < participants; ++slot) {
+    const study::SessionPlan plan = study::makeSessionPlan(e, design, slot);
+    std::vector<std::string> row = {std::to_string(slot), std::to_string(plan.design.row), std::to_string(plan.design.betweenCell)};
+    int tests = 0;
+    for (const auto& t : plan.trials) tests += t.phase == study::Phase::Test ? 1 : 0;
+    for (std::size_t b = 0; b < plan.design.blocks.size(); ++b)
+      row.push_back(design.describe(plan.design.blocks[b]) + " [" + blockTasks(plan, int(b) + 1) + "]");
+    row.push_back(std::to_string(tests) + (plan.trials.size() > std::size_t(tests) ? " +" + std::to_string(plan.trials.size() - tests) + " training" : ""));
+    table.rows.push_back(std::move(row));
+  }
+  std::fputs(analysis::renderPlainText(table).c_str(), stdout);
+  int total = 0;
+  for (int slot = 0; slot < participants; ++slot)
+    for (const auto& t : study::makeSessionPlan(e, design, slot).trials) total += t.phase == study::Phase::Test ? 1 : 0;
+  std::printf("test records in total: %d\n", total);
+
+  if (o.db.empty()) return;
+  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
+  study::SessionStore store(o.db, false);
+  const auto row = store.findExperiment(e.id);
+  if (!row) {
+    std::printf("%s: no participant of experiment '%s' yet\n", o.db.c_str(), e.id.c_str());
+    return;
+  }
+  analysis::TextTable held;
+  held.caption = "Slots in " + o.db;
+  held.header = {"slot", "row", "participant", "status"};
+  for (const auto& a : store.assignments(*row))
+    held.rows.push_back({std::to_string(a.slot), std::to_string(a.row), a.participant, a.status});
+  std::fputs(analysis::renderPlainText(held).c_str(), stdout);
+}
+
+}  // namespace
+
+void addDesignCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("design", "Print an experiment's counterbalanced design and participant assignment table");
+  auto o = std::make_shared<DesignOptions>();
+  cmd->add_option("experiment", o->experiment, "experiment file (TOML)")->required();
+  cmd->add_option("--db", o->db, "also list who holds which slot in this study database");
+  cmd->add_option("--participants", o->participants, "number of slots to list (default: the experiment's participants)");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace tlab::app

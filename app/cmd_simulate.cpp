@@ -1,0 +1,108 @@
+// tlab simulate EXPERIMENT.toml --participants N --db sim.db [--resume] [--replicate R]: the study
+// run by simulated observers through the same runner (no window, headless rendering); progress
+// lines per participant (--trials: per committed response), then trials per second. With
+// --replicate R: a power analysis — the study repeated R times, and for each planned test how
+// often it is significant.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "analysis/text_table.hpp"
+#include "app/commands.hpp"
+#include "app/scene_options.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "study/experiment_file.hpp"
+#include "study/power_analysis.hpp"
+#include "study/study_simulation.hpp"
+
+namespace tlab::app {
+
+namespace {
+
+struct SimulateOptions {
+  std::string experiment;
+  int participants = 0;
+  std::string db;
+  bool resume = false;
+  int replicates = 0;
+  double pace = 0.0;
+  bool trials = false;
+};
+
+void printTrial(const study::TrialProgress& p) {
+  std::printf("ack %s %d/%d %s block %d %s trial %d q%d answer=%s %s rt=%s\n", p.participant.c_str(), p.index, p.total,
+              study::phaseName(p.plan->phase), p.plan->block, p.plan->taskId.c_str(),
+              p.plan->trial, p.plan->question, p.answer ? p.answer->c_str() : "(missing)", p.correct ? "correct" : "wrong",
+              p.rtSeconds ? std::to_string(*p.rtSeconds).c_str() : "-");
+  std::fflush(stdout);
+}
+
+void runPower(const study::Experiment& e, const SimulateOptions& o, study::StimulusLibrary& stimuli, int participants) {
+  study::PowerOptions p;
+  p.replicates = o.replicates;
+  p.participants = participants;
+  p.workDirectory = (std::filesystem::path(o.db).parent_path() / (std::filesystem::path(o.db).stem().string() + "-replicates")).string();
+  std::filesystem::create_directories(p.workDirectory);
+  p.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  p.progress = [&](int r, double seconds) {
+    std::printf("replicate %d/%d: %d participants simulated in %.2f s\n", r, o.replicates, participants, seconds);
+    std::fflush(stdout);
+  };
+  const auto entries = study::powerAnalysis(e, stimuli, p);
+  std::filesystem::remove_all(p.workDirectory);
+  analysis::TextTable table;
+  table.caption = "Simulated power with " + std::to_string(participants) + " participants, " + std::to_string(o.replicates) + " replicates";
+  table.header = {"planned test", "significant", "power", "alpha"};
+  for (const auto& entry : entries) {
+    char power[32], alpha[32];
+    std::snprintf(power, sizeof power, "%.3f", entry.power());
+    std::snprintf(alpha, sizeof alpha, "%g", entry.alpha);
+    table.rows.push_back({entry.test, std::to_string(entry.significant) + "/" + std::to_string(entry.replicates), power, alpha});
+  }
+  std::fputs(analysis::renderPlainText(table).c_str(), stdout);
+  if (entries.empty()) std::printf("the experiment file plans no analysis ([[analysis]]): nothing to count\n");
+}
+
+void run(const SimulateOptions& o) {
+  const study::Experiment e = study::readExperimentFile(o.experiment);
+  if (o.participants < 0) throw std::invalid_argument("--participants: must be >= 1");
+  const int participants = o.participants > 0 ? o.participants : e.participants;
+  if (o.replicates < 0) throw std::invalid_argument("--replicate: must be >= 1");
+  if (o.pace < 0) throw std::invalid_argument("--pace: must be >= 0");
+  const auto context = gpu::createHeadlessContext();
+  study::TextPainter painter;
+  study::StimulusLibrary stimuli(study::stimulusDirectoryFor(o.db), sceneCatalog(), painter);
+  if (o.replicates > 0) return runPower(e, o, stimuli, participants);
+  study::SessionStore store(o.db);
+  study::SimulationOptions s;
+  s.participants = participants;
+  s.resume = o.resume;
+  s.paceSeconds = o.pace;
+  s.observerSeed = e.seed;
+  s.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  s.log = [](const std::string& line) {
+    std::printf("%s\n", line.c_str());
+    std::fflush(stdout);
+  };
+  if (o.trials) s.progress = printTrial;
+  const study::SimulationResult r = study::simulateStudy(e, store, stimuli, s);
+  std::printf("simulated %d participants, %d trials in %.3f s (%.1f trials/s) into %s\n", r.participantsRun, r.trialsAnswered, r.seconds,
+              r.seconds > 0 ? r.trialsAnswered / r.seconds : 0.0, o.db.c_str());
+}
+
+}  // namespace
+
+void addSimulateCommand(CLI::App& app) {
+  auto* cmd = app.add_subcommand("simulate", "Run an experiment with simulated observers (no window); --replicate R: power analysis");
+  auto o = std::make_shared<SimulateOptions>();
+  cmd->add_option("experiment", o->experiment, "experiment file (TOML)")->required();
+  cmd->add_option("--participants", o->participants, "simulated participants (default: the experiment's)");
+  cmd->add_option("--db", o->db, "study database to write")->required();
+  cmd->add_flag("--resume", o->resume, "continue: skip finished simulated participants, resume an interrupted one");
+  cmd->add_option("--replicate", o->replicates, "power analysis: repeat the study R times and count significant planned tests");
+  cmd->add_option("--pace", o->pace, "real seconds slept per simulated second of response time (default 0: as fast as possible)");
+  cmd->add_flag("--trials", o->trials, "print a line for every committed response");
+  cmd->callback([o] { run(*o); });
+}
+
+}  // namespace tlab::app

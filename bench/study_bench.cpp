@@ -1,0 +1,108 @@
+// Study benchmarks: building designs and session plans, and the cost of the crash-safe write path
+// (one SQLite transaction per response, synchronous=FULL, WAL). End-to-end simulated trials per
+// second (rendering, probing, observer, scoring, storing) are measured with
+// `tlab simulate ... --participants N --db sim.db`, which prints trials/s.
+#include <benchmark/benchmark.h>
+
+#include <filesystem>
+
+#include "study/counterbalancing.hpp"
+#include "study/experiment_file.hpp"
+#include "study/graeco_latin_square.hpp"
+#include "study/session_plan.hpp"
+#include "study/session_store.hpp"
+#include "study/williams_design.hpp"
+
+using namespace tlab::study;
+
+namespace {
+
+// The design of examples/elmqvist.toml (2 × 2 within, Latin square, 4 tasks × 3 trials, 16 participants).
+Experiment elmqvistDesign() {
+  return parseExperiment(R"(
+id = "elmqvist-bench"
+participants = 16
+counterbalancing = "latin-square"
+[[factors]]
+name = "transparency"
+levels = [{ name = "inactive", style = "opaque" }, { name = "active", style = "dynamic" }]
+[[factors]]
+name = "scenario"
+levels = [{ name = "abstract", scene = "builtin:abstract?seed={trial}" }, { name = "walkthrough", scene = "builtin:walkthrough?seed=5" }]
+[[tasks]]
+id = "T1"
+task = "counting"
+when = { scenario = "abstract" }
+trials = 3
+[[tasks]]
+id = "T2"
+task = "pattern"
+when = { scenario = "abstract" }
+trials = 3
+[[tasks]]
+id = "T3"
+task = "target-discovery"
+when = { scenario = "walkthrough" }
+trials = 3
+[[tasks]]
+id = "T4"
+task = "counting"
+when = { scenario = "walkthrough" }
+trials = 3
+)", "elmqvist-bench.toml");
+}
+
+}  // namespace
+
+static void BM_WilliamsDesign(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(williamsDesign(int(state.range(0))));
+}
+BENCHMARK(BM_WilliamsDesign)->Arg(4)->Arg(9)->Arg(16);
+
+static void BM_GraecoLatinSquare(benchmark::State& state) {
+  for (auto _ : state) benchmark::DoNotOptimize(graecoLatinSquare(int(state.range(0))));
+}
+BENCHMARK(BM_GraecoLatinSquare)->Arg(3)->Arg(8)->Arg(9);
+
+static void BM_ElmqvistSessionPlans(benchmark::State& state) {
+  const Experiment e = elmqvistDesign();
+  const Design design = makeDesign(e);
+  for (auto _ : state)
+    for (int slot = 0; slot < e.participants; ++slot) benchmark::DoNotOptimize(makeSessionPlan(e, design, slot));
+  state.SetItemsProcessed(state.iterations() * 384);
+}
+BENCHMARK(BM_ElmqvistSessionPlans);
+
+// One committed transaction per response: the write path a participant waits for between trials.
+static void BM_RecordResponse(benchmark::State& state) {
+  const auto path = std::filesystem::temp_directory_path() / ("tlab_bench_store_" + std::to_string(::getpid()) + ".db");
+  std::filesystem::remove(path);
+  const Experiment e = elmqvistDesign();
+  {
+    SessionStore store(path.string());
+    const auto row = store.registerExperiment(e, "bench");
+    const auto p = store.enrol(row, "bench", makeDesign(e));
+    const int n = 200000;
+    std::vector<TrialRecord> trials(static_cast<std::size_t>(n));
+    for (int i = 0; i < n; ++i) {
+      trials[std::size_t(i)].sequence = i + 1;
+      trials[std::size_t(i)].phase = "test";
+    }
+    store.insertTrials(p.id, trials);
+    const auto stored = store.trials(p.id);
+    const auto session = store.startSession(p.id, "bench");
+    std::size_t next = 0;
+    for (auto _ : state) {
+      ResponseRecord r;
+      r.trial = stored[next++ % stored.size()].id;
+      r.session = session;
+      r.rawAnswer = "42";
+      r.answered = true;
+      store.recordResponse(r);
+    }
+    state.SetItemsProcessed(state.iterations());
+  }
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
+}
+BENCHMARK(BM_RecordResponse)->Iterations(2000);
+

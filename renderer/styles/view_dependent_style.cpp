@@ -1,0 +1,81 @@
+#include "renderer/styles/view_dependent_style.hpp"
+
+#include "renderer/compose/view_dependent_compositor.hpp"
+
+namespace tlab::render {
+
+namespace {
+
+struct ViewDependentFrame {
+  ViewDependentSettings settings;
+  std::unique_ptr<ViewDependentAlpha> alpha;
+};
+
+// Silhouette edges (Eq. 1) and per-vertex α (Eq. 2) for this frame's eye.
+class SilhouetteAlphaPass final : public RenderPass {
+ public:
+  explicit SilhouetteAlphaPass(std::shared_ptr<ViewDependentFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "silhouettes"; }
+  void run(FrameContext& frame) override {
+    frame_->alpha = std::make_unique<ViewDependentAlpha>(frame.scene);
+    frame_->alpha->update(frame.camera.eye, frame_->settings.k);
+  }
+
+ private:
+  std::shared_ptr<ViewDependentFrame> frame_;
+};
+
+class ViewDependentComposePass final : public RenderPass {
+ public:
+  explicit ViewDependentComposePass(std::shared_ptr<ViewDependentFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "compose"; }
+  void run(FrameContext& frame) override { composeViewDependent(frame, *frame_->alpha, frame_->settings); }
+
+ private:
+  std::shared_ptr<ViewDependentFrame> frame_;
+};
+
+ViewDependentSettings settingsFrom(const StyleParams& p) {
+  ViewDependentSettings s;
+  s.explicitBoundaries = p.is("boundaries", "explicit");
+  s.k = static_cast<float>(p.number("k"));
+  s.alphaOpaque = static_cast<float>(p.number("alpha_opaque"));
+  s.alphaBackground = static_cast<float>(p.number("alpha_background"));
+  s.lines = p.is("lines", "on");
+  s.shading.shading = p.is("shading", "gooch")       ? IllustrativeSettings::Shading::Gooch
+                      : p.is("lighting", "none")     ? IllustrativeSettings::Shading::Flat
+                                                     : IllustrativeSettings::Shading::Headlight;
+  return s;
+}
+
+}  // namespace
+
+std::vector<ParamSpec> ViewDependentStyle::params() const {
+  return {
+      ParamSpec::choice("boundaries", "explicit", {"explicit", "implicit"},
+                        "interior boundaries modelled explicitly (Sec. 6.2) or given by the opaque objects (Sec. 6.1)"),
+      ParamSpec::number("k", 0.5, 1e-3, 10, "fall-off exponent k of Eq. 2"),
+      ParamSpec::number("alpha_opaque", 0.6, 0, 1, "weight of an opaque object seen through a transparent one"),
+      ParamSpec::number("alpha_background", 0.5, 0, 1, "weight of the background seen through a transparent object"),
+      ParamSpec::choice("lines", "on", {"on", "off"}, "black silhouette lines"),
+      ParamSpec::choice("shading", "gooch", {"gooch", "lighting"}, "Gooch cool/warm tones (Sec. 7) or the common lighting"),
+  };
+}
+
+FragmentProperties ViewDependentStyle::properties(const StyleParams&, const SceneFacts&) const {
+  FragmentProperties p;
+  p |= FragmentProperty::Normal;
+  p |= FragmentProperty::Ids;
+  return p;
+}
+
+std::vector<std::unique_ptr<RenderPass>> ViewDependentStyle::passes(const StyleParams& params) const {
+  auto frame = std::make_shared<ViewDependentFrame>();
+  frame->settings = settingsFrom(params);
+  std::vector<std::unique_ptr<RenderPass>> p;
+  p.push_back(std::make_unique<SilhouetteAlphaPass>(frame));
+  p.push_back(std::make_unique<ViewDependentComposePass>(frame));
+  return p;
+}
+
+}  // namespace tlab::render

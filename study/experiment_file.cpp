@@ -1,0 +1,402 @@
+#include "study/experiment_file.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "study/counterbalancing.hpp"
+#include "tasks/task_registry.hpp"
+
+namespace tlab::study {
+
+namespace {
+
+// Where a field is: the file, the line of its node, and its dotted name.
+class FieldReader {
+ public:
+  explicit FieldReader(std::string path) : path_(std::move(path)) {}
+
+  [[noreturn]] void fail(const toml::node* node, const std::string& field, const std::string& message) const {
+    const auto line = node ? node->source().begin.line : 0u;
+    throw ExperimentFileError(path_ + ":" + std::to_string(line) + ": " + field + ": " + message);
+  }
+
+  void checkKeys(const toml::table& table, const std::string& where, const std::set<std::string>& allowed) const {
+    for (auto&& [key, value] : table) {
+      if (allowed.count(std::string(key.str()))) continue;
+      std::string known;
+      for (const auto& k : allowed) known += (known.empty() ? "" : ", ") + k;
+      fail(&value, where.empty() ? std::string(key.str()) : where + "." + std::string(key.str()),
+           "unknown key (known: " + known + ")");
+    }
+  }
+
+  std::string string(const toml::table& t, const std::string& key, const std::string& where, bool required,
+                     const std::string& fallback = "") const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+      if (required) fail(&t, name(where, key), "missing (a string is required)");
+      return fallback;
+    }
+    if (!n->is_string()) fail(n, name(where, key), "must be a string");
+    return n->as_string()->get();
+  }
+
+  std::int64_t integer(const toml::table& t, const std::string& key, const std::string& where, std::int64_t fallback,
+                       std::int64_t minimum, bool required = false) const {
+    const toml::node* n = t.get(key);
+    if (!n) {
+      if (required) fail(&t, name(where, key), "missing (an integer is required)");
+      return fallback;
+    }
+    if (!n->is_integer()) fail(n, name(where, key), "must be an integer");
+    const std::int64_t v = n->as_integer()->get();
+    if (v < minimum) fail(n, name(where, key), "must be >= " + std::to_string(minimum));
+    return v;
+  }
+
+  double number(const toml::table& t, const std::string& key, const std::string& where, double fallback, double minimum,
+                double maximum) const {
+    const toml::node* n = t.get(key);
+    if (!n) return fallback;
+    double v;
+    if (n->is_integer()) v = double(n->as_integer()->get());
+    else if (n->is_floating_point()) v = n->as_floating_point()->get();
+    else fail(n, name(where, key), "must be a number");
+    if (!(v >= minimum && v <= maximum))
+      fail(n, name(where, key), "must be within [" + fmt(minimum) + ", " + fmt(maximum) + "]");
+    return v;
+  }
+
+  std::vector<std::string> strings(const toml::table& t, const std::string& key, const std::string& where) const {
+    std::vector<std::string> out;
+    const toml::node* n = t.get(key);
+    if (!n) return out;
+    const toml::array* a = n->as_array();
+    if (!a) fail(n, name(where, key), "must be an array of strings");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::node& e = *a->get(i);
+      if (!e.is_string()) fail(&e, name(where, key) + "[" + std::to_string(i + 1) + "]", "must be a string");
+      out.push_back(e.as_string()->get());
+    }
+    return out;
+  }
+
+  const toml::table* table(const toml::table& t, const std::string& key, const std::string& where) const {
+    const toml::node* n = t.get(key);
+    if (!n) return nullptr;
+    if (!n->is_table()) fail(n, name(where, key), "must be a table");
+    return n->as_table();
+  }
+
+  // An array of tables ([[key]]); empty when absent.
+  std::vector<const toml::table*> tables(const toml::table& t, const std::string& key) const {
+    std::vector<const toml::table*> out;
+    const toml::node* n = t.get(key);
+    if (!n) return out;
+    const toml::array* a = n->as_array();
+    if (!a) fail(n, key, "must be an array of tables ([[" + key + "]])");
+    for (std::size_t i = 0; i < a->size(); ++i) {
+      const toml::node& e = *a->get(i);
+      if (!e.is_table()) fail(&e, key + "[" + std::to_string(i + 1) + "]", "must be a table");
+      out.push_back(e.as_table());
+    }
+    return out;
+  }
+
+  static std::string name(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
+  static std::string fmt(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+  }
+
+ private:
+  std::string path_;
+};
+
+std::pair<int, int> parseSizeField(const FieldReader& r, const toml::table& t, const std::string& where, std::pair<int, int> fallback) {
+  const toml::node* n = t.get("size");
+  if (!n) return fallback;
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  const std::string text = n->is_string() ? n->as_string()->get() : "";
+  std::istringstream s(text);
+  if (!(s >> w >> x >> h) || x != 'x' || (s >> extra) || w < 16 || h < 16 || w > 8192 || h > 8192)
+    r.fail(n, FieldReader::name(where, "size"), "expected \"WxH\" between 16x16 and 8192x8192");
+  return {w, h};
+}
+
+Level readLevel(const FieldReader& r, const toml::node& node, const std::string& where) {
+  Level level;
+  if (node.is_string()) {
+    level.name = node.as_string()->get();
+  } else if (const toml::table* t = node.as_table()) {
+    r.checkKeys(*t, where, {"name", "scene", "style", "camera", "settings"});
+    level.name = r.string(*t, "name", where, true);
+    if (t->get("scene")) level.scene = r.string(*t, "scene", where, true);
+    if (t->get("style")) level.style = r.string(*t, "style", where, true);
+    if (t->get("camera")) level.camera = r.string(*t, "camera", where, true);
+    level.renderSettings = r.strings(*t, "settings", where);
+  } else {
+    r.fail(&node, where, "a level is a name or a table { name = ..., scene/style/camera/settings = ... }");
+  }
+  if (level.name.empty()) r.fail(&node, where, "empty level name");
+  return level;
+}
+
+const std::set<std::string> kReservedNames = {"participant", "task", "task_id", "trial", "block", "question", "phase",
+                                              "correct", "score", "rt", "error", "partial_credit", "answered", "slot"};
+
+std::vector<Factor> readFactors(const FieldReader& r, const toml::table& root) {
+  std::vector<Factor> factors;
+  const auto tables = r.tables(root, "factors");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "factors[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"name", "kind", "levels"});
+    Factor f;
+    f.name = r.string(t, "name", where, true);
+    if (f.name.empty() || kReservedNames.count(f.name)) r.fail(t.get("name"), where + ".name", "'" + f.name + "' is empty or reserved");
+    for (const auto& g : factors)
+      if (g.name == f.name) r.fail(t.get("name"), where + ".name", "factor '" + f.name + "' is defined twice");
+    const std::string kind = r.string(t, "kind", where, false, "within");
+    if (kind == "within") f.kind = FactorKind::Within;
+    else if (kind == "between") f.kind = FactorKind::Between;
+    else r.fail(t.get("kind"), where + ".kind", "expected \"within\" or \"between\", got '" + kind + "'");
+    const toml::array* levels = t.get("levels") ? t.get("levels")->as_array() : nullptr;
+    if (!levels) r.fail(t.get("levels") ? t.get("levels") : &t, where + ".levels", "an array of at least two levels is required");
+    for (std::size_t k = 0; k < levels->size(); ++k) {
+      Level level = readLevel(r, *levels->get(k), where + ".levels[" + std::to_string(k + 1) + "]");
+      if (f.levelIndex(level.name) >= 0)
+        r.fail(levels->get(k), where + ".levels", "level '" + level.name + "' is listed twice");
+      f.levels.push_back(std::move(level));
+    }
+    if (f.levels.size() < 2) r.fail(levels, where + ".levels", "a factor needs at least two levels");
+    factors.push_back(std::move(f));
+  }
+  return factors;
+}
+
+Counterbalancing parseCounterbalancing(const FieldReader& r, const toml::table& root) {
+  const std::string text = r.string(root, "counterbalancing", "", false, "latin-square");
+  for (const auto c : {Counterbalancing::Fixed, Counterbalancing::LatinSquare, Counterbalancing::Williams,
+                       Counterbalancing::GraecoLatin, Counterbalancing::Permutation, Counterbalancing::Random})
+    if (text == counterbalancingName(c)) return c;
+  r.fail(root.get("counterbalancing"), "counterbalancing",
+         "expected fixed, latin-square, williams, graeco-latin, permutation or random, got '" + text + "'");
+}
+
+std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, const std::vector<Factor>& factors) {
+  std::vector<TaskSpec> specs;
+  const auto tables = r.tables(root, "tasks");
+  if (tables.empty()) r.fail(&root, "tasks", "at least one [[tasks]] table is required");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "tasks[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"id", "task", "trials", "questions", "training_trials", "time_limit", "trial_time_limit", "settings",
+                           "when", "instructions", "scene"});
+    TaskSpec s;
+    s.task = r.string(t, "task", where, true);
+    s.id = r.string(t, "id", where, false, s.task);
+    for (const auto& o : specs)
+      if (o.id == s.id) r.fail(&t, where + ".id", "task id '" + s.id + "' is used twice");
+    try {
+      const auto task = tasks::makeTask(s.task);
+      s.settings = r.strings(t, "settings", where);
+      task->settings(s.settings);
+    } catch (const std::invalid_argument& e) {
+      r.fail(t.get("settings") ? t.get("settings") : t.get("task"), where, e.what());
+    }
+    s.trials = int(r.integer(t, "trials", where, 1, 1));
+    s.questions = int(r.integer(t, "questions", where, 1, 1));
+    s.trainingTrials = int(r.integer(t, "training_trials", where, 0, 0));
+    s.timeLimitSeconds = r.number(t, "time_limit", where, 120.0, 0.5, 86400.0);
+    if (t.get("trial_time_limit")) s.trialTimeLimitSeconds = r.number(t, "trial_time_limit", where, 120.0, 0.5, 86400.0);
+    s.instructions = r.string(t, "instructions", where, false);
+    if (t.get("scene")) s.scene = r.string(t, "scene", where, true);
+    if (const toml::table* when = r.table(t, "when", where)) {
+      for (auto&& [key, value] : *when) {
+        const std::string factorName(key.str());
+        const auto f = std::find_if(factors.begin(), factors.end(), [&](const Factor& x) { return x.name == factorName; });
+        if (f == factors.end()) r.fail(&value, where + ".when." + factorName, "no factor of that name");
+        if (!value.is_string() || f->levelIndex(value.as_string()->get()) < 0)
+          r.fail(&value, where + ".when." + factorName, "must name a level of factor '" + factorName + "'");
+        s.when[factorName] = value.as_string()->get();
+      }
+    }
+    specs.push_back(std::move(s));
+  }
+  return specs;
+}
+
+std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root) {
+  std::vector<Questionnaire> out;
+  const auto tables = r.tables(root, "questionnaires");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "questionnaires[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"id", "when", "points", "anchors", "items"});
+    Questionnaire q;
+    q.id = r.string(t, "id", where, true);
+    q.when = r.string(t, "when", where, false, "end");
+    if (q.when != "start" && q.when != "end" && q.when != "after-block")
+      r.fail(t.get("when"), where + ".when", "expected start, end or after-block");
+    q.points = int(r.integer(t, "points", where, 7, 2));
+    if (q.points > 11) r.fail(t.get("points"), where + ".points", "at most 11 points");
+    const auto anchors = r.strings(t, "anchors", where);
+    if (!anchors.empty()) {
+      if (anchors.size() != 2) r.fail(t.get("anchors"), where + ".anchors", "expected [\"low\", \"high\"]");
+      q.lowAnchor = anchors[0];
+      q.highAnchor = anchors[1];
+    }
+    const toml::array* items = t.get("items") ? t.get("items")->as_array() : nullptr;
+    if (!items || items->empty()) r.fail(t.get("items") ? t.get("items") : &t, where + ".items", "at least one item is required");
+    for (std::size_t k = 0; k < items->size(); ++k) {
+      const toml::node& n = *items->get(k);
+      const std::string itemWhere = where + ".items[" + std::to_string(k + 1) + "]";
+      LikertItem item;
+      if (n.is_string()) {
+        item.id = "item" + std::to_string(k + 1);
+        item.text = n.as_string()->get();
+      } else if (const toml::table* it = n.as_table()) {
+        r.checkKeys(*it, itemWhere, {"id", "text"});
+        item.id = r.string(*it, "id", itemWhere, true);
+        item.text = r.string(*it, "text", itemWhere, true);
+      } else {
+        r.fail(&n, itemWhere, "an item is a string or { id = ..., text = ... }");
+      }
+      q.items.push_back(std::move(item));
+    }
+    out.push_back(std::move(q));
+  }
+  return out;
+}
+
+const std::set<std::string> kDependentVariables = {"correct", "score", "rt", "error", "partial_credit", "answered"};
+
+std::vector<AnalysisSpec> readAnalyses(const FieldReader& r, const toml::table& root, const Experiment& e) {
+  std::vector<AnalysisSpec> out;
+  const auto tables = r.tables(root, "analysis");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "analysis[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"title", "tasks", "dv", "within", "between", "tests", "alpha"});
+    AnalysisSpec a;
+    a.title = r.string(t, "title", where, false, e.title.empty() ? e.id : e.title);
+    a.tasks = r.strings(t, "tasks", where);
+    for (const auto& id : a.tasks)
+      if (!e.task(id)) r.fail(t.get("tasks"), where + ".tasks", "no task with id '" + id + "'");
+    a.dependentVariables = r.strings(t, "dv", where);
+    if (a.dependentVariables.empty()) r.fail(&t, where + ".dv", "at least one dependent variable is required");
+    for (const auto& dv : a.dependentVariables)
+      if (!kDependentVariables.count(dv))
+        r.fail(t.get("dv"), where + ".dv", "'" + dv + "' is not one of correct, score, rt, error, partial_credit, answered");
+    a.within = r.strings(t, "within", where);
+    a.between = r.strings(t, "between", where);
+    for (const auto& list : {a.within, a.between})
+      for (const auto& f : list)
+        if (!e.factor(f)) r.fail(t.get("within"), where, "no factor named '" + f + "'");
+    if (t.get("tests")) a.tests = r.strings(t, "tests", where);
+    for (const auto& test : a.tests)
+      if (test != "anova" && test != "t-tests" && test != "rank-tests")
+        r.fail(t.get("tests"), where + ".tests", "'" + test + "' is not one of anova, t-tests, rank-tests");
+    a.alpha = r.number(t, "alpha", where, 0.05, 1e-6, 0.5);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+ObserverParams readObserver(const FieldReader& r, const toml::table& root) {
+  ObserverParams p;
+  const toml::table* t = r.table(root, "observer", "");
+  if (!t) return p;
+  r.checkKeys(*t, "observer", {"contrast_reference", "sensitivity", "threshold", "skill_spread", "lapse", "layer_penalty",
+                               "base_seconds", "slow_seconds", "rt_sigma", "give_up_share"});
+  p.contrastReference = r.number(*t, "contrast_reference", "observer", p.contrastReference, 1e-4, 1.0);
+  p.sensitivity = r.number(*t, "sensitivity", "observer", p.sensitivity, 0.0, 100.0);
+  p.threshold = r.number(*t, "threshold", "observer", p.threshold, 0.0, 1.0);
+  p.skillSpread = r.number(*t, "skill_spread", "observer", p.skillSpread, 0.0, 3.0);
+  p.lapse = r.number(*t, "lapse", "observer", p.lapse, 0.0, 1.0);
+  p.layerPenalty = r.number(*t, "layer_penalty", "observer", p.layerPenalty, 0.0, 1.0);
+  p.baseSeconds = r.number(*t, "base_seconds", "observer", p.baseSeconds, 0.01, 3600.0);
+  p.slowSeconds = r.number(*t, "slow_seconds", "observer", p.slowSeconds, 0.0, 3600.0);
+  p.rtSigma = r.number(*t, "rt_sigma", "observer", p.rtSigma, 0.0, 3.0);
+  p.giveUpShare = r.number(*t, "give_up_share", "observer", p.giveUpShare, 0.0, 1.0);
+  return p;
+}
+
+Stimulus readStimulus(const FieldReader& r, const toml::table& root) {
+  Stimulus s;
+  const toml::table* t = r.table(root, "stimulus", "");
+  if (!t) return s;
+  r.checkKeys(*t, "stimulus", {"scene", "style", "camera", "settings", "size"});
+  s.scene = r.string(*t, "scene", "stimulus", false, s.scene);
+  s.style = r.string(*t, "style", "stimulus", false, s.style);
+  s.camera = r.string(*t, "camera", "stimulus", false);
+  s.renderSettings = r.strings(*t, "settings", "stimulus");
+  std::tie(s.width, s.height) = parseSizeField(r, *t, "stimulus", {s.width, s.height});
+  return s;
+}
+
+void checkDesign(const FieldReader& r, const toml::table& root, const Experiment& e) {
+  try {
+    const Design design = makeDesign(e);
+    if (e.blockTasks == BlockTasks::ByPosition && design.blocksPerRow() != e.tasks.size())
+      r.fail(root.get("block_tasks"), "block_tasks",
+             "\"by-position\" needs one task per block: " + std::to_string(design.blocksPerRow()) + " blocks but " +
+                 std::to_string(e.tasks.size()) + " tasks");
+  } catch (const DesignError& error) {
+    r.fail(root.get("counterbalancing") ? root.get("counterbalancing") : &root, "counterbalancing", error.what());
+  }
+}
+
+}  // namespace
+
+Experiment parseExperiment(const std::string& text, const std::string& path) {
+  const FieldReader r(path);
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& error) {
+    throw ExperimentFileError(path + ":" + std::to_string(error.source().begin.line) + ": " + std::string(error.description()));
+  }
+  r.checkKeys(root, "", {"id", "title", "seed", "participants", "counterbalancing", "block_tasks", "welcome", "goodbye",
+                         "stimulus", "factors", "tasks", "questionnaires", "analysis", "observer"});
+  Experiment e;
+  e.path = path;
+  e.text = text;
+  e.id = r.string(root, "id", "", true);
+  if (e.id.empty()) r.fail(root.get("id"), "id", "must not be empty");
+  e.title = r.string(root, "title", "", false, e.id);
+  e.seed = std::uint64_t(r.integer(root, "seed", "", 1, 0));
+  e.participants = int(r.integer(root, "participants", "", 1, 1, true));
+  e.welcome = r.string(root, "welcome", "", false);
+  e.goodbye = r.string(root, "goodbye", "", false, e.goodbye);
+  e.stimulus = readStimulus(r, root);
+  e.factors = readFactors(r, root);
+  e.counterbalancing = parseCounterbalancing(r, root);
+  const std::string blockTasks = r.string(root, "block_tasks", "", false, "all");
+  if (blockTasks == "all") e.blockTasks = BlockTasks::All;
+  else if (blockTasks == "by-position") e.blockTasks = BlockTasks::ByPosition;
+  else r.fail(root.get("block_tasks"), "block_tasks", "expected \"all\" or \"by-position\", got '" + blockTasks + "'");
+  e.tasks = readTasks(r, root, e.factors);
+  e.questionnaires = readQuestionnaires(r, root);
+  e.analyses = readAnalyses(r, root, e);
+  e.observer = readObserver(r, root);
+  checkDesign(r, root, e);
+  return e;
+}
+
+Experiment readExperimentFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ExperimentFileError(path + ": cannot open the experiment file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parseExperiment(s.str(), path);
+}
+
+}  // namespace tlab::study

@@ -1,0 +1,78 @@
+#pragma once
+// TrialRunner: runs one participant's session — enrolment (or resumption), the plan stored in the
+// database before the first stimulus, welcome and task instructions, training and test trials in
+// the plan's order with their time limits, questionnaires, and the end. Each response is scored
+// by its task and committed in its own transaction before the next stimulus is prepared, so a
+// crash loses at most the trial on screen; --resume continues at the first unanswered trial.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "renderer/scene/builtin_scenes.hpp"
+#include "study/counterbalancing.hpp"
+#include "study/experiment.hpp"
+#include "study/responder.hpp"
+#include "study/session_store.hpp"
+#include "study/stimulus_library.hpp"
+
+namespace tlab::study {
+
+struct RunOptions {
+  std::string participant;
+  bool resume = false;
+  std::string tlabVersion = "unknown";
+};
+
+// One committed response, for progress lines.
+struct TrialProgress {
+  std::string participant;
+  int index = 0;  // 1-based sequence
+  int total = 0;
+  const PlannedTrial* plan = nullptr;
+  std::optional<std::string> answer;
+  bool correct = false;
+  std::optional<double> rtSeconds;
+};
+
+enum class SessionOutcome { Finished, Closed };
+
+struct SessionResult {
+  SessionOutcome outcome = SessionOutcome::Finished;
+  int slot = 0;
+  int answeredBefore = 0;  // responses already stored when this run started (resume)
+  int answeredNow = 0;
+  int total = 0;
+};
+
+class TrialRunner {
+ public:
+  TrialRunner(const Experiment& experiment, SessionStore& store, StimulusLibrary& stimuli);
+
+  void onProgress(std::function<void(const TrialProgress&)> callback) { progress_ = std::move(callback); }
+
+  // Throws StoreError as checkParticipant() does.
+  SessionResult run(const RunOptions& options, Responder& responder);
+
+ private:
+  struct Session;
+  bool runTrial(Session& s, std::size_t index);
+  bool runQuestionnaires(Session& s, const std::string& when, int block);
+  void storeEvents(Session& s, std::optional<std::int64_t> trial);
+
+  const Experiment& experiment_;
+  SessionStore& store_;
+  StimulusLibrary& stimuli_;
+  Design design_;
+  std::function<void(const TrialProgress&)> progress_;
+};
+
+// Throws StoreError with a clear message when the participant has finished, has dropped out, has
+// an unfinished session without `resume`, or has none to resume. TrialRunner::run checks this
+// too; calling it first lets a command refuse before it opens a window.
+void checkParticipant(SessionStore& store, const Experiment& experiment, const RunOptions& options);
+
+// The database record of a planned and prepared trial.
+TrialRecord makeTrialRecord(const PlannedTrial& plan, const PreparedTrial& prepared);
+
+}  // namespace tlab::study

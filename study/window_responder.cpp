@@ -1,0 +1,425 @@
+#include "study/window_responder.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <set>
+#include <stdexcept>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <nlohmann/json.hpp>
+
+#include "tasks/answer_parser.hpp"
+
+namespace tlab::study {
+
+namespace {
+
+constexpr Rgba kInk{20, 20, 20, 255};
+constexpr Rgba kMuted{110, 110, 110, 255};
+constexpr Rgba kPaper{245, 245, 242, 255};
+constexpr Rgba kBand{228, 228, 224, 255};
+constexpr Rgba kAccent{30, 90, 200, 255};
+constexpr Rgba kWarn{190, 30, 30, 255};
+
+WindowResponder* self(GLFWwindow* w) { return static_cast<WindowResponder*>(glfwGetWindowUserPointer(w)); }
+
+void onKey(GLFWwindow* w, int key, int, int action, int) {
+  if (action == GLFW_PRESS || action == GLFW_REPEAT) self(w)->push({WindowResponder::Input::Kind::Key, key, 0, 0, 0, monotonicNs()});
+}
+void onChar(GLFWwindow* w, unsigned int codepoint) {
+  self(w)->push({WindowResponder::Input::Kind::Char, 0, char32_t(codepoint), 0, 0, monotonicNs()});
+}
+void onMouse(GLFWwindow* w, int button, int action, int) {
+  if (button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
+  const std::int64_t t = monotonicNs();
+  double x = 0, y = 0;
+  glfwGetCursorPos(w, &x, &y);
+  const glm::dvec2 p = self(w)->cursorToCanvas(x, y);
+  self(w)->push({WindowResponder::Input::Kind::Click, 0, 0, p.x, p.y, t});
+}
+void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close, 0, 0, 0, 0, monotonicNs()}); }
+
+std::string encodeUtf8(char32_t c) {
+  std::string s;
+  if (c < 0x80) s += char(c);
+  else if (c < 0x800) s += {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
+  else if (c < 0x10000) s += {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+  else s += {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
+  return s;
+}
+
+void popLastCodepoint(std::string& s) {
+  while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();
+  if (!s.empty()) s.pop_back();
+}
+
+std::string hint(tasks::AnswerKind kind) {
+  using tasks::AnswerKind;
+  switch (kind) {
+    case AnswerKind::LayerNumber: return "Type the layer number (1 = front) and press Enter.";
+    case AnswerKind::Count: return "Type the number and press Enter.";
+    case AnswerKind::Label: return "Click the label (or type it and press Enter).";
+    case AnswerKind::LabelSet: return "Click labels to select them, then press Enter (Enter with none selected: none).";
+    case AnswerKind::Letter: return "Click the letter (or press its key).";
+    case AnswerKind::FloorPoint: return "Type the floor position as x,z and press Enter.";
+  }
+  return "";
+}
+
+void drawButton(Canvas& c, TextPainter& p, const Button& b, bool selected) {
+  c.fillRect(b.rect, selected ? kAccent : Rgba{255, 255, 255, 255});
+  c.strokeRect(b.rect, kInk, 2);
+  const float size = float(b.rect.height) * 0.5f;
+  const int w = p.lineWidth(b.label, size);
+  p.drawLine(c, b.label, b.rect.x + (b.rect.width - w) / 2, b.rect.y + (b.rect.height - p.lineHeight(size)) / 2 + 2, size,
+             selected ? Rgba{255, 255, 255, 255} : kInk);
+}
+
+std::string formatCountdown(double seconds) {
+  const int s = std::max(0, int(std::ceil(seconds)));
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%d:%02d", s / 60, s % 60);
+  return buf;
+}
+
+}  // namespace
+
+std::int64_t monotonicNs() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+void makeFullscreen(gpu::WindowContext& window) {
+  GLFWmonitor* monitor = glfwGetPrimaryMonitor();
+  const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+  if (!mode) throw std::runtime_error("--fullscreen: no monitor found");
+  glfwSetWindowMonitor(window.handle(), monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
+WindowResponder::WindowResponder(gpu::WindowContext& window, TextPainter& painter) : window_(window), painter_(painter) {
+  GLFWwindow* w = window_.handle();
+  glfwSetWindowUserPointer(w, this);
+  glfwSetKeyCallback(w, onKey);
+  glfwSetCharCallback(w, onChar);
+  glfwSetMouseButtonCallback(w, onMouse);
+  glfwSetWindowCloseCallback(w, onClose);
+  glfwSwapInterval(1);
+}
+
+WindowResponder::~WindowResponder() {
+  GLFWwindow* w = window_.handle();
+  glfwSetKeyCallback(w, nullptr);
+  glfwSetCharCallback(w, nullptr);
+  glfwSetMouseButtonCallback(w, nullptr);
+  glfwSetWindowCloseCallback(w, nullptr);
+  glfwSetWindowUserPointer(w, nullptr);
+}
+
+glm::dvec2 WindowResponder::cursorToCanvas(double x, double y) const {
+  int ww = 1, wh = 1, fw = 1, fh = 1;
+  glfwGetWindowSize(window_.handle(), &ww, &wh);
+  glfwGetFramebufferSize(window_.handle(), &fw, &fh);
+  return {x * fw / std::max(ww, 1), y * fh / std::max(wh, 1)};
+}
+
+Canvas WindowResponder::blank() const {
+  int fw = 1, fh = 1;
+  glfwGetFramebufferSize(window_.handle(), &fw, &fh);
+  return Canvas(std::max(fw, 64), std::max(fh, 64), kPaper);
+}
+
+std::int64_t WindowResponder::present(const Canvas& canvas) {
+  const std::int64_t before = monotonicNs();
+  window_.present(canvas.rgba().data(), canvas.width(), canvas.height());
+  const std::int64_t after = monotonicNs();
+  lastPresentMs_ = (after - before) / 1e6;
+  ++frames_;
+  presentSumMs_ += lastPresentMs_;
+  presentMaxMs_ = std::max(presentMaxMs_, lastPresentMs_);
+  return after;
+}
+
+void WindowResponder::waitForInput(double seconds, bool inTrial) {
+  const std::int64_t before = monotonicNs();
+  glfwWaitEventsTimeout(std::max(seconds, 0.0));
+  if (inTrial) eventWaitMaxMs_ = std::max(eventWaitMaxMs_, (monotonicNs() - before) / 1e6);
+}
+
+void WindowResponder::event(std::int64_t tNs, const std::string& kind, const std::string& detail) {
+  events_.push_back({tNs, kind, detail});
+}
+
+std::vector<ResponderEvent> WindowResponder::takeEvents() {
+  std::vector<ResponderEvent> out;
+  out.swap(events_);
+  return out;
+}
+
+bool WindowResponder::pause() {
+  event(monotonicNs(), "pause", "");
+  Canvas c = blank();
+  painter_.drawLine(c, "Paused", 40, c.height() / 3, 36.0f, kInk);
+  painter_.drawLine(c, "Press Space to continue.", 40, c.height() / 3 + 60, 22.0f, kMuted);
+  present(c);
+  while (!closed_) {
+    waitForInput(0.1);
+    while (!inputs_.empty()) {
+      const Input in = inputs_.front();
+      inputs_.pop_front();
+      if (in.kind == Input::Kind::Close) closed_ = true;
+      if (in.kind == Input::Kind::Key && (in.key == GLFW_KEY_SPACE || in.key == GLFW_KEY_ENTER)) {
+        inputs_.clear();
+        event(monotonicNs(), "resume", "");
+        return true;
+      }
+    }
+    present(c);
+  }
+  return false;
+}
+
+bool WindowResponder::showMessage(const std::string& title, const std::string& text) {
+  if (closed_) return false;
+  Canvas c = blank();
+  painter_.drawLine(c, title, 40, 40, 32.0f, kInk);
+  painter_.drawParagraph(c, text, 40, 100, c.width() - 80, 22.0f, kInk);
+  painter_.drawLine(c, "Press Space or click to continue.", 40, c.height() - 60, 20.0f, kMuted);
+  present(c);
+  inputs_.clear();
+  while (!closed_) {
+    waitForInput(0.1);
+    while (!inputs_.empty()) {
+      const Input in = inputs_.front();
+      inputs_.pop_front();
+      if (in.kind == Input::Kind::Close) closed_ = true;
+      else if (in.kind == Input::Kind::Click || (in.kind == Input::Kind::Key && (in.key == GLFW_KEY_SPACE || in.key == GLFW_KEY_ENTER)))
+        return true;
+    }
+    present(c);  // keep the window's content after expose events
+  }
+  return false;
+}
+
+std::optional<Response> WindowResponder::respond(const TrialView& view) {
+  if (closed_) return std::nullopt;
+  const tasks::Question& q = view.prepared.question;
+  const Canvas& stimulus = *view.prepared.stimulus;
+  Canvas base = blank();
+  const ScreenLayout layout = makeScreenLayout(base.width(), base.height(), stimulus.width(), stimulus.height());
+  base.fillRect(layout.header, kBand);
+  base.fillRect(layout.answer, kBand);
+  base.drawCanvas(stimulus, layout.stimulus);
+  painter_.drawLine(base, q.text, 16, 12, 22.0f, kInk);
+  painter_.drawLine(base, hint(q.answerKind), 16, layout.answer.y + 8, 18.0f, kMuted);
+  char counter[64];
+  std::snprintf(counter, sizeof counter, "%s %d/%d", view.plan.phase == Phase::Training ? "training" : "trial", view.index, view.total);
+  painter_.drawLine(base, counter, base.width() - 260, 12, 18.0f, kMuted);
+
+  std::vector<std::string> labels;
+  std::vector<glm::dvec2> screenPoints;
+  nlohmann::json layoutJson = {{"stimulus", {layout.stimulus.x, layout.stimulus.y, layout.stimulus.width, layout.stimulus.height}},
+                               {"canvas", {base.width(), base.height()}}};
+  for (const auto& p : q.points) {
+    if (!isMarkedPoint(p)) continue;
+    if (q.answerKind == tasks::AnswerKind::Label && p.role != "candidate") continue;
+    if (q.answerKind == tasks::AnswerKind::LabelSet && p.role != "mark") continue;
+    labels.push_back(p.label);
+    screenPoints.push_back(layout.toScreen(p.pixel));
+    layoutJson["labels"][p.label] = {screenPoints.back().x, screenPoints.back().y};
+  }
+  std::vector<Button> buttons;
+  if (q.answerKind == tasks::AnswerKind::Letter) buttons = buttonRow(layout.answer, {"C", "K", "R", "X", "Y"});
+  for (const auto& b : buttons) layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
+
+  std::string typed, error;
+  std::set<std::string> selected;
+  std::int64_t pausedNs = 0;
+  std::int64_t onsetNs = 0;
+  int shownSecond = -1;
+  bool dirty = true;
+  auto elapsed = [&](std::int64_t t) { return (t - onsetNs - pausedNs) / 1e9; };
+  auto frame = [&]() {
+    Canvas c = base;
+    const double left = onsetNs ? view.limitSeconds - elapsed(monotonicNs()) : view.limitSeconds;
+    const std::string countdown = formatCountdown(left);
+    painter_.drawLine(c, countdown, base.width() - 100, 12, 24.0f, left < 10 ? kWarn : kInk);
+    for (std::size_t i = 0; i < labels.size(); ++i)
+      if (selected.count(labels[i])) c.strokeCircle(screenPoints[i].x, screenPoints[i].y, 10.0, 3.0, kAccent);
+    for (const auto& b : buttons) drawButton(c, painter_, b, false);
+    const std::string shown = q.answerKind == tasks::AnswerKind::LabelSet && typed.empty()
+                                  ? "selected: " + (selected.empty() ? std::string("none") : [&] {
+                                      std::string s;
+                                      for (const auto& l : selected) s += (s.empty() ? "" : ",") + l;
+                                      return s;
+                                    }())
+                                  : "answer: " + typed + "_";
+    painter_.drawLine(c, shown, 16, layout.answer.y + 40, 22.0f, kInk);
+    if (!error.empty()) painter_.drawLine(c, error, 16, layout.answer.y + 70, 16.0f, kWarn);
+    return c;
+  };
+
+  inputs_.clear();
+  {
+    const Canvas first = frame();
+    const std::int64_t before = monotonicNs();
+    onsetNs = present(first);
+    ++onsets_;
+    const double onsetMs = (onsetNs - before) / 1e6;
+    onsetSumMs_ += onsetMs;
+    onsetMaxMs_ = std::max(onsetMaxMs_, onsetMs);
+    layoutJson["present_ms"] = onsetMs;
+    event(onsetNs, "onset", layoutJson.dump());
+  }
+  auto submit = [&](const std::string& text, std::int64_t t) -> std::optional<Response> {
+    try {
+      tasks::parseAnswer(q, text);
+    } catch (const tasks::AnswerFormatError& e) {
+      error = e.what();
+      typed.clear();
+      dirty = true;
+      event(t, "invalid-answer", text);
+      return std::nullopt;
+    }
+    Response r;
+    r.text = text;
+    r.onsetNs = onsetNs;
+    r.responseNs = t;
+    r.rtSeconds = elapsed(t);
+    return r;
+  };
+
+  while (true) {
+    const double left = view.limitSeconds - elapsed(monotonicNs());
+    if (left <= 0) {
+      Response r;
+      r.onsetNs = onsetNs;
+      r.responseNs = monotonicNs();
+      r.note = "time limit";
+      event(r.responseNs, "timeout", "");
+      return r;
+    }
+    waitForInput(std::min(0.005, left), true);
+    while (!inputs_.empty()) {
+      const Input in = inputs_.front();
+      inputs_.pop_front();
+      std::optional<Response> answer;
+      if (in.kind == Input::Kind::Close) {
+        closed_ = true;
+        event(in.tNs, "close", "");
+        return std::nullopt;
+      }
+      if (in.kind == Input::Kind::Key) {
+        if (in.key == GLFW_KEY_ESCAPE) {
+          const std::int64_t start = monotonicNs();
+          if (!pause()) return std::nullopt;
+          pausedNs += monotonicNs() - start;
+          dirty = true;
+        } else if (in.key == GLFW_KEY_BACKSPACE) {
+          popLastCodepoint(typed);
+          dirty = true;
+        } else if (in.key == GLFW_KEY_ENTER || in.key == GLFW_KEY_KP_ENTER) {
+          std::string text = typed;
+          if (q.answerKind == tasks::AnswerKind::LabelSet && text.empty()) {
+            for (const auto& l : selected) text += (text.empty() ? "" : ",") + l;
+            if (text.empty()) text = "none";
+          }
+          if (!text.empty()) answer = submit(text, in.tNs);
+        }
+      } else if (in.kind == Input::Kind::Char) {
+        const std::string ch = encodeUtf8(in.codepoint);
+        if (q.answerKind == tasks::AnswerKind::Letter && (ch.size() == 1 && std::string("CKRXYckrxy").find(ch) != std::string::npos))
+          answer = submit(std::string(1, char(std::toupper(ch[0]))), in.tNs);
+        else if (typed.size() < 256) {
+          typed += ch;
+          dirty = true;
+        }
+      } else if (in.kind == Input::Kind::Click) {
+        for (const auto& b : buttons)
+          if (b.rect.contains(in.x, in.y)) answer = submit(b.label, in.tNs);
+        const int hit = hitPoint(screenPoints, {in.x, in.y});
+        if (hit >= 0 && q.answerKind == tasks::AnswerKind::Label) answer = submit(labels[std::size_t(hit)], in.tNs);
+        if (hit >= 0 && q.answerKind == tasks::AnswerKind::LabelSet) {
+          const std::string& l = labels[std::size_t(hit)];
+          if (!selected.erase(l)) selected.insert(l);
+          dirty = true;
+        }
+      }
+      if (answer) {
+        answer->rtSeconds = std::max(0.0, *answer->rtSeconds);
+        return answer;
+      }
+    }
+    const int second = int(std::ceil(view.limitSeconds - elapsed(monotonicNs())));
+    if (dirty || second != shownSecond) {
+      present(frame());
+      shownSecond = second;
+      dirty = false;
+    }
+  }
+}
+
+std::optional<std::vector<int>> WindowResponder::answerQuestionnaire(const Questionnaire& questionnaire) {
+  std::vector<int> values;
+  for (const auto& item : questionnaire.items) {
+    if (closed_) return std::nullopt;
+    Canvas c = blank();
+    const Rect band{0, c.height() / 2, c.width(), c.height() / 4};
+    std::vector<std::string> labels;
+    for (int k = 1; k <= questionnaire.points; ++k) labels.push_back(std::to_string(k));
+    const auto buttons = buttonRow(band, labels, 56, 10);
+    painter_.drawLine(c, "Questionnaire", 40, 30, 28.0f, kInk);
+    painter_.drawParagraph(c, item.text, 40, 90, c.width() - 80, 24.0f, kInk);
+    painter_.drawLine(c, "1 = " + questionnaire.lowAnchor, 40, band.y + band.height + 10, 18.0f, kMuted);
+    const std::string high = std::to_string(questionnaire.points) + " = " + questionnaire.highAnchor;
+    painter_.drawLine(c, high, c.width() - 40 - painter_.lineWidth(high, 18.0f), band.y + band.height + 10, 18.0f, kMuted);
+    nlohmann::json layoutJson;
+    for (const auto& b : buttons) {
+      drawButton(c, painter_, b, false);
+      layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
+    }
+    event(present(c), "questionnaire", nlohmann::json({{"questionnaire", questionnaire.id}, {"item", item.id}, {"layout", layoutJson}}).dump());
+    inputs_.clear();
+    int value = 0;
+    while (value == 0) {
+      if (closed_) return std::nullopt;
+      waitForInput(0.1);
+      while (!inputs_.empty() && value == 0) {
+        const Input in = inputs_.front();
+        inputs_.pop_front();
+        if (in.kind == Input::Kind::Close) closed_ = true;
+        if (in.kind == Input::Kind::Char && in.codepoint >= U'1' && in.codepoint <= U'9' && int(in.codepoint - U'0') <= questionnaire.points)
+          value = int(in.codepoint - U'0');
+        if (in.kind == Input::Kind::Click)
+          for (const auto& b : buttons)
+            if (b.rect.contains(in.x, in.y)) value = std::stoi(b.label);
+        if (in.kind == Input::Kind::Key && in.key == GLFW_KEY_ESCAPE && !pause()) return std::nullopt;
+      }
+      if (value == 0) present(c);
+    }
+    values.push_back(value);
+  }
+  return values;
+}
+
+FrameTiming WindowResponder::timing() const {
+  FrameTiming t;
+  t.frames = frames_;
+  t.presentMeanMs = frames_ ? presentSumMs_ / frames_ : 0.0;
+  t.presentMaxMs = presentMaxMs_;
+  t.onsets = onsets_;
+  t.onsetMeanMs = onsets_ ? onsetSumMs_ / onsets_ : 0.0;
+  t.onsetMaxMs = onsetMaxMs_;
+  t.eventWaitMaxMs = eventWaitMaxMs_;
+  std::int64_t smallest = INT64_MAX;
+  for (int i = 0; i < 10000; ++i) {
+    const std::int64_t a = monotonicNs();
+    std::int64_t b = monotonicNs();
+    while (b == a) b = monotonicNs();
+    smallest = std::min(smallest, b - a);
+  }
+  t.clockResolutionNs = double(smallest);
+  return t;
+}
+
+}  // namespace tlab::study

@@ -1,0 +1,88 @@
+#pragma once
+// WindowResponder: the participant at a GLFW window. Screens are drawn into a Canvas (text with
+// TextPainter) and shown with WindowContext::present. A trial shows the marked stimulus, the
+// question, a countdown and the answer band; answers are given by clicking a label (Label: one
+// click answers; LabelSet: clicks toggle, Enter submits), clicking a letter button (C K R X Y), or
+// typing (numbers, labels, "x,z" floor points) and pressing Enter. An answer that does not parse
+// is not submitted: the error is shown and the clock keeps running.
+//
+// Timing: the stimulus onset is the monotonic time (steady_clock) right after the buffer swap
+// of the first frame showing the stimulus; input events are timestamped in the GLFW callbacks,
+// which run inside glfwWaitEventsTimeout as soon as the event arrives. Escape pauses (the paused
+// time is left out of the RT and the countdown); closing the window ends the session cleanly.
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "renderer/gpu/window_context.hpp"
+#include "study/responder.hpp"
+#include "study/screen_layout.hpp"
+#include "study/text_painter.hpp"
+
+namespace tlab::study {
+
+struct FrameTiming {
+  int frames = 0;
+  double presentMeanMs = 0.0;  // present(): upload + blit + swap, per frame
+  double presentMaxMs = 0.0;
+  int onsets = 0;
+  double onsetMeanMs = 0.0;    // first stimulus frame: start of present() → swap returned
+  double onsetMaxMs = 0.0;
+  double clockResolutionNs = 0.0;    // smallest positive step of steady_clock observed
+  double eventWaitMaxMs = 0.0;       // longest wait in the event loop while a trial ran (bounds RT resolution when idle)
+};
+
+class WindowResponder final : public Responder {
+ public:
+  WindowResponder(gpu::WindowContext& window, TextPainter& painter);
+  ~WindowResponder() override;
+
+  std::string mode() const override { return "window"; }
+  bool showMessage(const std::string& title, const std::string& text) override;
+  std::optional<Response> respond(const TrialView& view) override;
+  std::optional<std::vector<int>> answerQuestionnaire(const Questionnaire& questionnaire) override;
+  std::vector<ResponderEvent> takeEvents() override;
+
+  FrameTiming timing() const;
+
+  // Input as the GLFW callbacks deliver it (public for the static callbacks).
+  struct Input {
+    enum class Kind { Key, Char, Click, Close } kind = Kind::Key;
+    int key = 0;
+    char32_t codepoint = 0;
+    double x = 0, y = 0;  // click position in canvas pixels
+    std::int64_t tNs = 0;
+  };
+  void push(Input input) { inputs_.push_back(input); }
+  glm::dvec2 cursorToCanvas(double x, double y) const;
+
+ private:
+  enum class Wait { Continue, Closed };
+  std::int64_t present(const Canvas& canvas);  // returns the monotonic time after the swap
+  bool pause();
+  void waitForInput(double seconds, bool inTrial = false);
+  Canvas blank() const;
+  void event(std::int64_t tNs, const std::string& kind, const std::string& detail);
+
+  gpu::WindowContext& window_;
+  TextPainter& painter_;
+  std::deque<Input> inputs_;
+  std::vector<ResponderEvent> events_;
+  bool closed_ = false;
+  // timing statistics
+  int frames_ = 0;
+  double presentSumMs_ = 0.0, presentMaxMs_ = 0.0;
+  int onsets_ = 0;
+  double onsetSumMs_ = 0.0, onsetMaxMs_ = 0.0;
+  double lastPresentMs_ = 0.0;
+  double eventWaitMaxMs_ = 0.0;
+};
+
+std::int64_t monotonicNs();
+
+// Switches the window to full screen on the primary monitor; throws when there is none.
+void makeFullscreen(gpu::WindowContext& window);
+
+}  // namespace tlab::study

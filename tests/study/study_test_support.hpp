@@ -1,0 +1,79 @@
+#pragma once
+// Shared helpers of the study tests: paths of the test experiments and the examples, and a
+// minimal RFC 4180 CSV reader to check what `tlab export` wrote byte for byte.
+#include <string>
+#include <vector>
+
+namespace tlab::testing {
+
+inline std::string studyData(const std::string& name) { return std::string(TLAB_SOURCE_DIR) + "/tests/study/data/" + name; }
+inline std::string example(const std::string& name) { return std::string(TLAB_SOURCE_DIR) + "/examples/" + name; }
+
+// Rows of fields; quoted fields may hold commas, quotes ("") and line breaks; rows end in CRLF or LF.
+inline std::vector<std::vector<std::string>> parseCsv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::vector<std::string> row;
+  std::string field;
+  bool quoted = false, any = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (quoted) {
+      if (c == '"' && i + 1 < text.size() && text[i + 1] == '"') field += '"', ++i;
+      else if (c == '"') quoted = false;
+      else field += c;
+      continue;
+    }
+    if (c == '"') quoted = true, any = true;
+    else if (c == ',') row.push_back(field), field.clear();
+    else if (c == '\r') continue;
+    else if (c == '\n') {
+      row.push_back(field);
+      rows.push_back(row);
+      row.clear();
+      field.clear();
+      any = false;
+    } else field += c, any = true;
+  }
+  if (any || !row.empty()) {
+    row.push_back(field);
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+}  // namespace tlab::testing
+
+#include <fcntl.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace tlab::testing {
+
+// Starts `argv` with stdout (and stderr) redirected to files; returns its pid.
+inline pid_t spawnProcess(const std::vector<std::string>& argv, const std::string& outPath, const std::string& errPath,
+                          const std::vector<std::string>& env = {}) {
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    const int out = ::open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    const int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    ::dup2(out, 1);
+    ::dup2(err, 2);
+    for (const auto& e : env) ::putenv(const_cast<char*>(e.c_str()));
+    std::vector<char*> args;
+    for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+    args.push_back(nullptr);
+    ::execvp(args[0], args.data());
+    ::_exit(127);
+  }
+  return pid;
+}
+
+// Waits for the process; its exit code, or -signal when it was killed.
+inline int waitProcess(pid_t pid) {
+  int status = 0;
+  ::waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+}  // namespace tlab::testing

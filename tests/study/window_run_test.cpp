@@ -1,0 +1,140 @@
+// `tlab run` in a real GLFW window under Xvfb, driven with xdotool as a participant would: Space
+// through the welcome and instruction screens, type the layer number and press Enter, click the
+// labels met along the boundary and press Enter, press 4 in the questionnaire. The database then
+// holds both responses (scored correct), the questionnaire answer, onset events with the
+// present-to-swap time, and the participant as finished. Prints the timing line of the run.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+
+#include <nlohmann/json.hpp>
+
+#include "study/screen_layout.hpp"
+#include "study/sqlite_database.hpp"
+#include "tests/study/study_test_support.hpp"
+#include "tests/support/run_command.hpp"
+
+using namespace tlab::testing;
+using tlab::study::Database;
+
+namespace {
+
+const std::string kTlab = TLAB_EXE;
+bool haveTool(const std::string& name) { return runCommand("command -v " + name).exitCode == 0; }
+
+void pause(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
+
+struct StoredTrial {
+  nlohmann::json question;
+};
+
+// The trials of the participant once the runner has stored its plan (polls up to ~20 s).
+std::vector<StoredTrial> waitForTrials(const std::string& db) {
+  for (int i = 0; i < 200; ++i) {
+    try {
+      Database d(db, false);
+      auto s = d.prepare("SELECT question_json FROM trials ORDER BY sequence");
+      std::vector<StoredTrial> out;
+      while (s.step()) out.push_back({nlohmann::json::parse(s.text(0))});
+      if (!out.empty()) return out;
+    } catch (const std::exception&) {
+    }
+    pause(100);
+  }
+  return {};
+}
+
+}  // namespace
+
+TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
+  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
+  const auto dir = freshDir("window_run");
+  const std::string display = ":" + std::to_string(150 + ::getpid() % 100);
+  const std::string db = (dir / "study.db").string();
+  const pid_t xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
+  pause(800);
+  const std::string env = "DISPLAY=" + display;
+  const pid_t tlab = spawnProcess({kTlab, "run", studyData("window.toml"), "--participant", "P'01; DROP TABLE trials", "--db", db,
+                                   "--size", "640x480"},
+                                  (dir / "run.out").string(), (dir / "run.err").string(), {env});
+  const auto xdo = [&](const std::string& args) { return runCommand(env + " xdotool " + args); };
+  const std::string window = [&] {
+    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
+    return r.out.substr(0, r.out.find('\n'));
+  }();
+  ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
+  const auto trials = waitForTrials(db);
+  ASSERT_EQ(trials.size(), 2u) << readText((dir / "run.err").string());
+  pause(500);
+
+  xdo("key --window " + window + " space");  // welcome
+  pause(400);
+  xdo("key --window " + window + " space");  // task instructions
+  pause(400);
+  const std::string layer = trials[0].question["truth"].dump();
+  xdo("type --window " + window + " " + layer);
+  xdo("key --window " + window + " Return");
+  pause(400);
+  xdo("key --window " + window + " space");  // next task's instructions
+  pause(400);
+  // Click each label met along the boundary at its place on the screen, then Enter.
+  const tlab::study::ScreenLayout layout = tlab::study::makeScreenLayout(640, 480, 160, 160);
+  std::vector<std::string> expected;
+  for (const auto& label : trials[1].question["truth"]) expected.push_back(label.get<std::string>());
+  for (const auto& point : trials[1].question["points"]) {
+    const std::string label = point["label"];
+    if (std::find(expected.begin(), expected.end(), label) == expected.end()) continue;
+    const glm::dvec2 screen = layout.toScreen({point["pixel"][0].get<double>(), point["pixel"][1].get<double>()});
+    xdo("mousemove --window " + window + " " + std::to_string(int(screen.x)) + " " + std::to_string(int(screen.y)));
+    pause(100);
+    xdo("click --window " + window + " 1");
+    pause(200);
+  }
+  xdo("key --window " + window + " Return");
+  pause(400);
+  xdo("key --window " + window + " 4");  // questionnaire
+  pause(400);
+  xdo("key --window " + window + " space");  // goodbye
+  const int code = waitProcess(tlab);
+  ::kill(xvfb, SIGTERM);
+  waitProcess(xvfb);
+  const std::string out = readText((dir / "run.out").string());
+  ASSERT_EQ(code, 0) << out << readText((dir / "run.err").string());
+  EXPECT_NE(out.find("session finished: 2 of 2 trials answered"), std::string::npos) << out;
+  std::printf("%s", out.substr(out.find("timing:")).c_str());
+
+  Database d(db, false);
+  auto responses = d.prepare("SELECT t.task_id, r.raw_answer, r.correct, r.rt_seconds, r.response_ns - r.onset_ns FROM responses r "
+                             "JOIN trials t ON t.id = r.trial ORDER BY t.sequence");
+  ASSERT_TRUE(responses.step());
+  EXPECT_EQ(responses.text(0), "layer");
+  EXPECT_EQ(responses.text(1), layer);
+  EXPECT_EQ(responses.integer(2), 1);
+  EXPECT_GT(responses.real(3), 0.0);
+  EXPECT_NEAR(responses.real(3), responses.integer(4) / 1e9, 1e-6);  // no pause: RT = response − onset
+  ASSERT_TRUE(responses.step());
+  EXPECT_EQ(responses.text(0), "boundary");
+  std::string joined;
+  for (const auto& l : expected) joined += (joined.empty() ? "" : ",") + l;
+  EXPECT_EQ(responses.text(1), joined.empty() ? "none" : joined);
+  EXPECT_EQ(responses.integer(2), 1);
+  EXPECT_FALSE(responses.step());
+
+  auto questionnaire = d.prepare("SELECT item, value FROM questionnaire_answers");
+  ASSERT_TRUE(questionnaire.step());
+  EXPECT_EQ(questionnaire.text(0), "ease");
+  EXPECT_EQ(questionnaire.integer(1), 4);
+  auto participant = d.prepare("SELECT participant, status FROM participants");
+  ASSERT_TRUE(participant.step());
+  EXPECT_EQ(participant.text(0), "P'01; DROP TABLE trials");
+  EXPECT_EQ(participant.text(1), "finished");
+  auto onsets = d.prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
+  int count = 0;
+  while (onsets.step()) {
+    const auto detail = nlohmann::json::parse(onsets.text(0));
+    EXPECT_GT(detail["present_ms"].get<double>(), 0.0);
+    ++count;
+  }
+  EXPECT_EQ(count, 2);
+}
