@@ -18,6 +18,12 @@ void addReportCommand(CLI::App& app);    // cmd_report.cpp
 void addStimuliCommand(CLI::App& app);   // cmd_stimuli.cpp
 void addIntegrateBench(CLI::App& bench); // cmd_stimuli.cpp: tlab bench integrate
 void addTaskCommand(CLI::App& app);      // cmd_task.cpp
+void addDesignCommand(CLI::App& app);    // cmd_design.cpp
+void addRunCommand(CLI::App& app);       // cmd_run.cpp
+void addSimulateCommand(CLI::App& app);  // cmd_simulate.cpp
+void addExportCommand(CLI::App& app);    // cmd_export.cpp
+void addAnalyzeCommand(CLI::App& app);   // cmd_analyze.cpp
+void addDropCommand(CLI::App& app);      // cmd_drop.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
 
 }  // namespace tlab::app

@@ -19,6 +19,12 @@ int main(int argc, char** argv) {
   tlab::app::addReportCommand(app);
   tlab::app::addTaskCommand(app);
   tlab::app::addStimuliCommand(app);
+  tlab::app::addDesignCommand(app);
+  tlab::app::addRunCommand(app);
+  tlab::app::addSimulateCommand(app);
+  tlab::app::addExportCommand(app);
+  tlab::app::addAnalyzeCommand(app);
+  tlab::app::addDropCommand(app);
   tlab::app::addVersionCommand(app);
   try {
     app.parse(argc, argv);

@@ -29,6 +29,17 @@ ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stim
   return l;
 }
 
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight) {
+  constexpr int gap = 12;
+  ScreenLayout l = makeScreenLayout(width, height, 2 * std::max(stimulusWidth, 1) + gap, std::max(stimulusHeight, 1));
+  const int half = (l.stimulus.width - gap * l.stimulus.width / l.stimulusWidth) / 2;
+  l.plan = Rect{l.stimulus.x + l.stimulus.width - half, l.stimulus.y, half, l.stimulus.height};
+  l.stimulus.width = half;
+  l.stimulusWidth = std::max(stimulusWidth, 1);
+  l.stimulusHeight = std::max(stimulusHeight, 1);
+  return l;
+}
+
 std::vector<Button> buttonRow(const Rect& band, const std::vector<std::string>& labels, int buttonWidth, int gap) {
   std::vector<Button> out;
   const int n = int(labels.size());

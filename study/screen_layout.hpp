@@ -3,6 +3,7 @@
 // and countdown), the stimulus fitted into the middle keeping its aspect, the answer band at the
 // bottom with its buttons (letters, Likert points) — and the mapping between stimulus pixels and
 // screen pixels used to draw the marks and to hit-test clicks on labels. Pure geometry.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,7 @@ struct ScreenLayout {
   Rect header;
   Rect stimulus;  // where the stimulus image is drawn
   Rect answer;    // the answer band
+  std::optional<Rect> plan;  // the floor plan beside the stimulus (floor-point answers)
   int stimulusWidth = 0, stimulusHeight = 0;
 
   // Stimulus pixel (continuous, row 0 = top) → screen pixel, and back.
@@ -30,6 +32,8 @@ struct ScreenLayout {
 };
 
 ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight);
+// The stimulus on the left, a floor plan of the same size on the right.
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight);
 
 // A row of equal buttons centred in `band`.
 std::vector<Button> buttonRow(const Rect& band, const std::vector<std::string>& labels, int buttonWidth = 64, int gap = 12);

@@ -103,6 +103,23 @@ const std::vector<tasks::Question>& StimulusLibrary::questions(const PlannedTria
   }
 }
 
+const std::pair<FloorPlan, std::shared_ptr<const Canvas>>& StimulusLibrary::floorPlan(const StimulusKey& key) {
+  const std::string id = key.scene + " | " + std::to_string(key.width) + "x" + std::to_string(key.height);
+  const auto found = plans_.find(id);
+  if (found != plans_.end()) return found->second;
+  const Rendered& r = rendered(key);
+  FloorPlan plan = makeFloorPlan(*r.scene, key.width, key.height);
+  render::RenderRequest request;
+  request.width = key.width;
+  request.height = key.height;
+  request.style = "opaque";
+  request.camera = plan.camera;
+  request.timePasses = false;
+  render::Renderer renderer(*r.scene);
+  auto image = std::make_shared<const Canvas>(renderer.render(request));
+  return plans_.emplace(id, std::make_pair(plan, std::move(image))).first->second;
+}
+
 PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   PreparedTrial p;
   p.question = questions(trial).at(std::size_t(trial.question - 1));
@@ -121,6 +138,11 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   p.stimulusSha256 = found->second.first;
   p.stimulus = found->second.second;
   p.stimulusPath = (std::filesystem::path(directory_) / (p.stimulusSha256 + ".png")).string();
+  if (p.question.answerKind == tasks::AnswerKind::FloorPoint) {
+    const auto& [plan, image] = floorPlan(trial.stimulus);
+    p.floorPlan = plan;
+    p.floorPlanImage = image;
+  }
   return p;
 }
 

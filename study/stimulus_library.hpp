@@ -5,6 +5,7 @@
 // probe marks and labels) written content-addressed as DIR/<sha256>.png. Needs a current GL
 // context (headless or the runner's window).
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/camera.hpp"
 #include "study/canvas.hpp"
+#include "study/floor_plan.hpp"
 #include "study/session_plan.hpp"
 #include "study/text_painter.hpp"
 #include "tasks/question.hpp"
@@ -25,6 +27,9 @@ struct PreparedTrial {
   std::shared_ptr<const Canvas> stimulus;        // as shown: picture + marks
   std::string stimulusPath;
   std::string stimulusSha256;
+  // Floor-point answers (Elmqvist T3): the top-down plan the participant clicks, and its mapping.
+  std::optional<FloorPlan> floorPlan;
+  std::shared_ptr<const Canvas> floorPlanImage;
 };
 
 // The probe points a participant is shown (targets of search tasks are not marked).
@@ -48,13 +53,15 @@ class StimulusLibrary {
   };
   const Rendered& rendered(const StimulusKey& key);
   const std::vector<tasks::Question>& questions(const PlannedTrial& trial);
+  const std::pair<FloorPlan, std::shared_ptr<const Canvas>>& floorPlan(const StimulusKey& key);
 
   std::string directory_;
   std::vector<render::BuiltinSceneSpec> catalog_;
   TextPainter& painter_;
   std::map<std::string, Rendered> pictures_;
   std::map<std::string, std::vector<tasks::Question>> questions_;
-  std::map<std::string, std::pair<std::string, std::shared_ptr<const Canvas>>> written_;  // key → (sha, canvas)
+  std::map<std::string, std::pair<std::string, std::shared_ptr<const Canvas>>> written_;
+  std::map<std::string, std::pair<FloorPlan, std::shared_ptr<const Canvas>>> plans_;  // key → (sha, canvas)
 };
 
 // Where a study database keeps its stimuli: "study.db" → "study-stimuli/".

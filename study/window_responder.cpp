@@ -63,7 +63,7 @@ std::string hint(tasks::AnswerKind kind) {
     case AnswerKind::Label: return "Click the label (or type it and press Enter).";
     case AnswerKind::LabelSet: return "Click labels to select them, then press Enter (Enter with none selected: none).";
     case AnswerKind::Letter: return "Click the letter (or press its key).";
-    case AnswerKind::FloorPoint: return "Type the floor position as x,z and press Enter.";
+    case AnswerKind::FloorPoint: return "Click the place on the floor plan (right), or type x,z and press Enter.";
   }
   return "";
 }
@@ -206,10 +206,16 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   const tasks::Question& q = view.prepared.question;
   const Canvas& stimulus = *view.prepared.stimulus;
   Canvas base = blank();
-  const ScreenLayout layout = makeScreenLayout(base.width(), base.height(), stimulus.width(), stimulus.height());
+  const bool floorAnswer = q.answerKind == tasks::AnswerKind::FloorPoint && view.prepared.floorPlan;
+  const ScreenLayout layout = floorAnswer ? makeScreenLayoutWithPlan(base.width(), base.height(), stimulus.width(), stimulus.height())
+                                          : makeScreenLayout(base.width(), base.height(), stimulus.width(), stimulus.height());
   base.fillRect(layout.header, kBand);
   base.fillRect(layout.answer, kBand);
   base.drawCanvas(stimulus, layout.stimulus);
+  if (floorAnswer) {
+    base.drawCanvas(*view.prepared.floorPlanImage, *layout.plan);
+    base.strokeRect(*layout.plan, kInk, 1);
+  }
   painter_.drawLine(base, q.text, 16, 12, 22.0f, kInk);
   painter_.drawLine(base, hint(q.answerKind), 16, layout.answer.y + 8, 18.0f, kMuted);
   char counter[64];
@@ -231,6 +237,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   std::vector<Button> buttons;
   if (q.answerKind == tasks::AnswerKind::Letter) buttons = buttonRow(layout.answer, {"C", "K", "R", "X", "Y"});
   for (const auto& b : buttons) layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
+  if (floorAnswer) layoutJson["plan"] = {layout.plan->x, layout.plan->y, layout.plan->width, layout.plan->height};
 
   std::string typed, error;
   std::set<std::string> selected;
@@ -337,6 +344,15 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
       } else if (in.kind == Input::Kind::Click) {
         for (const auto& b : buttons)
           if (b.rect.contains(in.x, in.y)) answer = submit(b.label, in.tNs);
+        if (floorAnswer && layout.plan->contains(in.x, in.y)) {
+          const FloorPlan& plan = *view.prepared.floorPlan;
+          const glm::dvec2 planPixel((in.x - layout.plan->x) * plan.width / double(layout.plan->width),
+                                     (in.y - layout.plan->y) * plan.height / double(layout.plan->height));
+          const glm::dvec2 world = plan.worldAt(planPixel);
+          char text[96];
+          std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);
+          answer = submit(text, in.tNs);
+        }
         const int hit = hitPoint(screenPoints, {in.x, in.y});
         if (hit >= 0 && q.answerKind == tasks::AnswerKind::Label) answer = submit(labels[std::size_t(hit)], in.tNs);
         if (hit >= 0 && q.answerKind == tasks::AnswerKind::LabelSet) {

@@ -80,7 +80,7 @@ class Buffer {
 };
 
 // local_size_x of every linear compute pass (buffer/compute_index.glsl).
-constexpr std::size_t kComputeGroupSize = 256;
+constexpr std::size_t kComputeGroupSize = 64;
 
 // Dispatches enough kComputeGroupSize-wide compute groups for `items` invocations as a 2-D grid that stays
 // under the 65535-groups-per-dimension limit; shaders index with buffer/compute_index.glsl.

@@ -1,7 +1,7 @@
 // `tlab run` in a real GLFW window under Xvfb, driven with xdotool as a participant would: Space
 // through the welcome and instruction screens, type the layer number and press Enter, click the
-// labels met along the boundary and press Enter, press 4 in the questionnaire. The database then
-// holds both responses (scored correct), the questionnaire answer, onset events with the
+// labels met along the boundary and press Enter, click the target's place on the floor plan,
+// press 4 in the questionnaire. The database then holds the three responses (scored correct), the questionnaire answer, onset events with the
 // present-to-swap time, and the participant as finished. Prints the timing line of the run.
 #include <gtest/gtest.h>
 
@@ -10,6 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/scene/scene_source.hpp"
+#include "stimuli/scenes/stimulus_scenes.hpp"
+#include "study/floor_plan.hpp"
 #include "study/screen_layout.hpp"
 #include "study/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
@@ -50,7 +53,7 @@ std::vector<StoredTrial> waitForTrials(const std::string& db) {
 TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
   const auto dir = freshDir("window_run");
-  const std::string display = ":" + std::to_string(150 + ::getpid() % 100);
+  const std::string display = ":" + std::to_string(300 + ::getpid() % 100);  // apart from window_cli_test (90..189)
   const std::string db = (dir / "study.db").string();
   const pid_t xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
   pause(800);
@@ -65,7 +68,7 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   }();
   ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
   const auto trials = waitForTrials(db);
-  ASSERT_EQ(trials.size(), 2u) << readText((dir / "run.err").string());
+  ASSERT_EQ(trials.size(), 3u) << readText((dir / "run.err").string());
   pause(500);
 
   xdo("key --window " + window + " space");  // welcome
@@ -73,6 +76,10 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   xdo("key --window " + window + " space");  // task instructions
   pause(400);
   const std::string layer = trials[0].question["truth"].dump();
+  xdo("key --window " + window + " Escape");  // pause: the paused time is left out of the RT
+  pause(500);
+  xdo("key --window " + window + " space");  // resume
+  pause(200);
   xdo("type --window " + window + " " + layer);
   xdo("key --window " + window + " Return");
   pause(400);
@@ -93,6 +100,20 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   }
   xdo("key --window " + window + " Return");
   pause(400);
+  xdo("key --window " + window + " space");  // next task's instructions
+  pause(400);
+  // Click the target's floor position on the plan beside the stimulus.
+  const tlab::study::ScreenLayout planLayout = tlab::study::makeScreenLayoutWithPlan(640, 480, 160, 160);
+  const auto scene = tlab::render::loadScene("builtin:walkthrough?seed=5", tlab::stimuli::allSceneSpecs());
+  const tlab::study::FloorPlan plan = tlab::study::makeFloorPlan(scene, 160, 160);
+  const auto truth = trials[2].question["truth"];
+  const glm::dvec2 planPixel = plan.pixelOf({truth[0].get<double>(), plan.floorY, truth[1].get<double>()});
+  const int clickX = int(planLayout.plan->x + planPixel.x * planLayout.plan->width / 160.0);
+  const int clickY = int(planLayout.plan->y + planPixel.y * planLayout.plan->height / 160.0);
+  xdo("mousemove --window " + window + " " + std::to_string(clickX) + " " + std::to_string(clickY));
+  pause(100);
+  xdo("click --window " + window + " 1");
+  pause(400);
   xdo("key --window " + window + " 4");  // questionnaire
   pause(400);
   xdo("key --window " + window + " space");  // goodbye
@@ -101,7 +122,7 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   waitProcess(xvfb);
   const std::string out = readText((dir / "run.out").string());
   ASSERT_EQ(code, 0) << out << readText((dir / "run.err").string());
-  EXPECT_NE(out.find("session finished: 2 of 2 trials answered"), std::string::npos) << out;
+  EXPECT_NE(out.find("session finished: 3 of 3 trials answered"), std::string::npos) << out;
   std::printf("%s", out.substr(out.find("timing:")).c_str());
 
   Database d(db, false);
@@ -112,13 +133,17 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   EXPECT_EQ(responses.text(1), layer);
   EXPECT_EQ(responses.integer(2), 1);
   EXPECT_GT(responses.real(3), 0.0);
-  EXPECT_NEAR(responses.real(3), responses.integer(4) / 1e9, 1e-6);  // no pause: RT = response − onset
+  EXPECT_LT(responses.real(3), responses.integer(4) / 1e9 - 0.4);  // paused ≥ 0.5 s: not counted
   ASSERT_TRUE(responses.step());
   EXPECT_EQ(responses.text(0), "boundary");
+  EXPECT_NEAR(responses.real(3), responses.integer(4) / 1e9, 1e-6);  // no pause: RT = response − onset
   std::string joined;
   for (const auto& l : expected) joined += (joined.empty() ? "" : ",") + l;
   EXPECT_EQ(responses.text(1), joined.empty() ? "none" : joined);
   EXPECT_EQ(responses.integer(2), 1);
+  ASSERT_TRUE(responses.step());
+  EXPECT_EQ(responses.text(0), "find");
+  EXPECT_EQ(responses.integer(2), 1) << "clicked " << responses.text(1) << ", truth " << truth.dump();
   EXPECT_FALSE(responses.step());
 
   auto questionnaire = d.prepare("SELECT item, value FROM questionnaire_answers");
@@ -136,5 +161,8 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
     EXPECT_GT(detail["present_ms"].get<double>(), 0.0);
     ++count;
   }
-  EXPECT_EQ(count, 2);
+  EXPECT_EQ(count, 3);
+  auto paused = d.prepare("SELECT count(*) FROM events WHERE kind IN ('pause', 'resume')");
+  ASSERT_TRUE(paused.step());
+  EXPECT_EQ(paused.integer(0), 2);
 }
