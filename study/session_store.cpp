@@ -3,7 +3,7 @@
 #include <chrono>
 #include <ctime>
 
-#include "study/sha256.hpp"
+#include "renderer/image/sha256.hpp"
 
 namespace tlab::study {
 
@@ -96,7 +96,7 @@ std::optional<std::int64_t> SessionStore::findExperiment(const std::string& expe
 }
 
 std::int64_t SessionStore::registerExperiment(const Experiment& e, const std::string& tlabVersion) {
-  const std::string hash = sha256Hex(e.text);
+  const std::string hash = render::sha256Hex(e.text);
   Transaction t(db_);
   Statement same = db_.prepare("SELECT id FROM experiments WHERE sha256 = ?1");
   same.bind(1, hash);

@@ -6,7 +6,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
-#include "study/sha256.hpp"
+#include "renderer/image/sha256.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {
@@ -130,7 +130,7 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   if (found == written_.end()) {
     auto canvas = std::make_shared<const Canvas>(markQuestion(*p.picture, p.question, painter_));
     const std::vector<std::uint8_t> png = render::encodePng(canvas->toImage());
-    const std::string sha = sha256Hex(png);
+    const std::string sha = render::sha256Hex(png);
     const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
     if (!std::filesystem::exists(path)) render::writeFileAtomically(path, png);
     found = written_.emplace(id, std::make_pair(sha, std::move(canvas))).first;

@@ -18,7 +18,7 @@
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
 #include "stimuli/sets/progress_bar.hpp"
-#include "stimuli/sets/sha256.hpp"
+#include "renderer/image/sha256.hpp"
 
 namespace tlab::stimuli {
 
@@ -225,7 +225,7 @@ class SetJob {
   RenderedStimulus save(RenderedStimulus s, const render::Image& image) {
     const std::vector<std::uint8_t> png = render::encodePng(image);
     s.image = "images/" + s.id + ".png";
-    s.sha256 = sha256Hex(png);
+    s.sha256 = render::sha256Hex(png);
     render::writeFileAtomically((out_ / s.image).string(), png);
     progress_->advance();
     return s;

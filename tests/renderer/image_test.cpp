@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "renderer/image/image.hpp"
+#include "renderer/image/sha256.hpp"
 
 using namespace tlab::render;
 
@@ -46,4 +47,12 @@ TEST(Image, AtomicWriteLeavesNoPartialFileOnFailure) {
   EXPECT_EQ(std::filesystem::file_size(path), 3u);
   for (const auto& e : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos);
+}
+
+// FIPS 180-4 test vectors (the empty string and "abc").
+TEST(Sha256, MatchesTheStandardTestVectors) {
+  EXPECT_EQ(sha256Hex(std::string_view()), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256Hex(std::string_view("abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  const std::vector<std::uint8_t> bytes = {'a', 'b', 'c'};
+  EXPECT_EQ(sha256Hex(bytes), sha256Hex(std::string_view("abc")));
 }
