@@ -150,17 +150,26 @@ TTestResult pairedTTestFromDifferences(const SampleSummary& d, Alternative alter
   return r;
 }
 
-TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
-                                      Alternative alternative, double confidence) {
+namespace {
+// What the two independent-samples tests share: the checks and the descriptive part of the result.
+TTestResult twoSampleResult(TTestKind kind, const SampleSummary& x, const SampleSummary& y, Alternative alternative,
+                            double confidence) {
   requireAtLeastTwo(x, "the first group");
   requireAtLeastTwo(y, "the second group");
   TTestResult r;
-  r.kind = TTestKind::Student;
+  r.kind = kind;
   r.alternative = alternative;
   r.confidence = confidence;
   r.first = x;
   r.second = y;
   r.meanDiff = x.mean - y.mean;
+  return r;
+}
+}  // namespace
+
+TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
+                                      Alternative alternative, double confidence) {
+  TTestResult r = twoSampleResult(TTestKind::Student, x, y, alternative, confidence);
   r.df = static_cast<double>(x.n + y.n - 2);
   const double sp2 = pooledVariance(x, y);
   r.se = std::sqrt(sp2 * (1.0 / static_cast<double>(x.n) + 1.0 / static_cast<double>(y.n)));
@@ -172,15 +181,7 @@ TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummar
 
 TTestResult welchTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
                                     Alternative alternative, double confidence) {
-  requireAtLeastTwo(x, "the first group");
-  requireAtLeastTwo(y, "the second group");
-  TTestResult r;
-  r.kind = TTestKind::Welch;
-  r.alternative = alternative;
-  r.confidence = confidence;
-  r.first = x;
-  r.second = y;
-  r.meanDiff = x.mean - y.mean;
+  TTestResult r = twoSampleResult(TTestKind::Welch, x, y, alternative, confidence);
   r.se = std::sqrt(x.variance / static_cast<double>(x.n) + y.variance / static_cast<double>(y.n));
   requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant");
   r.df = welchSatterthwaiteDf(x, y);
