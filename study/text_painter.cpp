@@ -5,18 +5,13 @@
 #include <iterator>
 #include <stdexcept>
 
-// A private copy of stb_truetype (static functions): no symbol clashes with other users of stb.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_TRUETYPE_IMPLEMENTATION
-#define STBTT_STATIC
-#include <stb_truetype.h>
-#pragma GCC diagnostic pop
+#include "renderer/image/font_rasterizer.hpp"
 
 namespace tlab::study {
 
 struct TextPainter::FontInfo {
-  stbtt_fontinfo info;
+  explicit FontInfo(const std::string& path) : rasterizer(path) {}
+  render::FontRasterizer rasterizer;
 };
 
 std::u32string decodeUtf8(std::string_view text) {
@@ -38,14 +33,7 @@ std::u32string decodeUtf8(std::string_view text) {
   return out;
 }
 
-TextPainter::TextPainter(const std::string& fontPath) : font_(new FontInfo) {
-  std::ifstream in(fontPath, std::ios::binary);
-  fontData_.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (fontData_.empty() || !stbtt_InitFont(&font_->info, fontData_.data(), stbtt_GetFontOffsetForIndex(fontData_.data(), 0))) {
-    delete font_;
-    throw std::runtime_error(fontPath + ": cannot read the font (install fonts-dejavu-core)");
-  }
-}
+TextPainter::TextPainter(const std::string& fontPath) : font_(new FontInfo(fontPath)) {}
 
 TextPainter::~TextPainter() { delete font_; }
 
@@ -53,16 +41,14 @@ const TextPainter::Glyph& TextPainter::glyph(char32_t codepoint, float pixelHeig
   const auto key = std::make_pair(codepoint, int(pixelHeight * 4));
   const auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
+  render::GlyphBitmap b = font_->rasterizer.glyph(codepoint, pixelHeight);
   Glyph g;
-  const float scale = stbtt_ScaleForPixelHeight(&font_->info, pixelHeight);
-  int advance = 0, lsb = 0;
-  stbtt_GetCodepointHMetrics(&font_->info, int(codepoint), &advance, &lsb);
-  g.advance = int(std::lround(advance * scale));
-  unsigned char* bitmap = stbtt_GetCodepointBitmap(&font_->info, scale, scale, int(codepoint), &g.width, &g.height, &g.xoff, &g.yoff);
-  if (bitmap) {
-    g.bitmap.assign(bitmap, bitmap + std::size_t(g.width) * g.height);
-    stbtt_FreeBitmap(bitmap, nullptr);
-  }
+  g.width = b.width;
+  g.height = b.height;
+  g.xoff = b.xoff;
+  g.yoff = b.yoff;
+  g.advance = int(std::lround(b.advance));
+  g.bitmap = std::move(b.coverage);
   return cache_.emplace(key, std::move(g)).first->second;
 }
 
@@ -75,10 +61,7 @@ int TextPainter::lineWidth(std::string_view text, float pixelHeight) {
 }
 
 int TextPainter::drawLine(Canvas& canvas, std::string_view text, int x, int y, float pixelHeight, Rgba color) {
-  const float scale = stbtt_ScaleForPixelHeight(&font_->info, pixelHeight);
-  int ascent = 0, descent = 0, gap = 0;
-  stbtt_GetFontVMetrics(&font_->info, &ascent, &descent, &gap);
-  const int baseline = y + int(std::lround(ascent * scale));
+  const int baseline = y + int(std::lround(font_->rasterizer.ascent(pixelHeight)));
   int pen = x;
   for (const char32_t cp : decodeUtf8(text)) {
     const Glyph& g = glyph(cp, pixelHeight);

@@ -34,7 +34,6 @@ class TextPainter {
   };
   const Glyph& glyph(char32_t codepoint, float pixelHeight);
 
-  std::vector<unsigned char> fontData_;
   struct FontInfo;
   FontInfo* font_;
   std::map<std::pair<char32_t, int>, Glyph> cache_;

@@ -1,24 +1,19 @@
 #include "stimuli/sets/label_painter.hpp"
 
+#include "renderer/image/font_rasterizer.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
 
-// stb_truetype's implementation lives in this file only (static: no clash with other users).
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-function"
-#define STB_TRUETYPE_IMPLEMENTATION
-#define STBTT_STATIC
-#include <stb_truetype.h>
-#pragma GCC diagnostic pop
 
 namespace tlab::stimuli {
 
 struct LabelPainter::Font {
-  std::vector<unsigned char> bytes;
-  stbtt_fontinfo info{};
+  explicit Font(const std::string& path) : rasterizer(path) {}
+  render::FontRasterizer rasterizer;
 };
 
 namespace {
@@ -68,43 +63,27 @@ std::string LabelPainter::defaultFontPath() {
 #endif
 }
 
-LabelPainter::LabelPainter(const std::string& fontPath) : font_(std::make_unique<Font>()) {
-  std::ifstream in(fontPath, std::ios::binary);
-  font_->bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  if (!in.good() && !in.eof()) throw std::runtime_error(fontPath + ": cannot read the label font");
-  if (font_->bytes.empty() || !stbtt_InitFont(&font_->info, font_->bytes.data(), stbtt_GetFontOffsetForIndex(font_->bytes.data(), 0)))
-    throw std::runtime_error(fontPath + ": cannot load the label font (install fonts-dejavu-core)");
-}
+LabelPainter::LabelPainter(const std::string& fontPath) : font_(std::make_unique<Font>(fontPath)) {}
 
 LabelPainter::~LabelPainter() = default;
 
 double LabelPainter::textWidth(const std::string& text, double pixelHeight) const {
-  const float scale = stbtt_ScaleForPixelHeight(&font_->info, float(pixelHeight));
   double width = 0.0;
-  for (const char ch : text) {
-    int advance = 0, bearing = 0;
-    stbtt_GetCodepointHMetrics(&font_->info, ch, &advance, &bearing);
-    width += advance * scale;
-  }
+  for (const char ch : text) width += font_->rasterizer.advance(char32_t(static_cast<unsigned char>(ch)), float(pixelHeight));
   return width;
 }
 
 void LabelPainter::drawText(render::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const {
-  const float scale = stbtt_ScaleForPixelHeight(&font_->info, float(pixelHeight));
-  int ascent = 0, descent = 0, gap = 0;
-  stbtt_GetFontVMetrics(&font_->info, &ascent, &descent, &gap);
-  const int baseline = int(std::lround(y + ascent * scale));
+  const render::FontRasterizer& font = font_->rasterizer;
+  const int baseline = int(std::lround(y + font.ascent(float(pixelHeight))));
   double penX = x;
   for (const char ch : text) {
-    int w = 0, h = 0, xoff = 0, yoff = 0;
-    unsigned char* bitmap = stbtt_GetCodepointBitmap(&font_->info, scale, scale, ch, &w, &h, &xoff, &yoff);
-    const int left = int(std::lround(penX)) + xoff;
-    for (int row = 0; row < h; ++row)
-      for (int col = 0; col < w; ++col) blend(image, left + col, baseline + yoff + row, color, float(bitmap[row * w + col]) / 255.0f);
-    stbtt_FreeBitmap(bitmap, nullptr);
-    int advance = 0, bearing = 0;
-    stbtt_GetCodepointHMetrics(&font_->info, ch, &advance, &bearing);
-    penX += advance * scale;
+    const render::GlyphBitmap g = font.glyph(char32_t(static_cast<unsigned char>(ch)), float(pixelHeight));
+    const int left = int(std::lround(penX)) + g.xoff;
+    for (int row = 0; row < g.height; ++row)
+      for (int col = 0; col < g.width; ++col)
+        blend(image, left + col, baseline + g.yoff + row, color, float(g.coverage[std::size_t(row) * g.width + col]) / 255.0f);
+    penX += g.advance;
   }
 }
 
