@@ -37,6 +37,23 @@ class CsvParser {
     std::string field;
     State state = State::FieldStart;
     std::size_t quoteLine = line_;
+    bool recordEnded = false;
+    // After a field: a comma starts the next field, a line break ends the record. Returns whether
+    // the character at pos_ was such a delimiter (and consumes it).
+    const auto delimiter = [&](char c) {
+      if (c == ',') {
+        record.fields.push_back(std::move(field));
+        field.clear();
+        state = State::FieldStart;
+        ++pos_;
+        return true;
+      }
+      if (!isLineBreakAt(pos_)) return false;
+      consumeLineBreak();
+      record.fields.push_back(std::move(field));
+      recordEnded = true;
+      return true;
+    };
     while (pos_ < text_.size()) {
       const char c = text_[pos_];
       switch (state) {
@@ -50,17 +67,9 @@ class CsvParser {
           state = State::Unquoted;
           continue;  // re-read c as part of an unquoted field
         case State::Unquoted:
-          if (c == ',') {
-            record.fields.push_back(std::move(field));
-            field.clear();
-            state = State::FieldStart;
-            ++pos_;
+          if (delimiter(c)) {
+            if (recordEnded) return true;
             continue;
-          }
-          if (isLineBreakAt(pos_)) {
-            consumeLineBreak();
-            record.fields.push_back(std::move(field));
-            return true;
           }
           if (c == '"')
             throw AnalysisError(source_ + ":" + std::to_string(line_) +
@@ -86,17 +95,9 @@ class CsvParser {
             ++pos_;
             continue;
           }
-          if (c == ',') {
-            record.fields.push_back(std::move(field));
-            field.clear();
-            state = State::FieldStart;
-            ++pos_;
+          if (delimiter(c)) {
+            if (recordEnded) return true;
             continue;
-          }
-          if (isLineBreakAt(pos_)) {
-            consumeLineBreak();
-            record.fields.push_back(std::move(field));
-            return true;
           }
           throw AnalysisError(source_ + ":" + std::to_string(line_) + ": unexpected character '" +
                               std::string(1, c) + "' after a closing double quote");

@@ -45,10 +45,9 @@ const std::vector<render::BuiltinSceneSpec>& sceneCatalog() {
 render::RenderRequest SceneOptions::request(const render::Scene& scene) const {
   render::RenderRequest r;
   std::tie(r.width, r.height) = parseSize(size);
-  render::findStyle(style);  // fail early on an unknown style
   r.style = style;
   for (const auto& s : settings) render::addSetting(r.settings, s);
-  render::findStyle(style).resolve(r.settings);  // validate --set before any GL work
+  render::findStyle(style).resolve(r.settings);  // unknown style or bad --set: fail before any GL work
   r.fill = render::parseFillMethod(fill);
   r.initialPoolFragments = pool;
   if (!camera.empty()) {

@@ -1,5 +1,7 @@
 #include "renderer/peel/layered_grid_scene.hpp"
 
+#include "renderer/scene/builtin_scenes.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -17,12 +19,7 @@ TriangleMesh makeGridQuad(float h, float z, int cells) {
       m.normals.emplace_back(0.0f, 0.0f, 1.0f);
       m.st.push_back(st);
     }
-  const auto idx = [&](int r, int c) { return static_cast<std::uint32_t>(r * (cells + 1) + c); };
-  for (int r = 0; r < cells; ++r)
-    for (int c = 0; c < cells; ++c) {
-      m.triangles.push_back({idx(r, c), idx(r, c + 1), idx(r + 1, c + 1)});
-      m.triangles.push_back({idx(r, c), idx(r + 1, c + 1), idx(r + 1, c)});
-    }
+  appendGridTriangles(m, cells, cells);
   return m;
 }
 

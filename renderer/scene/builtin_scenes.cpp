@@ -139,8 +139,8 @@ std::string knownNames(const std::vector<BuiltinSceneSpec>& specs) {
   return out;
 }
 
-// Two counter-clockwise triangles per cell of a (rows+1) x (cols+1) vertex grid laid out row by
-// row, as the torus and the cylinder are.
+}  // namespace
+
 void appendGridTriangles(TriangleMesh& m, int rows, int cols) {
   const auto idx = [&](int r, int c) { return static_cast<std::uint32_t>(r * (cols + 1) + c); };
   for (int r = 0; r < rows; ++r)
@@ -149,8 +149,6 @@ void appendGridTriangles(TriangleMesh& m, int rows, int cols) {
       m.triangles.push_back({idx(r, c + 1), idx(r + 1, c + 1), idx(r + 1, c)});
     }
 }
-
-}  // namespace
 
 TriangleMesh makeUvSphere(float radius, int segments, int rings) {
   TriangleMesh m;

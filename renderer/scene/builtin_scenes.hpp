@@ -40,5 +40,8 @@ TriangleMesh makeBox(glm::vec3 halfExtent);
 TriangleMesh makeTorus(float majorRadius, float minorRadius, int majorSegments, int minorSegments);
 TriangleMesh makeOpenCylinder(float radius, float height, int segments, int rings);
 TriangleMesh makeQuad(glm::vec3 center, glm::vec3 axisU, glm::vec3 axisV);
+// Two triangles per cell of a (rows+1) x (cols+1) vertex grid laid out row by row, counter-clockwise
+// when columns run along u and rows along v (the torus, the cylinder, grid quads).
+void appendGridTriangles(TriangleMesh& mesh, int rows, int cols);
 
 }  // namespace tlab::render
