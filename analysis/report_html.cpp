@@ -16,6 +16,7 @@ th, td { border-bottom: 1px solid #ddd; padding: .25em .7em; text-align: left; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 figure { margin: 1em 0; } figcaption { font-size: .9em; color: #555; }
 .error { color: #a00; } .note { color: #555; font-size: .95em; }
+.gallery { display: flex; flex-wrap: wrap; gap: .5em; } .gallery figure { margin: 0; }
 )";
 
 std::string section(const TextTable& table, const std::string& whenEmpty) {
@@ -25,14 +26,30 @@ std::string section(const TextTable& table, const std::string& whenEmpty) {
 
 }  // namespace
 
-std::string renderHtml(const Report& report) {
-  std::string html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
-                     escapeHtml(report.title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n";
-  html += "<h1>" + escapeHtml(report.title) + "</h1>\n";
+namespace {
+
+std::string head(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escapeHtml(title) + "</title>\n<style>" +
+         kStyle + "</style>\n</head>\n<body>\n";
+}
+
+std::string heading(int level, const std::string& text) {
+  const std::string tag = "h" + std::to_string(level);
+  return "<" + tag + ">" + escapeHtml(text) + "</" + tag + ">\n";
+}
+
+std::string image(const std::string& caption, const std::string& mimeType, const std::string& bytes, const std::string& style = "") {
+  return "<figure><img alt=\"" + escapeHtml(caption) + "\"" + (style.empty() ? "" : " style=\"" + style + "\"") + " src=\"data:" +
+         mimeType + ";base64," + base64Encode(bytes) + "\"><figcaption>" + escapeHtml(caption) + "</figcaption></figure>\n";
+}
+
+// One report's sections, its title at heading `level` and each dependent variable one below.
+std::string body(const Report& report, int level) {
+  std::string html = heading(level, report.title);
   html += renderHtmlTable(designTable(report));
   for (const auto& note : report.notes) html += "<p class=\"note\">" + escapeHtml(note) + "</p>\n";
   for (const auto& dv : report.dependentVariables) {
-    html += "<h2>" + escapeHtml(dv.dv) + "</h2>\n";
+    html += heading(level + 1, dv.dv);
     html += renderHtmlTable(descriptivesTable(dv));
     html += section(outlierTable(dv), "Outlier screening: no value beyond the Tukey fences or with |z| > 3.");
     if (dv.anova) {
@@ -42,12 +59,26 @@ std::string renderHtml(const Report& report) {
       html += "<p class=\"error\">ANOVA not computed: " + escapeHtml(dv.anovaError) + "</p>\n";
     }
     html += section(comparisonTable(dv.comparisons), "");
-    for (const auto& figure : dv.figures)
-      html += "<figure><img alt=\"" + escapeHtml(figure.caption) + "\" src=\"data:image/svg+xml;base64," +
-              base64Encode(figure.svg) + "\"><figcaption>" + escapeHtml(figure.caption) + "</figcaption></figure>\n";
+    for (const auto& figure : dv.figures) html += image(figure.caption, "image/svg+xml", figure.svg);
   }
-  html += "</body>\n</html>\n";
   return html;
+}
+
+}  // namespace
+
+std::string renderHtml(const Report& report) { return head(report.title) + body(report, 1) + "</body>\n</html>\n"; }
+
+std::string renderHtml(const ReportPage& page) {
+  std::string html = head(page.title) + heading(1, page.title);
+  for (const auto& p : page.paragraphs) html += "<p>" + escapeHtml(p) + "</p>\n";
+  if (!page.images.empty()) {
+    html += "<div class=\"gallery\">\n";
+    for (const auto& i : page.images) html += image(i.caption, i.mimeType, i.bytes, "width: " + std::to_string(page.imageWidth) + "px");
+    html += "</div>\n";
+  }
+  for (const auto& table : page.tables) html += renderHtmlTable(table);
+  for (const auto& report : page.reports) html += body(report, 2);
+  return html + "</body>\n</html>\n";
 }
 
 }  // namespace tlab::analysis

@@ -11,6 +11,7 @@
 #include "analysis/number_format.hpp"
 #include "analysis/result_json.hpp"
 #include "analysis/text_table.hpp"
+#include "app/analysis_text.hpp"
 #include "app/commands.hpp"
 #include "study/study_analysis.hpp"
 
@@ -51,35 +52,6 @@ nlohmann::json toJson(const study::StudyAnalysis& a) {
   return j;
 }
 
-void printText(const study::StudyAnalysis& a) {
-  std::printf("== %s (%zu subjects, %zu rows)\n", a.spec.title.c_str(), a.report.design.subjects, a.report.design.rows);
-  analysis::TextTable table;
-  table.header = {"dv", "test", "statistic", "p"};
-  for (const auto& dv : a.report.dependentVariables) {
-    if (dv.anova)
-      for (const auto& e : dv.anova->effects)
-        table.rows.push_back({dv.dv, "ANOVA " + e.name,
-                              "F(" + analysis::formatNumber(e.df1) + ", " + analysis::formatNumber(e.df2) + ") = " + analysis::formatNumber(e.F),
-                              analysis::formatP(e.p)});
-    if (!dv.anovaError.empty()) table.rows.push_back({dv.dv, "ANOVA", dv.anovaError, ""});
-    for (const auto& c : dv.comparisons) {
-      if (c.tTest)
-        table.rows.push_back({dv.dv, c.description, "t(" + analysis::formatNumber(c.tTest->df) + ") = " + analysis::formatNumber(c.tTest->t),
-                              analysis::formatP(c.tTest->p)});
-      if (c.wilcoxon) table.rows.push_back({dv.dv, c.factor + " Wilcoxon", "V = " + analysis::formatNumber(c.wilcoxon->V), analysis::formatP(c.wilcoxon->p)});
-      if (c.friedman)
-        table.rows.push_back({dv.dv, c.factor + " Friedman", "chi2 = " + analysis::formatNumber(c.friedman->chiSquared), analysis::formatP(c.friedman->p)});
-      if (c.mannWhitney) table.rows.push_back({dv.dv, c.factor + " Mann-Whitney", "W = " + analysis::formatNumber(c.mannWhitney->W), analysis::formatP(c.mannWhitney->p)});
-      if (!c.error.empty()) table.rows.push_back({dv.dv, c.factor, c.error, ""});
-    }
-  }
-  for (const auto& p : a.pairwise)
-    table.rows.push_back({p.dv, p.factor + ": " + p.first + " vs " + p.second + " (paired)",
-                          "t(" + analysis::formatNumber(p.test.df) + ") = " + analysis::formatNumber(p.test.t), analysis::formatP(p.test.p)});
-  std::fputs(analysis::renderPlainText(table).c_str(), stdout);
-  for (const auto& e : a.errors) std::printf("note: %s\n", e.c_str());
-}
-
 void run(const AnalyzeOptions& o) {
   if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
   study::SessionStore store(o.db, false);
@@ -92,7 +64,7 @@ void run(const AnalyzeOptions& o) {
     std::cout << j.dump(2) << "\n";
     return;
   }
-  for (const auto& a : analyses) printText(a);
+  for (const auto& a : analyses) std::fputs(analysisText(a).c_str(), stdout);
 }
 
 }  // namespace

@@ -25,5 +25,6 @@ void addExportCommand(CLI::App& app);    // cmd_export.cpp
 void addAnalyzeCommand(CLI::App& app);   // cmd_analyze.cpp
 void addDropCommand(CLI::App& app);      // cmd_drop.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
+void addDemoCommand(CLI::App& app);      // cmd_demo.cpp
 
 }  // namespace tlab::app

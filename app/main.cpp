@@ -9,6 +9,7 @@ int main(int argc, char** argv) {
   CLI::App app{"tlab - Transparency Lab: illustrative transparency rendering and perceptual studies"};
   app.require_subcommand(1);
   app.fallthrough(false);
+  tlab::app::addDemoCommand(app);
   tlab::app::addRenderCommand(app);
   tlab::app::addInspectCommand(app);
   tlab::app::addBenchCommand(app);

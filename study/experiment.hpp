@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "study/camera_navigator.hpp"
+
 namespace tlab::study {
 
 enum class FactorKind { Within, Between };
@@ -57,6 +59,9 @@ struct TaskSpec {
   std::map<std::string, std::string> when;   // factor → level; empty: every block
   std::optional<std::string> scene;          // overrides the condition's scene for this task ("{trial}" replaced)
   std::string instructions;
+  // Interactive trials (Elmqvist): the window renders the scene live and the participant orbits
+  // (ABSTRACT) or walks (WALKTHROUGH); simulated observers see the start view.
+  Navigation navigation = Navigation::None;
 };
 
 struct LikertItem {

@@ -198,7 +198,7 @@ std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, c
     const toml::table& t = *tables[i];
     const std::string where = "tasks[" + std::to_string(i + 1) + "]";
     r.checkKeys(t, where, {"id", "task", "trials", "questions", "training_trials", "time_limit", "trial_time_limit", "settings",
-                           "when", "instructions", "scene"});
+                           "when", "instructions", "scene", "navigation"});
     TaskSpec s;
     s.task = r.string(t, "task", where, true);
     s.id = r.string(t, "id", where, false, s.task);
@@ -218,6 +218,17 @@ std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, c
     if (t.get("trial_time_limit")) s.trialTimeLimitSeconds = r.number(t, "trial_time_limit", where, 120.0, 0.5, 86400.0);
     s.instructions = r.string(t, "instructions", where, false);
     if (t.get("scene")) s.scene = r.string(t, "scene", where, true);
+    if (t.get("navigation")) {
+      try {
+        s.navigation = parseNavigation(r.string(t, "navigation", where, true));
+      } catch (const std::invalid_argument& e) {
+        r.fail(t.get("navigation"), where + ".navigation", e.what());
+      }
+      // Marks and labels are drawn on the still picture: only search tasks can move the camera.
+      if (s.navigation != Navigation::None && s.task != "counting" && s.task != "pattern" && s.task != "target-discovery")
+        r.fail(t.get("navigation"), where + ".navigation",
+               "only counting, pattern and target-discovery trials can be explored live (task '" + s.task + "' marks points on the picture)");
+    }
     if (const toml::table* when = r.table(t, "when", where)) {
       for (auto&& [key, value] : *when) {
         const std::string factorName(key.str());

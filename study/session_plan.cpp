@@ -14,6 +14,8 @@ std::string StimulusKey::text() const {
   return t + " | " + camera + " | " + std::to_string(width) + "x" + std::to_string(height);
 }
 
+std::string StimulusKey::viewText() const { return scene + " | " + camera + " | " + std::to_string(width) + "x" + std::to_string(height); }
+
 namespace {
 
 std::string replaceAll(std::string text, const std::string& from, const std::string& to) {
@@ -68,6 +70,7 @@ void appendTrials(const Experiment& e, const Design& design, const TaskSpec& tas
       p.probeSeed = seed;
       p.timeLimitSeconds = task.timeLimitSeconds;
       p.trialTimeLimitSeconds = task.trialTimeLimitSeconds;
+      p.navigation = task.navigation;
       out.push_back(std::move(p));
     }
   }

@@ -25,7 +25,8 @@ struct StimulusKey {
   std::vector<std::string> renderSettings;
   int width = 512;
   int height = 512;
-  std::string text() const;  // a stable one-line description (cache key)
+  std::string text() const;      // a stable one-line description (cache key)
+  std::string viewText() const;  // the same without style and render settings: what the geometry depends on
 };
 
 struct PlannedTrial {
@@ -44,6 +45,7 @@ struct PlannedTrial {
   std::uint64_t probeSeed = 0;
   double timeLimitSeconds = 120.0;
   std::optional<double> trialTimeLimitSeconds;
+  Navigation navigation = Navigation::None;  // interactive trial: live rendering in the window
 };
 
 struct SessionPlan {

@@ -87,7 +87,8 @@ const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& ke
 
 const std::vector<tasks::Question>& StimulusLibrary::questions(const PlannedTrial& trial) {
   const auto settings = effectiveTaskSettings(trial);
-  std::string id = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | " +
+  // Questions depend on the geometry and view only: every style of a scene asks the same ones.
+  std::string id = trial.stimulus.viewText() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | " +
                    std::to_string(trial.questionsInTrial);
   for (const auto& s : settings) id += " " + s;
   const auto found = questions_.find(id);
@@ -123,7 +124,10 @@ const std::pair<FloorPlan, std::shared_ptr<const Canvas>>& StimulusLibrary::floo
 PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   PreparedTrial p;
   p.question = questions(trial).at(std::size_t(trial.question - 1));
-  p.picture = rendered(trial.stimulus).picture;
+  const Rendered& r = rendered(trial.stimulus);
+  p.picture = r.picture;
+  p.scene = r.scene;
+  p.camera = r.camera;
   const std::string id = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | q" +
                          std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
   auto found = written_.find(id);

@@ -24,6 +24,8 @@ namespace tlab::study {
 struct PreparedTrial {
   tasks::Question question;
   std::shared_ptr<const render::Image> picture;  // the rendering without marks (the observer looks here)
+  std::shared_ptr<const render::Scene> scene;    // its scene and camera (interactive trials render live from here)
+  render::Camera camera;
   std::shared_ptr<const Canvas> stimulus;        // as shown: picture + marks
   std::string stimulusPath;
   std::string stimulusSha256;

@@ -1,5 +1,7 @@
 #include "study/window_responder.hpp"
 
+#include "study/live_view.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -32,12 +34,22 @@ void onChar(GLFWwindow* w, unsigned int codepoint) {
   self(w)->push({WindowResponder::Input::Kind::Char, 0, char32_t(codepoint), 0, 0, monotonicNs()});
 }
 void onMouse(GLFWwindow* w, int button, int action, int) {
-  if (button != GLFW_MOUSE_BUTTON_LEFT || action != GLFW_PRESS) return;
+  if (button != GLFW_MOUSE_BUTTON_LEFT) return;
   const std::int64_t t = monotonicNs();
   double x = 0, y = 0;
   glfwGetCursorPos(w, &x, &y);
   const glm::dvec2 p = self(w)->cursorToCanvas(x, y);
-  self(w)->push({WindowResponder::Input::Kind::Click, 0, 0, p.x, p.y, t});
+  if (action == GLFW_PRESS) {
+    self(w)->pressAt(p);
+    self(w)->push({WindowResponder::Input::Kind::Click, 0, 0, p.x, p.y, t});
+  } else if (action == GLFW_RELEASE) {
+    self(w)->release();
+  }
+}
+// While the left button is held, cursor motion arrives as drags (dx, dy in canvas pixels).
+void onCursor(GLFWwindow* w, double x, double y) {
+  const glm::dvec2 p = self(w)->cursorToCanvas(x, y);
+  if (const auto delta = self(w)->dragTo(p)) self(w)->push({WindowResponder::Input::Kind::Drag, 0, 0, delta->x, delta->y, monotonicNs()});
 }
 void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close, 0, 0, 0, 0, monotonicNs()}); }
 
@@ -103,6 +115,7 @@ WindowResponder::WindowResponder(gpu::WindowContext& window, TextPainter& painte
   glfwSetKeyCallback(w, onKey);
   glfwSetCharCallback(w, onChar);
   glfwSetMouseButtonCallback(w, onMouse);
+  glfwSetCursorPosCallback(w, onCursor);
   glfwSetWindowCloseCallback(w, onClose);
   glfwSwapInterval(1);
 }
@@ -112,8 +125,18 @@ WindowResponder::~WindowResponder() {
   glfwSetKeyCallback(w, nullptr);
   glfwSetCharCallback(w, nullptr);
   glfwSetMouseButtonCallback(w, nullptr);
+  glfwSetCursorPosCallback(w, nullptr);
   glfwSetWindowCloseCallback(w, nullptr);
   glfwSetWindowUserPointer(w, nullptr);
+}
+
+void WindowResponder::pressAt(glm::dvec2 p) { dragFrom_ = p; }
+void WindowResponder::release() { dragFrom_.reset(); }
+std::optional<glm::dvec2> WindowResponder::dragTo(glm::dvec2 p) {
+  if (!dragFrom_) return std::nullopt;
+  const glm::dvec2 delta = p - *dragFrom_;
+  dragFrom_ = p;
+  return delta;
 }
 
 glm::dvec2 WindowResponder::cursorToCanvas(double x, double y) const {
@@ -207,6 +230,10 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   const Canvas& stimulus = *view.prepared.stimulus;
   Canvas base = blank();
   const bool floorAnswer = q.answerKind == tasks::AnswerKind::FloorPoint && view.prepared.floorPlan;
+  // Interactive trials render the scene live in the stimulus area (Elmqvist: orbit / walk).
+  std::optional<LiveView> live;
+  if (view.plan.navigation != Navigation::None && view.prepared.scene)
+    live.emplace(view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera);
   const ScreenLayout layout = floorAnswer ? makeScreenLayoutWithPlan(base.width(), base.height(), stimulus.width(), stimulus.height())
                                           : makeScreenLayout(base.width(), base.height(), stimulus.width(), stimulus.height());
   base.fillRect(layout.header, kBand);
@@ -248,6 +275,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   auto elapsed = [&](std::int64_t t) { return (t - onsetNs - pausedNs) / 1e9; };
   auto frame = [&]() {
     Canvas c = base;
+    if (live) c.drawCanvas(live->frame(), layout.stimulus);
     const double left = onsetNs ? view.limitSeconds - elapsed(monotonicNs()) : view.limitSeconds;
     const std::string countdown = formatCountdown(left);
     painter_.drawLine(c, countdown, base.width() - 100, 12, 24.0f, left < 10 ? kWarn : kInk);
@@ -316,7 +344,8 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
         event(in.tNs, "close", "");
         return std::nullopt;
       }
-      if (in.kind == Input::Kind::Key) {
+      const bool arrow = in.key == GLFW_KEY_UP || in.key == GLFW_KEY_DOWN || in.key == GLFW_KEY_LEFT || in.key == GLFW_KEY_RIGHT;
+      if (in.kind == Input::Kind::Key && !(live && arrow)) {
         if (in.key == GLFW_KEY_ESCAPE) {
           const std::int64_t start = monotonicNs();
           if (!pause()) return std::nullopt;
@@ -332,6 +361,17 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
             if (text.empty()) text = "none";
           }
           if (!text.empty()) answer = submit(text, in.tNs);
+        }
+      } else if (in.kind == Input::Kind::Key) {  // an arrow key in a live trial
+        live->navigator().move(in.key == GLFW_KEY_UP ? 1 : in.key == GLFW_KEY_DOWN ? -1 : 0,
+                               in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
+        event(in.tNs, "camera", live->navigator().describe());
+        dirty = true;
+      } else if (in.kind == Input::Kind::Drag) {
+        if (live) {
+          live->navigator().drag(in.x, in.y);
+          event(in.tNs, "camera", live->navigator().describe());
+          dirty = true;
         }
       } else if (in.kind == Input::Kind::Char) {
         const std::string ch = encodeUtf8(in.codepoint);

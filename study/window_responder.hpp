@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,14 +50,18 @@ class WindowResponder final : public Responder {
 
   // Input as the GLFW callbacks deliver it (public for the static callbacks).
   struct Input {
-    enum class Kind { Key, Char, Click, Close } kind = Kind::Key;
+    enum class Kind { Key, Char, Click, Drag, Close } kind = Kind::Key;
     int key = 0;
     char32_t codepoint = 0;
-    double x = 0, y = 0;  // click position in canvas pixels
+    double x = 0, y = 0;  // click position in canvas pixels (Drag: the motion dx, dy)
     std::int64_t tNs = 0;
   };
   void push(Input input) { inputs_.push_back(input); }
   glm::dvec2 cursorToCanvas(double x, double y) const;
+  // Drag tracking for the static callbacks: press starts, motion reports deltas, release ends.
+  void pressAt(glm::dvec2 p);
+  void release();
+  std::optional<glm::dvec2> dragTo(glm::dvec2 p);
 
  private:
   enum class Wait { Continue, Closed };
@@ -71,6 +76,7 @@ class WindowResponder final : public Responder {
   std::deque<Input> inputs_;
   std::vector<ResponderEvent> events_;
   bool closed_ = false;
+  std::optional<glm::dvec2> dragFrom_;
   // timing statistics
   int frames_ = 0;
   double presentSumMs_ = 0.0, presentMaxMs_ = 0.0;

@@ -118,19 +118,16 @@ std::vector<std::optional<double>> GeodesicDistances::edgePathUpperBounds(const 
   return out;
 }
 
-std::vector<std::optional<double>> GeodesicDistances::fromSource(const SurfacePoint& source,
-                                                                 const std::vector<SurfacePoint>& targets) const {
+void GeodesicDistances::requireManifold(const SurfacePoint& source, const std::vector<SurfacePoint>& targets) const {
   for (const auto& p : targets)
     if (!hasTriangle(p.triangle)) throw std::invalid_argument("geodesic distance: point on a non-manifold triangle");
   if (!hasTriangle(source.triangle)) throw std::invalid_argument("geodesic distance: point on a non-manifold triangle");
-  // The patch of faces touching B(a, R), R = the largest upper bound (see the header).
-  const auto bounds = edgePathUpperBounds(source, targets);
-  double radius = 0.0;
-  for (const auto& b : bounds)
-    if (b) radius = std::max(radius, *b);
+}
+
+std::vector<double> GeodesicDistances::onPatch(const SurfacePoint& source, const std::vector<SurfacePoint>& targets, double radius) const {
   const WeldedMesh& w = surface_->welded;
   const glm::dvec3 a = source.position(w);
-  const double reach = radius + surface_->longestEdge;
+  const double reach = radius + surface_->longestEdge;  // a face touching B(a, radius) has a corner within this
   std::vector<bool> selected(w.triangles.size(), false);
   std::size_t count = 0;
   for (std::size_t t = 0; t < w.triangles.size(); ++t) {
@@ -149,14 +146,49 @@ std::vector<std::optional<double>> GeodesicDistances::fromSource(const SurfacePo
   ShortestPath paths(patch.mesh);
   paths.add_source_point(*patch.faceOf[source.triangle], patch.location(source));
   paths.build_sequence_tree();
+  std::vector<double> out;
+  for (const auto& t : targets)
+    out.push_back(patch.faceOf[t.triangle] ? paths.shortest_distance_to_source_points(*patch.faceOf[t.triangle], patch.location(t)).first : -1.0);
+  return out;
+}
+
+std::vector<std::optional<double>> GeodesicDistances::fromSource(const SurfacePoint& source,
+                                                                 const std::vector<SurfacePoint>& targets) const {
+  requireManifold(source, targets);
+  // The patch of faces touching B(a, R), R = the largest upper bound (see the header).
+  const auto bounds = edgePathUpperBounds(source, targets);
+  double radius = 0.0;
+  for (const auto& b : bounds)
+    if (b) radius = std::max(radius, *b);
+  const auto d = onPatch(source, targets, radius);
   std::vector<std::optional<double>> out;
+  for (std::size_t i = 0; i < targets.size(); ++i) out.push_back(bounds[i] && d[i] >= 0.0 ? std::optional<double>(d[i]) : std::nullopt);
+  return out;
+}
+
+std::vector<CappedDistance> GeodesicDistances::fromSourceWithin(const SurfacePoint& source, const std::vector<SurfacePoint>& targets,
+                                                                double cap) const {
+  requireManifold(source, targets);
+  const auto bounds = edgePathUpperBounds(source, targets);
+  double radius = 0.0;
+  for (const auto& b : bounds)
+    if (b) radius = std::max(radius, *b);
+  radius = std::min(radius, cap);
+  const auto d = onPatch(source, targets, radius);
+  const glm::dvec3 a = source.position(surface_->welded);
+  std::vector<CappedDistance> out(targets.size());
   for (std::size_t i = 0; i < targets.size(); ++i) {
-    if (!bounds[i]) {
-      out.push_back(std::nullopt);
-      continue;
+    CappedDistance& c = out[i];
+    c.reachable = bounds[i].has_value();
+    if (!c.reachable) continue;
+    // Every path of length ≤ radius lies on the patch, so a patch distance ≤ radius is exact and
+    // anything else is > radius (and never below the straight line).
+    if (d[i] >= 0.0 && d[i] <= radius) {
+      c.exact = d[i];
+      c.lowerBound = d[i];
+    } else {
+      c.lowerBound = std::max(radius, glm::length(targets[i].position(surface_->welded) - a));
     }
-    const double d = paths.shortest_distance_to_source_points(*patch.faceOf[targets[i].triangle], patch.location(targets[i])).first;
-    out.push_back(d >= 0.0 ? std::optional<double>(d) : std::nullopt);
   }
   return out;
 }

@@ -66,6 +66,9 @@ TEST(ExperimentFile, ErrorsNameFileLineAndField) {
             "bad.toml:3: seed: must be an integer");
   EXPECT_NE(errorOf("id = \"x\"\nparticipants = [\n").find("bad.toml:"), std::string::npos);  // TOML syntax error
   EXPECT_EQ(errorOf("participants = 2\n[[tasks]]\ntask = \"layer-index\"\n").substr(0, 15), "bad.toml:1: id:");
+  EXPECT_EQ(errorOf(kBase + "navigation = \"fly\"\n"), "bad.toml:9: tasks[1].navigation: navigation 'fly': expected none, orbit or walk");
+  EXPECT_NE(errorOf(kBase + "navigation = \"orbit\"\n").find("bad.toml:9: tasks[1].navigation: only counting, pattern and target-discovery"),
+            std::string::npos);
 }
 
 TEST(ExperimentFile, DesignConstraintsAreCheckedAgainstTheFile) {

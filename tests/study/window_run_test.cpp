@@ -166,3 +166,65 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   ASSERT_TRUE(paused.step());
   EXPECT_EQ(paused.integer(0), 2);
 }
+
+// An interactive trial (Elmqvist): the scene is rendered live while the participant orbits it by
+// dragging and zooms with the arrow keys; every camera move is logged as an event, then the typed
+// count is stored and scored.
+TEST(WindowRun, ParticipantOrbitsALiveSceneUnderXvfb) {
+  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
+  const auto dir = freshDir("window_live");
+  const std::string display = ":" + std::to_string(400 + ::getpid() % 100);
+  const std::string db = (dir / "study.db").string();
+  const pid_t xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
+  pause(800);
+  const std::string env = "DISPLAY=" + display;
+  const pid_t tlab = spawnProcess({kTlab, "run", studyData("live.toml"), "--participant", "L1", "--db", db, "--size", "640x480"},
+                                  (dir / "run.out").string(), (dir / "run.err").string(), {env});
+  const auto xdo = [&](const std::string& args) { return runCommand(env + " xdotool " + args); };
+  const std::string window = [&] {
+    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
+    return r.out.substr(0, r.out.find('\n'));
+  }();
+  ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
+  const auto trials = waitForTrials(db);
+  ASSERT_EQ(trials.size(), 1u) << readText((dir / "run.err").string());
+  pause(500);
+  xdo("key --window " + window + " space");  // welcome
+  pause(400);
+  xdo("key --window " + window + " space");  // task instructions
+  pause(600);
+  // Drag across the stimulus: orbit.
+  xdo("mousemove --window " + window + " 320 240");
+  xdo("mousedown --window " + window + " 1");
+  for (int i = 1; i <= 4; ++i) {
+    xdo("mousemove --window " + window + " " + std::to_string(320 + 15 * i) + " " + std::to_string(240 + 5 * i));
+    pause(150);
+  }
+  xdo("mouseup --window " + window + " 1");
+  pause(300);
+  xdo("key --window " + window + " Up");  // zoom in
+  pause(300);
+  xdo("key --window " + window + " Left");  // turn
+  pause(300);
+  const std::string count = trials[0].question["truth"].dump();
+  xdo("type --window " + window + " " + count);
+  xdo("key --window " + window + " Return");
+  pause(500);
+  xdo("key --window " + window + " space");  // goodbye
+  const int code = waitProcess(tlab);
+  ::kill(xvfb, SIGTERM);
+  waitProcess(xvfb);
+  ASSERT_EQ(code, 0) << readText((dir / "run.out").string()) << readText((dir / "run.err").string());
+
+  Database d(db, false);
+  auto response = d.prepare("SELECT raw_answer, correct FROM responses");
+  ASSERT_TRUE(response.step());
+  EXPECT_EQ(response.text(0), count);
+  EXPECT_EQ(response.integer(1), 1);
+  auto cameras = d.prepare("SELECT detail FROM events WHERE kind = 'camera' ORDER BY id");
+  std::vector<std::string> seen;
+  while (cameras.step()) seen.push_back(cameras.text(0));
+  ASSERT_GE(seen.size(), 3u) << "drags and two arrow keys";
+  EXPECT_NE(seen.front(), seen.back());
+  EXPECT_EQ(seen.front().rfind("eye=", 0), 0u) << seen.front();
+}

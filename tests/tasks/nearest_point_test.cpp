@@ -71,6 +71,43 @@ TEST(GeodesicDistances, CylinderMatchesTheUnrolledDistance) {
   }
 }
 
+TEST(GeodesicDistances, CappedDistancesAreExactWithinTheCapAndLowerBoundsBeyond) {
+  // On the unrolled cylinder, distances from one vertex to every other ring/segment vertex: the
+  // capped computation must agree exactly below the cap and never exceed the truth beyond it.
+  const int segments = 32;
+  const render::TriangleMesh source = render::makeOpenCylinder(1.0f, 2.0f, segments, 4);
+  const WeldedMesh mesh = weldMesh(source);
+  const GeodesicDistances geodesics(mesh);
+  const auto vertex = [&](int r, int s) { return glm::dvec3(source.positions[std::size_t(r * (segments + 1) + s)]); };
+  const SurfacePoint a = atVertex(mesh, vertex(0, 3));
+  std::vector<SurfacePoint> targets;
+  for (int r = 0; r <= 4; ++r)
+    for (int s = 0; s < segments; s += 3) targets.push_back(atVertex(mesh, vertex(r, s)));
+  const auto full = geodesics.fromSource(a, targets);
+  const double cap = 1.2;
+  const auto capped = geodesics.fromSourceWithin(a, targets, cap);
+  int exact = 0, bounded = 0;
+  for (std::size_t i = 0; i < targets.size(); ++i) {
+    ASSERT_TRUE(full[i].has_value());
+    ASSERT_TRUE(capped[i].reachable);
+    const double euclidean = glm::length(targets[i].position(mesh) - a.position(mesh));
+    if (*full[i] < cap * (1 - 1e-9)) {
+      ASSERT_TRUE(capped[i].exact.has_value()) << "target " << i << " at " << *full[i];
+    }
+    if (capped[i].exact) {
+      ++exact;
+      EXPECT_NEAR(*capped[i].exact, *full[i], 1e-9 * *full[i] + 1e-12);
+      EXPECT_LE(*capped[i].exact, cap);
+    } else {
+      ++bounded;
+      EXPECT_LE(capped[i].lowerBound, *full[i] * (1 + 1e-12));
+      EXPECT_GE(capped[i].lowerBound, std::max(cap, euclidean) * (1 - 1e-12));
+    }
+  }
+  EXPECT_GT(exact, 3);
+  EXPECT_GT(bounded, 10);
+}
+
 TEST(GeodesicDistances, OtherComponentIsUnreachable) {
   render::TriangleMesh two = render::makeQuad({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
   render::appendMesh(two, render::makeQuad({5, 0, 0}, {1, 0, 0}, {0, 1, 0}));
@@ -116,15 +153,22 @@ TEST(NearestPoint, QuestionsOnTheFoldedStripMeetTheMarginsAndTheTrapShare) {
   for (const auto& q : questions) {
     // Recompute every distance from the printed points and check the rules on them.
     const glm::dvec3 a = q.points.at(0).world;
+    // Exact distances for the nearest (and candidates near A), proven lower bounds for the rest.
     std::vector<double> geo, euc;
+    std::vector<bool> exact;
     for (std::size_t i = 1; i < q.points.size(); ++i) {
-      const auto it = std::find_if(q.measurements.begin(), q.measurements.end(),
-                                   [&](const auto& m) { return m.first == "geodesic:" + q.points[i].label; });
+      const auto named = [&](const std::string& key) {
+        return std::find_if(q.measurements.begin(), q.measurements.end(), [&](const auto& m) { return m.first == key + q.points[i].label; });
+      };
+      auto it = named("geodesic:");
+      exact.push_back(it != q.measurements.end());
+      if (!exact.back()) it = named("geodesic-lower-bound:");
       ASSERT_NE(it, q.measurements.end());
       geo.push_back(it->second);
       euc.push_back(glm::length(q.points[i].world - a));
     }
     const std::size_t g = std::size_t(std::min_element(geo.begin(), geo.end()) - geo.begin());
+    ASSERT_TRUE(exact[g]) << "the nearest candidate's distance must be exact";
     const std::size_t e = std::size_t(std::min_element(euc.begin(), euc.end()) - euc.begin());
     EXPECT_EQ(std::get<std::string>(q.truth), q.points[1 + g].label);
     for (std::size_t i = 0; i < geo.size(); ++i)
