@@ -27,7 +27,7 @@ std::vector<SettingSpec> NearestPointTask::settingSpecs() const {
 
 // How often the exactness radius is doubled before another start point A is tried.
 constexpr int kWidenings = 1;
-constexpr double kWidening = 1.4;
+constexpr double kWidening = 2.0;
 
 bool wantsEuclideanTrap(int k, double share) {
   return std::floor(double(k + 1) * share + 1e-9) > std::floor(double(k) * share + 1e-9);
@@ -100,26 +100,26 @@ std::optional<Choice> chooseCandidates(std::vector<PoolPoint> pool, int count, d
   return std::nullopt;
 }
 
-// The smallest upper bound U(g) of a point g that can head a question: any point without a trap;
-// with one, a g for which some e is Euclidean-nearer by the margin while its surface distance may
-// still exceed g's by it (U(e) ≥ (1 + m)·E(g), the most optimistic case). Infinity when none can.
-double smallestNearestBound(const std::vector<double>& upper, const std::vector<double>& straight, double margin, bool trap) {
-  double best = std::numeric_limits<double>::infinity();
+// The upper bounds U(g) of the points g that can head a question, smallest first: any point
+// without a trap; with one, a g for which some e is Euclidean-nearer by the margin while its
+// surface distance may still exceed g's by it (U(e) ≥ (1 + m)·E(g), the most optimistic case).
+std::vector<double> headBounds(const std::vector<double>& upper, const std::vector<double>& straight, double margin, bool trap) {
+  std::vector<double> heads;
   for (std::size_t g = 0; g < upper.size(); ++g) {
-    if (upper[g] >= best) continue;
     bool ok = !trap;
     for (std::size_t e = 0; e < upper.size() && !ok; ++e)
       ok = e != g && (1.0 + margin) * straight[e] <= straight[g] && upper[e] >= (1.0 + margin) * straight[g];
-    if (ok) best = upper[g];
+    if (ok) heads.push_back(upper[g]);
   }
-  return best;
+  std::sort(heads.begin(), heads.end());
+  return heads;
 }
 
-// The radius up to which distances are computed exactly: (1 + margin) × that smallest bound. The
-// point g with it (and any other within the radius) is then known exactly and can be the nearest;
-// every point beyond the radius is provably ≥ (1 + margin) × its distance, which is all a question
-// needs. The exact algorithm so runs on a small patch around A — its cost grows faster than the
-// patch's area (seen on the toroid: 0.05 s for 1.5 K faces, 14 s for all 52 K).
+// The radius up to which distances are computed exactly: (1 + margin) × the smallest head bound.
+// That head (and any other point within the radius) is then known exactly and can be the nearest; every point beyond the radius is provably ≥ (1 + margin) × their distance, which is
+// all a question needs. The exact algorithm so runs on a small patch around A — its cost grows
+// faster than the patch's area (seen on the toroid: 0.05 s for 1.5 K faces, 14 s for all 52 K).
+constexpr std::size_t kExactHeads = 1;
 
 }  // namespace
 
@@ -201,8 +201,9 @@ std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const
           straight.push_back(glm::length(near[i].position(welded[o]) - aWorld));
         }
       if (targets.size() < std::size_t(count)) continue;
-      const double nearestBound = smallestNearestBound(upper, straight, margin, wantTrap);
-      if (!std::isfinite(nearestBound)) continue;  // no question possible from this A
+      const std::vector<double> heads = headBounds(upper, straight, margin, wantTrap);
+      if (heads.empty()) continue;  // no question possible from this A
+      const double nearestBound = heads[std::min(heads.size(), kExactHeads) - 1];
       // Exact up to the cap; when no question can be formed, widen it once (doubled, at most to the
       // largest bound, where every distance is exact) before trying another A.
       const double widest = (1.0 + margin) * *std::max_element(upper.begin(), upper.end());
