@@ -17,6 +17,7 @@
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/scene/scene_source.hpp"
+#include "renderer/styles/style.hpp"
 
 namespace tlab::app {
 

@@ -75,8 +75,12 @@ TEST(AlphaMask, CircleAndEllipseContainTheTargetAndFallOffMonotonically) {
     const AlphaMask m = buildAlphaMask(square(64, 20, 30), s, 1.0f);
     for (int y = 20; y < 30; ++y)
       for (int x = 20; x < 30; ++x) EXPECT_FLOAT_EQ(m.alphaAt(x, y), 0.4f);
-    float previous = 0.0f;
-    for (int x = 30; x < 64; ++x) {
+    // Along the row: α_T inside the shape, then the border from α_0 (here below α_T, as the
+    // paper advises) rising monotonically to 1.
+    int x = 30;
+    while (x < 64 && m.alphaAt(x, 25) == 0.4f) ++x;
+    EXPECT_FLOAT_EQ(m.alphaAt(x, 25), 0.2f);
+    for (float previous = 0.2f; x < 64; ++x) {
       EXPECT_GE(m.alphaAt(x, 25), previous);
       previous = m.alphaAt(x, 25);
     }
