@@ -20,6 +20,7 @@ TargetCoverage coverTargets(FrameContext& frame, const DynamicSettings& settings
   glUniform1i(program.uniform("uWidth"), buffer.width());
   glUniform1i(program.uniform("uHeight"), buffer.height());
   glUniform1i(program.uniform("uMaxLayers"), settings.maxLayers);
+  glUniform1i(program.uniform("uAllAreTargets"), settings.allAreTargets ? 1 : 0);
   gpu::dispatchLinear(buffer.pixels());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<std::uint32_t> targets(buffer.pixels());
@@ -55,6 +56,7 @@ AlphaMask composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& 
   glUniform1f(program.uniform("uAlphaTarget"), settings.mask.alphaTarget);
   glUniform1i(program.uniform("uSharedStacking"), settings.sharedStacking ? 1 : 0);
   glUniform1i(program.uniform("uMaxLayers"), settings.maxLayers);
+  glUniform1i(program.uniform("uAllAreTargets"), settings.allAreTargets ? 1 : 0);
   // The lens in GL pixels (row 0 = bottom); the settings count from the top left.
   const glm::vec4 lens(settings.lensCentre.x * float(buffer.width()), (1.0f - settings.lensCentre.y) * float(buffer.height()),
                        settings.lensRadius * float(buffer.height()), settings.active ? 1.0f : 0.0f);

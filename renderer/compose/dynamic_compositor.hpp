@@ -19,6 +19,7 @@ struct DynamicSettings {
   float lensRadius = 0.2f;      // fraction of the image height
   int maxLayers = 0;            // Sec. III.6 layer control; 0: unlimited
   bool sharedStacking = true;   // see compose/dynamic_compose.comp
+  bool allAreTargets = false;   // targets: Role::Target, or every object not a distractor/impenetrable
 };
 
 // Composes the frame into frame.image. `drawRanks[o]`: object o's position in the back-to-front

@@ -11,9 +11,10 @@
 // The kept surfaces end up in gSurface[0 .. gSurfaceCount), back to front.
 // Needs buffer/fragment_layout.glsl, buffer/surface_shading.glsl and the sorted-list bindings.
 layout(std430, binding = 12) readonly buffer DrawRank { uint drawRank[]; };
-uniform int uMaxLayers;  // 0: unlimited (R2)
+uniform int uMaxLayers;         // 0: unlimited (R2)
+uniform int uAllAreTargets;     // 1: every object not flagged distractor or impenetrable is a target
 
-const uint kRoleTarget = 4u;  // Role::Target
+const uint kRoleTarget = 4u, kRoleDistractor = 8u, kRoleImpenetrable = 16u;  // Role flags
 #define MAX_SURFACES 64       // distinct objects per pixel; farther ones beyond this are dropped
 
 uint gSurface[MAX_SURFACES];
@@ -22,7 +23,11 @@ bool gTruncated;  // layer control cut the list: gSurface[0] is drawn opaque
 
 uint objectOf(uint f) { return sorted[fragWord(f, TLAB_OFF_IDS)] & 0xFFFFu; }
 float depthOf(uint f) { return uintBitsToFloat(sorted[fragWord(f, OFF_DEPTH)]); }
-bool isTarget(uint f) { return (objects[objectOf(f)].info.x & kRoleTarget) != 0u; }
+bool isTarget(uint f) {
+  uint roles = objects[objectOf(f)].info.x;
+  if (uAllAreTargets != 0) return (roles & (kRoleDistractor | kRoleImpenetrable)) == 0u;
+  return (roles & kRoleTarget) != 0u;
+}
 
 void collectSurfaces(uint base, uint n) {
   uint frag[MAX_SURFACES];

@@ -21,7 +21,7 @@ MaskShape parseMaskShape(const std::string& word);  // outline | circle | ellips
 
 struct AlphaMaskSettings {
   int size = 128;             // cells per side (seed 004 Sec. V.4: 128 × 128)
-  int border = 6;             // n: width of the gradient border in cells
+  int border = 4;             // n: width of the gradient border in cells
   float alphaTarget = 0.35f;  // α_T: opacity of surfaces in front of a target
   float alpha0 = 0.15f;       // α_0: opacity at the inner edge of the border gradient
   MaskShape shape = MaskShape::Outline;

@@ -23,6 +23,7 @@ DynamicSettings settingsFrom(const StyleParams& p) {
   s.lensRadius = float(p.number("lens_radius"));
   s.maxLayers = int(p.number("max_layers"));
   s.sharedStacking = p.is("stacking", "shared");
+  s.allAreTargets = p.is("targets", "all");
   return s;
 }
 
@@ -55,7 +56,7 @@ std::vector<ParamSpec> DynamicStyle::params() const {
                         "passive: uncover every target; active: only inside the lens (Sec. III.5)"),
       ParamSpec::choice("mask", "outline", {"outline", "circle", "ellipse"}, "alpha mask shape (Fig. 2)"),
       ParamSpec::number("mask_size", 128, 8, 2048, "alpha mask resolution, cells per side (Sec. V.4: 128)"),
-      ParamSpec::number("border", 6, 0, 64, "n: width of the gradient border in mask cells (Algs. 2-3)"),
+      ParamSpec::number("border", 4, 0, 64, "n: width of the gradient border in mask cells (Algs. 2-3)"),
       ParamSpec::number("alpha_target", 0.35, 0, 1, "alpha_T: opacity of surfaces in front of a target"),
       ParamSpec::number("alpha_0", 0.15, 0, 1, "alpha_0: opacity where the border gradient starts (rises to 1)"),
       ParamSpec::number("lens_x", 0.5, 0, 1, "active mode: lens centre, fraction of the width from the left"),
@@ -64,6 +65,8 @@ std::vector<ParamSpec> DynamicStyle::params() const {
       ParamSpec::number("max_layers", 0, 0, 64, "layer control: most layers uncovered in front of a target (0: unlimited)"),
       ParamSpec::choice("stacking", "shared", {"shared", "multiply"},
                         "occluders of a target share alpha_T (weight 1-alpha_T at any depth) or each get it (paper)"),
+      ParamSpec::choice("targets", "role", {"role", "all"},
+                        "targets: objects with the target role, or all objects not flagged distractor or impenetrable"),
   };
 }
 
