@@ -52,6 +52,10 @@ vec2 sampleMask(vec2 p) {
 void main() {
   uint pixel = linearInvocation();
   if (pixel >= uint(uWidth * uHeight)) return;
+  if (pixelCount[pixel] == 0u) {
+    outColor[pixel] = vec4(uBackground.rgb, 1.0);
+    return;
+  }
   collectSurfaces(pixelHead[pixel], pixelCount[pixel]);
   vec2 p = vec2(pixel % uint(uWidth), pixel / uint(uWidth)) + 0.5;
   float inLens = uLens.w > 0.5 ? clamp(uLens.z - distance(p, uLens.xy) + 0.5, 0.0, 1.0) : 1.0;

@@ -31,15 +31,24 @@ TargetCoverage coverTargets(FrameContext& frame, const DynamicSettings& settings
 }
 }  // namespace
 
-AlphaMask composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const DynamicSettings& settings) {
-  FragmentBuffer& buffer = *frame.buffer;
-  buffer.bindSorted();
+// Binds what compose/dynamic_surfaces.glsl reads; the returned buffer must outlive the dispatch.
+gpu::Buffer bindSurfaceInputs(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks) {
+  frame.buffer->bindSorted();
   frame.gpuScene.bindObjectTable();
-  const gpu::Buffer ranks(drawRanks.size() * sizeof(std::uint32_t), drawRanks.data());
+  gpu::Buffer ranks(drawRanks.size() * sizeof(std::uint32_t), drawRanks.data());
   ranks.bindBase(GL_SHADER_STORAGE_BUFFER, kBindDrawRank);
+  return ranks;
+}
 
-  const AlphaMask mask =
-      buildAlphaMask(coverTargets(frame, settings), settings.mask, float(buffer.width()) / float(buffer.height()));
+AlphaMask buildDynamicMask(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const DynamicSettings& settings) {
+  const gpu::Buffer ranks = bindSurfaceInputs(frame, drawRanks);
+  return buildAlphaMask(coverTargets(frame, settings), settings.mask, float(frame.width) / float(frame.height));
+}
+
+void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const AlphaMask& mask,
+                    const DynamicSettings& settings) {
+  FragmentBuffer& buffer = *frame.buffer;
+  const gpu::Buffer ranks = bindSurfaceInputs(frame, drawRanks);
   const gpu::Buffer maskAlpha(mask.alpha.size() * sizeof(float), mask.alpha.data());
   const gpu::Buffer maskDepth(mask.depth.size() * sizeof(float), mask.depth.data());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
@@ -65,7 +74,6 @@ AlphaMask composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& 
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   readOutputBuffer(output, frame.image);
   gpu::checkGl("compose/dynamic_compose.comp");
-  return mask;
 }
 
 }  // namespace tlab::render

@@ -22,8 +22,13 @@ struct DynamicSettings {
   bool allAreTargets = false;   // targets: Role::Target, or every object not a distractor/impenetrable
 };
 
-// Composes the frame into frame.image. `drawRanks[o]`: object o's position in the back-to-front
-// group order (ops/group_draw_order). Returns the frame's alpha mask.
-AlphaMask composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const DynamicSettings& settings);
+// The alpha mask of this frame (seed 004, Alg. 2): which pixels targets are drawn on
+// (compose/dynamic_coverage.comp), reduced to the mask grid and grown by the border on the host.
+// `drawRanks[o]`: object o's position in the back-to-front group order (ops/group_draw_order).
+AlphaMask buildDynamicMask(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const DynamicSettings& settings);
+
+// Composes the frame into frame.image with the mask of the same frame.
+void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const AlphaMask& mask,
+                    const DynamicSettings& settings);
 
 }  // namespace tlab::render

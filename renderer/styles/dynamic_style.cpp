@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <stdexcept>
 
 #include "renderer/compose/dynamic_compositor.hpp"
@@ -27,20 +28,48 @@ DynamicSettings settingsFrom(const StyleParams& p) {
   return s;
 }
 
-// Alg. 1 line 1: re-sort the groups back to front for this frame's camera (frame-coherent
-// bubble sort on the Renderer's GroupDrawOrder), then compose.
-class DynamicComposePass final : public RenderPass {
+struct DynamicFrame {
+  DynamicSettings settings;
+  std::vector<std::uint32_t> ranks;
+  AlphaMask mask;
+};
+
+// Alg. 1 line 1: re-sort the groups back to front for this frame's camera (the frame-coherent
+// bubble sort on the Renderer's GroupDrawOrder).
+class GroupOrderPass final : public RenderPass {
  public:
-  explicit DynamicComposePass(DynamicSettings s) : settings_(s) {}
-  std::string name() const override { return "compose"; }
+  explicit GroupOrderPass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "order"; }
   void run(FrameContext& frame) override {
     if (!frame.drawOrder) throw std::logic_error("the dynamic style needs the renderer's group draw order");
     frame.drawOrder->update(frame.camera.eye, frame.camera.target - frame.camera.eye);
-    composeDynamic(frame, frame.drawOrder->objectRanks(), settings_);
+    frame_->ranks = frame.drawOrder->objectRanks();
   }
 
  private:
-  DynamicSettings settings_;
+  std::shared_ptr<DynamicFrame> frame_;
+};
+
+// Alg. 2: the alpha mask from where targets are drawn.
+class AlphaMaskPass final : public RenderPass {
+ public:
+  explicit AlphaMaskPass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "mask"; }
+  void run(FrameContext& frame) override { frame_->mask = buildDynamicMask(frame, frame_->ranks, frame_->settings); }
+
+ private:
+  std::shared_ptr<DynamicFrame> frame_;
+};
+
+// Alg. 1 lines 2-7 and Sec. V.3: the surfaces blended back to front through the mask.
+class DynamicComposePass final : public RenderPass {
+ public:
+  explicit DynamicComposePass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
+  std::string name() const override { return "compose"; }
+  void run(FrameContext& frame) override { composeDynamic(frame, frame_->ranks, frame_->mask, frame_->settings); }
+
+ private:
+  std::shared_ptr<DynamicFrame> frame_;
 };
 
 void requireInteger(const StyleParams& p, const std::string& key) {
@@ -82,8 +111,12 @@ void DynamicStyle::validate(const StyleParams& params) const {
 }
 
 std::vector<std::unique_ptr<RenderPass>> DynamicStyle::passes(const StyleParams& params) const {
+  auto frame = std::make_shared<DynamicFrame>();
+  frame->settings = settingsFrom(params);
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<DynamicComposePass>(settingsFrom(params)));
+  p.push_back(std::make_unique<GroupOrderPass>(frame));
+  p.push_back(std::make_unique<AlphaMaskPass>(frame));
+  p.push_back(std::make_unique<DynamicComposePass>(frame));
   return p;
 }
 
