@@ -18,8 +18,9 @@ uniform int uHeight;
 void main() {
   uint pixel = linearInvocation();
   if (pixel >= uint(uWidth * uHeight)) return;
-  collectSurfaces(pixelHead[pixel], pixelCount[pixel]);
   uint target = 0u;
+  gSurfaceCount = 0;
+  if (pixelCount[pixel] > 0u) collectSurfaces(pixelHead[pixel], pixelCount[pixel]);
   float depth = 0.0;
   for (int k = 0; k < gSurfaceCount && target == 0u; ++k)
     if (isTarget(gSurface[k])) {
