@@ -5,6 +5,7 @@
 
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/gpu/shader_cache.hpp"
+#include "renderer/ops/group_draw_order.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/pipeline/pass_timer.hpp"
@@ -25,6 +26,7 @@ struct FrameContext {
   FragmentBuffer* buffer;  // null for styles without fragment lists
   Image& image;            // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
+  GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
 };
 
 // One pass of a style (VTK render-pass style): a small object with one job.

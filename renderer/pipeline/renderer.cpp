@@ -16,7 +16,7 @@ Camera fitClipPlanes(Camera camera, const BoundingSphere& sphere) {
   return camera;
 }
 
-Renderer::Renderer(Scene scene) : scene_(std::move(scene)), gpuScene_(scene_) {}
+Renderer::Renderer(Scene scene) : scene_(std::move(scene)), gpuScene_(scene_), drawOrder_(scene_) {}
 
 Camera Renderer::resolveCamera(const RenderRequest& request) const {
   if (request.camera) return *request.camera;
@@ -53,7 +53,7 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
     buffer_.reset();
   }
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, buffer_.get(), image, shaders_};
+                     scene_.background, buffer_.get(), image, shaders_, &drawOrder_};
   for (const auto& pass : style.passes(params)) timer.time(pass->name(), [&] { pass->run(frame); });
   gpu::checkGl("rendering style " + style.name());
 

@@ -9,6 +9,7 @@
 
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/image/image.hpp"
+#include "renderer/ops/group_draw_order.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
 
@@ -75,6 +76,7 @@ class Renderer {
   GpuScene gpuScene_;
   gpu::ShaderCache shaders_;
   std::unique_ptr<FragmentBuffer> buffer_;
+  GroupDrawOrder drawOrder_;  // state across successive frames (seed 004, Alg. 1 line 1)
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.

@@ -78,10 +78,10 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
       appendWall(walls, corner + glm::vec2(0, s), s, true, h, j + 1 < plan.rows() && plan.doorSouth(i, j));
     }
   scene.objects.push_back(structure("floor", render::makeQuad({0.5f * width, 0, 0.5f * depth}, {0, 0, 0.5f * depth}, {0.5f * width, 0, 0}),
-                                    {0.85f, 0.82f, 0.75f, 1}, render::Role::Opaque));
-  scene.objects.push_back(structure("walls", std::move(walls), {0.8f, 0.8f, 0.85f, 1}, render::Role::Transparent));
+                                    {0.85f, 0.82f, 0.75f, 1}, render::Role::Opaque | render::Role::Distractor | render::Role::Impenetrable));
+  scene.objects.push_back(structure("walls", std::move(walls), {0.8f, 0.8f, 0.85f, 1}, render::Role::Transparent | render::Role::Distractor));
   scene.objects.push_back(structure("ceiling", render::makeQuad({0.5f * width, h, 0.5f * depth}, {0.5f * width, 0, 0}, {0, 0, 0.5f * depth}),
-                                    {0.9f, 0.9f, 0.95f, 1}, render::Role::Transparent));
+                                    {0.9f, 0.9f, 0.95f, 1}, render::Role::Transparent | render::Role::Distractor));
   // Objects in distinct rooms: a partial Fisher–Yates shuffle of the rooms.
   render::SeededRandom random(p.seed * 7919u + 13u);
   const std::vector<std::string> kinds = chooseKinds(random, p);

@@ -3,6 +3,9 @@
 // walls (doorways cut out), floor and ceiling, and 50 objects in distinct rooms — one unique
 // trophy (Role::Target, the T3 target), a counted kind (T4, "chair" by default) appearing
 // 6–10 times, and the other kinds at least twice each. Names are "<kind>-<n>".
+// The structure is Role::Distractor (walls and ceiling may be see-through, dynamic style with
+// targets=all uncovers every placed object as in the paper); the floor is also Role::Impenetrable
+// (Sec. V.2: no target is ever behind it).
 #include <cstdint>
 #include <optional>
 #include <string>

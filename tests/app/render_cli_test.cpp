@@ -103,3 +103,16 @@ TEST(RenderCli, EverySubcommandHasHelp) {
     EXPECT_NE(r.out.find("--"), std::string::npos) << sub;
   }
 }
+
+TEST(RenderCli, DynamicStyleRendersTheAbstractWorldAndValidatesItsParameters) {
+  const auto dir = freshDir("render_dynamic");
+  const auto png = (dir / "a.png").string(), stats = (dir / "s.json").string();
+  const auto r = runCommand(kTlab + " render 'builtin:abstract?seed=3' --style dynamic --set mask=ellipse --set max_layers=2 " +
+                            "--size 96x72 -o " + png + " --stats-json " + stats);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(pngSize(png), std::make_pair(96, 72));
+  EXPECT_EQ(nlohmann::json::parse(readText(stats))["passes_run"],
+            nlohmann::json::array({"fill", "sort", "order", "mask", "compose"}));
+  expectOneLineError(runCommand(kTlab + " render builtin:sphere --style dynamic --set border=2.5 -o " + png), "border must be a whole number");
+  expectOneLineError(runCommand(kTlab + " render builtin:sphere --style dynamic --set mode=lens -o " + png), "mode");
+}

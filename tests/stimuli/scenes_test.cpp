@@ -129,6 +129,11 @@ TEST(WalkthroughScene, HasFiftyObjectsOneUniqueTargetAndACountedKind) {
   EXPECT_EQ(scene.objects.size(), 53u);  // floor, walls, ceiling + 50 objects
   EXPECT_EQ(scene.objects[1].name, "walls");
   EXPECT_EQ(targets, 1u);
+  // Dynamic transparency roles: the structure is distractor, the floor also impenetrable.
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_TRUE(render::hasRole(scene.objects[i].roles, render::Role::Distractor));
+  EXPECT_TRUE(render::hasRole(scene.objects[0].roles, render::Role::Impenetrable));
+  for (std::size_t i = 3; i < scene.objects.size(); ++i)
+    EXPECT_FALSE(render::hasRole(scene.objects[i].roles, render::Role::Distractor | render::Role::Impenetrable));
   EXPECT_EQ(kinds["trophy"], 1);
   EXPECT_GE(kinds["chair"], 6);
   EXPECT_LE(kinds["chair"], 10);
