@@ -1,5 +1,6 @@
 #include "study/live_view.hpp"
 
+#include "renderer/styles/dynamic_style.hpp"
 #include "renderer/styles/style_params.hpp"
 
 namespace tlab::study {
@@ -19,6 +20,16 @@ LiveView::LiveView(std::shared_ptr<const render::Scene> scene, const StimulusKey
   request_.style = stimulus.style;
   for (const auto& s : stimulus.renderSettings) render::addSetting(request_.settings, s);
   request_.timePasses = false;
+  const auto mode = request_.settings.find("mode");
+  lens_ = request_.style == "dynamic" && mode != request_.settings.end() && mode->second == "active";
+  if (const auto r = request_.settings.find("lens_radius"); lens_ && r != request_.settings.end()) lensRadius_ = std::stof(r->second);
+}
+
+bool LiveView::pointAt(glm::vec2 fraction) {
+  if (!lens_) return false;
+  render::setDynamicLens(request_.settings, glm::clamp(fraction, glm::vec2(0.0f), glm::vec2(1.0f)), lensRadius_);
+  last_.reset();  // the lens moved: render again
+  return true;
 }
 
 const Canvas& LiveView::frame() {

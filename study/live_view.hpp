@@ -17,6 +17,10 @@ class LiveView {
   LiveView(std::shared_ptr<const render::Scene> scene, const StimulusKey& stimulus, Navigation navigation, const render::Camera& start);
 
   CameraNavigator& navigator() { return navigator_; }
+  // The cursor over the picture, in fractions of it ((0, 0) = top left): with the dynamic style in
+  // active mode (Elmqvist Sec. V), its lens follows the cursor.
+  // Returns whether the picture changes.
+  bool pointAt(glm::vec2 fraction);
   // The picture from the navigator's current camera.
   const Canvas& frame();
 
@@ -27,6 +31,8 @@ class LiveView {
   CameraNavigator navigator_;
   std::optional<Canvas> last_;
   std::string lastCamera_;
+  bool lens_ = false;         // the style's lens follows the cursor
+  float lensRadius_ = 0.2f;
 };
 
 }  // namespace tlab::study

@@ -49,6 +49,7 @@ void onMouse(GLFWwindow* w, int button, int action, int) {
 // While the left button is held, cursor motion arrives as drags (dx, dy in canvas pixels).
 void onCursor(GLFWwindow* w, double x, double y) {
   const glm::dvec2 p = self(w)->cursorToCanvas(x, y);
+  self(w)->push({WindowResponder::Input::Kind::Move, 0, 0, p.x, p.y, monotonicNs()});
   if (const auto delta = self(w)->dragTo(p)) self(w)->push({WindowResponder::Input::Kind::Drag, 0, 0, delta->x, delta->y, monotonicNs()});
 }
 void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close, 0, 0, 0, 0, monotonicNs()}); }
@@ -367,6 +368,10 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
                                in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
         event(in.tNs, "camera", live->navigator().describe());
         dirty = true;
+      } else if (in.kind == Input::Kind::Move) {
+        if (live && layout.stimulus.contains(in.x, in.y))
+          dirty = live->pointAt({float((in.x - layout.stimulus.x) / layout.stimulus.width),
+                                 float((in.y - layout.stimulus.y) / layout.stimulus.height)}) || dirty;
       } else if (in.kind == Input::Kind::Drag) {
         if (live) {
           live->navigator().drag(in.x, in.y);

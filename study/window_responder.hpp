@@ -50,10 +50,10 @@ class WindowResponder final : public Responder {
 
   // Input as the GLFW callbacks deliver it (public for the static callbacks).
   struct Input {
-    enum class Kind { Key, Char, Click, Drag, Close } kind = Kind::Key;
+    enum class Kind { Key, Char, Click, Drag, Move, Close } kind = Kind::Key;
     int key = 0;
     char32_t codepoint = 0;
-    double x = 0, y = 0;  // click position in canvas pixels (Drag: the motion dx, dy)
+    double x = 0, y = 0;  // click/cursor position in canvas pixels (Drag: the motion dx, dy)
     std::int64_t tNs = 0;
   };
   void push(Input input) { inputs_.push_back(input); }

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <sstream>
+
+#include "study/counterbalancing.hpp"
 #include "study/example_experiments.hpp"
 #include "study/experiment_file.hpp"
 
@@ -33,6 +37,23 @@ TEST(StudyDemo, ElmqvistTasksAreInteractive) {
   for (const auto& t : e.tasks) EXPECT_NE(t.navigation, Navigation::None) << t.id;
   EXPECT_EQ(e.task("T1")->navigation, Navigation::Orbit);
   EXPECT_EQ(e.task("T3")->navigation, Navigation::Walk);
+}
+
+// The annotated experiment file in the README is a working one.
+TEST(StudyDemo, ReadmeExperimentExampleParses) {
+  std::ifstream in(std::string(TLAB_SOURCE_DIR) + "/README.md");
+  std::stringstream text;
+  text << in.rdbuf();
+  const std::string readme = text.str();
+  const auto start = readme.find("```toml\n");
+  ASSERT_NE(start, std::string::npos);
+  const auto end = readme.find("```", start + 8);
+  const std::string toml = readme.substr(start + 8, end - start - 8);
+  const Experiment e = parseExperiment(toml, "README.md");
+  EXPECT_EQ(e.id, "mystudy");
+  EXPECT_EQ(e.factors.size(), 2u);
+  EXPECT_EQ(e.tasks.at(0).questions, 10);
+  EXPECT_NO_THROW(makeDesign(e));
 }
 
 }  // namespace
