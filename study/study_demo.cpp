@@ -124,7 +124,7 @@ analysis::TextTable summaryTable(SessionStore& store, const StoredExperiment& st
   taskOrder.push_back("all tasks");
   analysis::TextTable out;
   out.caption = (binary ? "Percentage " : "Mean ") + dv + " by task and " + (factor.empty() ? "condition" : factor) +
-                " (records, missing answers count as wrong)";
+                (binary ? " (test records; missing answers count as wrong)" : " (test records with a value)");
   out.header = {factor.empty() ? "condition" : factor};
   for (const auto& t : taskOrder) out.header.push_back(t);
   for (const auto& level : levelOrder) {
