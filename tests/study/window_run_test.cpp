@@ -48,27 +48,47 @@ std::vector<StoredTrial> waitForTrials(const std::string& db) {
   return {};
 }
 
+// `tlab run EXPERIMENT` for one participant on its own Xvfb display (apart from window_cli_test's
+// 90..189), with xdotool driving its window.
+struct WindowSession {
+  std::filesystem::path dir;
+  std::string db, env, window;
+  pid_t xvfb = -1, tlab = -1;
+
+  WindowSession(const std::string& name, int displayBase, const std::string& experiment, const std::string& participant)
+      : dir(freshDir(name)), db((dir / "study.db").string()) {
+    const std::string display = ":" + std::to_string(displayBase + ::getpid() % 100);
+    xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
+    pause(800);
+    env = "DISPLAY=" + display;
+    tlab = spawnProcess({kTlab, "run", studyData(experiment), "--participant", participant, "--db", db, "--size", "640x480"},
+                        (dir / "run.out").string(), (dir / "run.err").string(), {env});
+    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
+    window = r.out.substr(0, r.out.find('\n'));
+  }
+  CommandResult xdo(const std::string& args) const { return runCommand(env + " xdotool " + args); }
+  // Waits for tlab to end, stops Xvfb; tlab's exit code.
+  int finish() {
+    const int code = waitProcess(tlab);
+    ::kill(xvfb, SIGTERM);
+    waitProcess(xvfb);
+    return code;
+  }
+  std::string out() const { return readText((dir / "run.out").string()); }
+  std::string err() const { return readText((dir / "run.err").string()); }
+};
+
 }  // namespace
 
 TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
-  const auto dir = freshDir("window_run");
-  const std::string display = ":" + std::to_string(300 + ::getpid() % 100);  // apart from window_cli_test (90..189)
-  const std::string db = (dir / "study.db").string();
-  const pid_t xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
-  pause(800);
-  const std::string env = "DISPLAY=" + display;
-  const pid_t tlab = spawnProcess({kTlab, "run", studyData("window.toml"), "--participant", "P'01; DROP TABLE trials", "--db", db,
-                                   "--size", "640x480"},
-                                  (dir / "run.out").string(), (dir / "run.err").string(), {env});
-  const auto xdo = [&](const std::string& args) { return runCommand(env + " xdotool " + args); };
-  const std::string window = [&] {
-    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
-    return r.out.substr(0, r.out.find('\n'));
-  }();
-  ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
+  WindowSession session("window_run", 300, "window.toml", "P'01; DROP TABLE trials");
+  const std::string& db = session.db;
+  const std::string& window = session.window;
+  const auto xdo = [&](const std::string& args) { return session.xdo(args); };
+  ASSERT_FALSE(window.empty()) << session.err();
   const auto trials = waitForTrials(db);
-  ASSERT_EQ(trials.size(), 3u) << readText((dir / "run.err").string());
+  ASSERT_EQ(trials.size(), 3u) << session.err();
   pause(500);
 
   xdo("key --window " + window + " space");  // welcome
@@ -117,11 +137,9 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   xdo("key --window " + window + " 4");  // questionnaire
   pause(400);
   xdo("key --window " + window + " space");  // goodbye
-  const int code = waitProcess(tlab);
-  ::kill(xvfb, SIGTERM);
-  waitProcess(xvfb);
-  const std::string out = readText((dir / "run.out").string());
-  ASSERT_EQ(code, 0) << out << readText((dir / "run.err").string());
+  const int code = session.finish();
+  const std::string out = session.out();
+  ASSERT_EQ(code, 0) << out << session.err();
   EXPECT_NE(out.find("session finished: 3 of 3 trials answered"), std::string::npos) << out;
   std::printf("%s", out.substr(out.find("timing:")).c_str());
 
@@ -172,22 +190,13 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
 // count is stored and scored.
 TEST(WindowRun, ParticipantOrbitsALiveSceneUnderXvfb) {
   if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
-  const auto dir = freshDir("window_live");
-  const std::string display = ":" + std::to_string(400 + ::getpid() % 100);
-  const std::string db = (dir / "study.db").string();
-  const pid_t xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
-  pause(800);
-  const std::string env = "DISPLAY=" + display;
-  const pid_t tlab = spawnProcess({kTlab, "run", studyData("live.toml"), "--participant", "L1", "--db", db, "--size", "640x480"},
-                                  (dir / "run.out").string(), (dir / "run.err").string(), {env});
-  const auto xdo = [&](const std::string& args) { return runCommand(env + " xdotool " + args); };
-  const std::string window = [&] {
-    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
-    return r.out.substr(0, r.out.find('\n'));
-  }();
-  ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
+  WindowSession session("window_live", 400, "live.toml", "L1");
+  const std::string& db = session.db;
+  const std::string& window = session.window;
+  const auto xdo = [&](const std::string& args) { return session.xdo(args); };
+  ASSERT_FALSE(window.empty()) << session.err();
   const auto trials = waitForTrials(db);
-  ASSERT_EQ(trials.size(), 1u) << readText((dir / "run.err").string());
+  ASSERT_EQ(trials.size(), 1u) << session.err();
   pause(500);
   xdo("key --window " + window + " space");  // welcome
   pause(400);
@@ -211,10 +220,8 @@ TEST(WindowRun, ParticipantOrbitsALiveSceneUnderXvfb) {
   xdo("key --window " + window + " Return");
   pause(500);
   xdo("key --window " + window + " space");  // goodbye
-  const int code = waitProcess(tlab);
-  ::kill(xvfb, SIGTERM);
-  waitProcess(xvfb);
-  ASSERT_EQ(code, 0) << readText((dir / "run.out").string()) << readText((dir / "run.err").string());
+  const int code = session.finish();
+  ASSERT_EQ(code, 0) << session.out() << session.err();
 
   Database d(db, false);
   auto response = d.prepare("SELECT raw_answer, correct FROM responses");

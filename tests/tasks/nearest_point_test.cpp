@@ -44,15 +44,24 @@ TEST(GeodesicDistances, FoldedStripPointAcrossTheFoldIsEuclideanNearButGeodesicF
   EXPECT_GT(*d[0], *d[1]);
 }
 
+// An open polygonal cylinder (32 segments, 4 rings of quads), its welded mesh and geodesics.
+struct TestCylinder {
+  static constexpr int segments = 32;
+  render::TriangleMesh source = render::makeOpenCylinder(1.0f, 2.0f, segments, 4);
+  WeldedMesh mesh = weldMesh(source);
+  GeodesicDistances geodesics{mesh};
+  // Ring r, segment s of the source mesh (before welding), as used by makeOpenCylinder.
+  glm::dvec3 vertex(int r, int s) const { return glm::dvec3(source.positions[std::size_t(r * (segments + 1) + s)]); }
+};
+
 TEST(GeodesicDistances, CylinderMatchesTheUnrolledDistance) {
   // The polygonal cylinder's quads are planar rectangles, so it develops onto a flat strip of
   // width segments × chord: the geodesic between two vertices is √((k · chord)² + Δy²).
-  const int segments = 32;
-  const render::TriangleMesh source = render::makeOpenCylinder(1.0f, 2.0f, segments, 4);
-  const WeldedMesh mesh = weldMesh(source);
-  const GeodesicDistances geodesics(mesh);
-  // Ring r, segment s of the source mesh (before welding), as used by makeOpenCylinder.
-  const auto vertex = [&](int r, int s) { return glm::dvec3(source.positions[std::size_t(r * (segments + 1) + s)]); };
+  const TestCylinder cylinder;
+  const int segments = TestCylinder::segments;
+  const WeldedMesh& mesh = cylinder.mesh;
+  const GeodesicDistances& geodesics = cylinder.geodesics;
+  const auto vertex = [&](int r, int s) { return cylinder.vertex(r, s); };
   const SurfacePoint a = atVertex(mesh, vertex(0, 3));
   struct Case { int r, s; };
   for (const Case c : {Case{4, 3}, Case{2, 9}, Case{4, 14}, Case{1, 19}, Case{3, 30}, Case{0, 10}}) {
@@ -74,15 +83,13 @@ TEST(GeodesicDistances, CylinderMatchesTheUnrolledDistance) {
 TEST(GeodesicDistances, CappedDistancesAreExactWithinTheCapAndLowerBoundsBeyond) {
   // On the unrolled cylinder, distances from one vertex to every other ring/segment vertex: the
   // capped computation must agree exactly below the cap and never exceed the truth beyond it.
-  const int segments = 32;
-  const render::TriangleMesh source = render::makeOpenCylinder(1.0f, 2.0f, segments, 4);
-  const WeldedMesh mesh = weldMesh(source);
-  const GeodesicDistances geodesics(mesh);
-  const auto vertex = [&](int r, int s) { return glm::dvec3(source.positions[std::size_t(r * (segments + 1) + s)]); };
-  const SurfacePoint a = atVertex(mesh, vertex(0, 3));
+  const TestCylinder cylinder;
+  const WeldedMesh& mesh = cylinder.mesh;
+  const GeodesicDistances& geodesics = cylinder.geodesics;
+  const SurfacePoint a = atVertex(mesh, cylinder.vertex(0, 3));
   std::vector<SurfacePoint> targets;
   for (int r = 0; r <= 4; ++r)
-    for (int s = 0; s < segments; s += 3) targets.push_back(atVertex(mesh, vertex(r, s)));
+    for (int s = 0; s < TestCylinder::segments; s += 3) targets.push_back(atVertex(mesh, cylinder.vertex(r, s)));
   const auto full = geodesics.fromSource(a, targets);
   const double cap = 1.2;
   const auto capped = geodesics.fromSourceWithin(a, targets, cap);
