@@ -176,6 +176,7 @@ void addBenchCommand(CLI::App& app) {
   render->callback([o] { runBenchRender(*o); });
   addDiffusionBench(*bench);
   addPeelBench(*bench);
+  addBucketBench(*bench);
   addIntegrateBench(*bench);
 }
 

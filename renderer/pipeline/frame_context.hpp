@@ -13,6 +13,8 @@
 
 namespace tlab::render {
 
+class BucketedKBuffer;
+
 struct FrameContext {
   const Scene& scene;
   const GpuScene& gpuScene;
@@ -25,6 +27,7 @@ struct FrameContext {
   FragmentBuffer* buffer;  // null for styles without fragment lists
   Image& image;            // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
+  BucketedKBuffer* kbuffer = nullptr;  // the bucketed k-buffer, for styles that fill with it
 };
 
 // One pass of a style (VTK render-pass style): a small object with one job.

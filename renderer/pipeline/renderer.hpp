@@ -9,6 +9,7 @@
 
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/image/image.hpp"
+#include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
 
@@ -69,12 +70,15 @@ class Renderer {
   // row 0 = top). Both need a style with fragment lists.
   std::vector<std::uint16_t> layerCounts() const;
   std::vector<FragmentRecord> fragmentsAt(int x, int y) const;
+  // After render() with a style that fills with the bucketed k-buffer: that buffer, else null.
+  const BucketedKBuffer* kBuffer() const { return kbuffer_.get(); }
 
  private:
   Scene scene_;
   GpuScene gpuScene_;
   gpu::ShaderCache shaders_;
   std::unique_ptr<FragmentBuffer> buffer_;
+  std::unique_ptr<BucketedKBuffer> kbuffer_;
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.
