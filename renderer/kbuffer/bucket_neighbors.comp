@@ -17,56 +17,43 @@ layout(std430, binding = BIND_KB_LINKS) writeonly buffer Links { uint links[]; }
 uniform int uWidth;
 uniform int uHeight;
 
-// This pixel's fragments, read once: shape-first keys, depths and view-facing normals.
-uint ownKey[TLAB_K];
-float ownDepth[TLAB_K];
-vec3 ownNormal[TLAB_K];
-
 // seed 002, Sec. 5.1: εn = 1 − n_i·n_j, εz = |z_i − z_j|², ε = εn + εz.
 float continuity(vec3 ni, float zi, vec3 nj, float zj) {
   float dz = zi - zj;
   return (1.0 - dot(ni, nj)) + dz * dz;
 }
 
-// The best candidate (global slot) for a fragment (shape, n, z) among the fragments of that
-// shape in the adjacent pixel whose slots start at qBase: memory reads of Z and D.
-uint bestInNeighbor(uint shape, vec3 n, float depth, uint qBase) {
+// The range of slots to scan for a fragment of `shape` in the pixel whose slots start at
+// `base`: the shape's bucket, or (brute force) the whole list. Empty when there is no bucket.
+uvec2 candidateRange(uint base, uint shape) {
 #ifdef TLAB_BRUTE_FORCE
-  uint lo = qBase, hi = qBase + uint(TLAB_K);
+  return uvec2(base, base + uint(TLAB_K));
 #else
-  uint bucket = findBucket(qBase, shape);
-  if (bucket == KB_EMPTY) return KB_NO_NEIGHBOR;
-  uint lo = qBase + bucketFirst(bucket), hi = qBase + bucketLast(bucket) + 1u;
+  uint bucket = findBucket(base, shape);
+  if (bucket == KB_EMPTY) return uvec2(base, base);
+  return uvec2(base + bucketFirst(bucket), base + bucketLast(bucket) + 1u);
 #endif
+}
+
+// The best candidate (global slot) for a fragment (shape, n, z) in `range`, read from Z and D
+// as the illustration buffer reads its lists; its normal and depth are returned too.
+uint bestCandidate(uint shape, vec3 n, float depth, uvec2 range, out vec3 bestNormal, out float bestDepth) {
   uint best = KB_NO_NEIGHBOR;
   float bestEps = 1.0 / 0.0;
-  for (uint j = lo; j < hi; ++j) {
+  for (uint j = range.x; j < range.y; ++j) {
     uint key = z[j];
 #ifdef TLAB_BRUTE_FORCE
     if (key == KB_EMPTY) break;
-    if (shapeOfShapeFirst(key) != shape) continue;
+    if (shapeOfShapeFirst(key) != shape) continue;  // shape filter: ε = ∞ across shapes
 #endif
-    float e = continuity(n, depth, decodeNormal(data[j].y), depthOfShapeFirst(key));
+    vec3 nj = decodeNormal(data[j].y);
+    float zj = depthOfShapeFirst(key);
+    float e = continuity(n, depth, nj, zj);
     if (e < bestEps) {
       bestEps = e;
       best = j;
-    }
-  }
-  return best;
-}
-
-// The reverse check's search: the best of this pixel's own fragments [lo, hi) of `shape`.
-uint bestInOwn(uint shape, vec3 n, float depth, uint lo, uint hi) {
-  uint best = KB_NO_NEIGHBOR;
-  float bestEps = 1.0 / 0.0;
-  for (uint i = lo; i < hi; ++i) {
-#ifdef TLAB_BRUTE_FORCE
-    if (shapeOfShapeFirst(ownKey[i]) != shape) continue;
-#endif
-    float e = continuity(n, depth, ownNormal[i], ownDepth[i]);
-    if (e < bestEps) {
-      bestEps = e;
-      best = i;
+      bestNormal = nj;
+      bestDepth = zj;
     }
   }
   return best;
@@ -77,36 +64,29 @@ void main() {
   if (pixel >= uint(uWidth * uHeight)) return;
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
   uint base = slotOf(pixel, 0u);
-  uint n = 0u;
-  for (; n < uint(TLAB_K); ++n) {
-    uint key = z[base + n];
+  for (uint layer = 0u; layer < uint(TLAB_K); ++layer) {
+    uint f = base + layer;
+    uint key = z[f];
     if (key == KB_EMPTY) break;
-    ownKey[n] = key;
-    ownDepth[n] = depthOfShapeFirst(key);
-    ownNormal[n] = decodeNormal(data[base + n].y);
-  }
-  for (uint layer = 0u; layer < n; ++layer) {
-    uint shape = shapeOfShapeFirst(ownKey[layer]);
-#ifdef TLAB_BRUTE_FORCE
-    uint ownLo = 0u, ownHi = n;
-#else
-    uint ownBucket = findBucket(base, shape);
-    uint ownLo = bucketFirst(ownBucket), ownHi = bucketLast(ownBucket) + 1u;
-#endif
+    uint shape = shapeOfShapeFirst(key);
+    vec3 n = decodeNormal(data[f].y);
+    float depth = depthOfShapeFirst(key);
+    uvec2 ownRange = candidateRange(base, shape);
     uint link = 0u;
     for (int d = 0; d < 4; ++d) {
       ivec2 q = xy + kDirections[d];
       uint layerInQ = KB_NO_LINK;
       if (q.x >= 0 && q.y >= 0 && q.x < uWidth && q.y < uHeight) {
         uint qBase = slotOf(uint(q.y * uWidth + q.x), 0u);
-        uint g = bestInNeighbor(shape, ownNormal[layer], ownDepth[layer], qBase);
-        // Fig. 5: the reverse check, g's best candidate among this pixel's fragments.
-        if (g != KB_NO_NEIGHBOR &&
-            bestInOwn(shape, decodeNormal(data[g].y), depthOfShapeFirst(z[g]), ownLo, ownHi) == layer)
+        vec3 gNormal, unusedNormal;
+        float gDepth, unusedDepth;
+        uint g = bestCandidate(shape, n, depth, candidateRange(qBase, shape), gNormal, gDepth);
+        // Fig. 5: the reverse check, g's best candidate among this pixel's fragments must be f.
+        if (g != KB_NO_NEIGHBOR && bestCandidate(shape, gNormal, gDepth, ownRange, unusedNormal, unusedDepth) == f)
           layerInQ = g - qBase;
       }
       link |= layerInQ << (8 * d);
     }
-    links[base + layer] = link;
+    links[f] = link;
   }
 }
