@@ -2,9 +2,11 @@
 // `quad-stack` with 32 full-screen quads at random depths, 512x512 (about 8.4 M fragments),
 // the quads spread over 1, 2, 4, 8, 16, 32 objects (shapes). Per object count: the time of the
 // neighbour query with buckets and by brute force (every fragment of the adjacent pixel,
-// filtered by shape, as in the illustration buffer), the k-buffer passes, and a plain k-buffer
-// frame with constant opacity as the floor. Target: buckets >= 5x faster at >= 16 objects.
+// filtered by shape, as in the illustration buffer) on the same filled buffer, the k-buffer
+// passes, and a whole plain k-buffer frame with constant opacity as the floor. Target: buckets >= 5x faster at >= 16 objects.
 #include <algorithm>
+#include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -13,7 +15,10 @@
 
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
+#include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
+#include "renderer/kbuffer/bucket_neighbors.hpp"
+#include "renderer/ops/screen_space_curvature.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 
@@ -30,75 +35,124 @@ struct BucketBenchOptions {
   bool json = false;
 };
 
-// Median per-pass milliseconds over `repeats` frames after one warm-up frame.
-std::map<std::string, double> medianPasses(render::Renderer& renderer, const render::RenderRequest& request, int repeats,
-                                           render::RenderStats& stats) {
-  renderer.render(request, &stats);
-  std::map<std::string, std::vector<double>> samples;
-  for (int i = 0; i < repeats; ++i) {
-    renderer.render(request, &stats);
-    double total = 0;
-    for (const auto& [name, ms] : stats.passMilliseconds) {
-      samples[name].push_back(ms);
-      total += ms;
-    }
-    samples["total"].push_back(total);
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// Wall-clock and process CPU milliseconds of one GL job, finished with glFinish. The CPU time
+// counts llvmpipe's worker threads too, so it is the robust figure on a shared machine.
+struct Timing {
+  double wallMs = 0, cpuMs = 0;
+};
+template <typename F>
+Timing timeJob(F&& job) {
+  glFinish();
+  const auto wall = std::chrono::steady_clock::now();
+  const std::clock_t cpu = std::clock();
+  job();
+  glFinish();
+  return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall).count(),
+          1000.0 * double(std::clock() - cpu) / CLOCKS_PER_SEC};
+}
+
+struct BucketRow {
+  int objects = 0;
+  std::uint64_t fragments = 0;
+  double zInsertMs = 0, bucketsMs = 0, dataMs = 0, curvatureMs = 0;
+  Timing bucketQuery, bruteQuery, plainFrame;
+};
+
+// One object count: the k-buffer is filled once; the two neighbour queries then run
+// alternately on the same buffer, `repeats` times each after a warm-up (medians).
+BucketRow measure(const BucketBenchOptions& o, int width, int height, int objects) {
+  const render::Scene scene =
+      render::loadScene("builtin:quad-stack?n=" + std::to_string(o.layers) + "&m=" + std::to_string(objects));
+  const render::Camera camera = *scene.camera;
+  render::GpuScene gpuScene(scene);
+  gpu::ShaderCache shaders;
+  render::RasterUniforms raster;
+  raster.view = camera.view();
+  raster.projection = camera.projection(float(width) / float(height));
+  render::KBufferSettings settings;
+  settings.k = static_cast<std::uint32_t>(o.k);
+  settings.nearPlane = camera.nearPlane;
+  settings.farPlane = camera.farPlane;
+  render::BucketedKBuffer kb(shaders, width, height, settings);
+  render::PassTimer warmTimer(true);
+  kb.build(gpuScene, raster, warmTimer);  // compiles the fill shaders
+  render::PassTimer timer(true);
+  kb.build(gpuScene, raster, timer);
+  BucketRow row;
+  row.objects = objects;
+  row.fragments = kb.fragmentCount();
+  row.zInsertMs = timer.get("z-insert");
+  row.bucketsMs = timer.get("buckets");
+  row.dataMs = timer.get("data");
+  using render::kbuffer::NeighborSearch;
+  render::findBucketNeighbors(kb, shaders, NeighborSearch::Buckets);
+  render::findBucketNeighbors(kb, shaders, NeighborSearch::BruteForce);
+  std::vector<double> bw, bc, fw, fc;
+  for (int i = 0; i < o.repeats; ++i) {
+    const Timing b = timeJob([&] { render::findBucketNeighbors(kb, shaders, NeighborSearch::Buckets); });
+    const Timing f = timeJob([&] { render::findBucketNeighbors(kb, shaders, NeighborSearch::BruteForce); });
+    bw.push_back(b.wallMs), bc.push_back(b.cpuMs), fw.push_back(f.wallMs), fc.push_back(f.cpuMs);
   }
-  std::map<std::string, double> median;
-  for (auto& [name, v] : samples) {
-    std::sort(v.begin(), v.end());
-    median[name] = v[v.size() / 2];
+  row.bucketQuery = {median(bw), median(bc)};
+  row.bruteQuery = {median(fw), median(fc)};
+  render::computeScreenSpaceCurvature(kb, shaders, 64.0f);
+  row.curvatureMs = timeJob([&] { render::computeScreenSpaceCurvature(kb, shaders, 64.0f); }).wallMs;
+  // The floor: a whole plain k-buffer frame (Z pass, data pass, blending with constant α).
+  render::Renderer renderer(scene);
+  render::RenderRequest plain;
+  plain.width = width;
+  plain.height = height;
+  plain.style = "curvature";
+  plain.settings = {{"k", std::to_string(o.k)}, {"mode", "plain"}};
+  plain.timePasses = false;
+  renderer.render(plain);
+  std::vector<double> pw, pc;
+  for (int i = 0; i < o.repeats; ++i) {
+    const Timing t = timeJob([&] { renderer.render(plain); });
+    pw.push_back(t.wallMs), pc.push_back(t.cpuMs);
   }
-  return median;
+  row.plainFrame = {median(pw), median(pc)};
+  return row;
 }
 
 void runBucketBench(const BucketBenchOptions& o) {
   const auto context = gpu::createHeadlessContext();
-  render::RenderRequest base;
-  std::tie(base.width, base.height) = parseSize(o.size);
-  base.style = "curvature";
-  base.timePasses = true;
-  const auto with = [&](const std::string& mode, const std::string& query) {
-    render::RenderRequest r = base;
-    r.settings = {{"k", std::to_string(o.k)}, {"mode", mode}, {"query", query}};
-    return r;
-  };
+  const auto [width, height] = parseSize(o.size);
   // Bytes per fragment slot: Z + B + D (+ links + κ) with buckets; Z + D (+ links + κ) without B.
   const std::size_t bucketBytes = 4 + 4 + 8 + render::BucketedKBuffer::kLinkBytesPerSlot;
   const std::size_t bruteBytes = 4 + 8 + render::BucketedKBuffer::kLinkBytesPerSlot;
   nlohmann::json rows = nlohmann::json::array();
   if (!o.json) {
-    std::printf("tlab bench buckets: quad-stack n=%d, %dx%d, k=%d, median of %d frames (ms); target buckets >= 5x "
-                "faster than brute force at >= 16 objects\n",
-                o.layers, base.width, base.height, o.k, o.repeats);
+    std::printf("tlab bench buckets: quad-stack n=%d, %dx%d, k=%d, median of %d runs; ms wall (cpu = process CPU ms, "
+                "llvmpipe threads included); target buckets >= 5x faster than brute force at >= 16 objects\n",
+                o.layers, width, height, o.k, o.repeats);
     std::printf("memory per fragment: buckets %zu B (Z 4 + B 4 + D 8 + links 4 + kappa 4), brute force %zu B (no B); "
                 "plain k-buffer 12 B (Z 4 + D 8)\n",
                 bucketBytes, bruteBytes);
-    std::printf("%7s %10s %8s %8s %8s %10s %10s %8s %9s %10s %10s\n", "objects", "fragments", "z-insert", "buckets",
-                "data", "nbr_bucket", "nbr_brute", "speedup", "curvature", "frame_bkt", "plain_kbuf");
+    std::printf("%7s %9s %8s %7s %7s %9s %9s %9s %9s %7s %7s %9s %10s\n", "objects", "fragments", "z-insert", "buckets",
+                "data", "nbr_bkt", "nbr_brute", "cpu_bkt", "cpu_brute", "x_wall", "x_cpu", "curvature", "plain_kbuf");
   }
   for (int m : o.objects) {
-    const render::Scene scene = render::loadScene("builtin:quad-stack?n=" + std::to_string(o.layers) + "&m=" + std::to_string(m));
-    render::Renderer renderer(scene);
-    render::RenderStats stats;
-    const auto bucket = medianPasses(renderer, with("shading", "buckets"), o.repeats, stats);
-    const std::uint64_t fragments = stats.fragments;
-    const auto brute = medianPasses(renderer, with("shading", "brute-force"), o.repeats, stats);
-    const auto plain = medianPasses(renderer, with("plain", "buckets"), o.repeats, stats);
-    const double speedup = brute.at("neighbors") / bucket.at("neighbors");
+    const BucketRow r = measure(o, width, height, m);
+    const double xWall = r.bruteQuery.wallMs / r.bucketQuery.wallMs, xCpu = r.bruteQuery.cpuMs / r.bucketQuery.cpuMs;
     if (o.json) {
-      rows.push_back({{"objects", m}, {"layers", o.layers}, {"k", o.k}, {"fragments", fragments},
-                      {"z_insert_ms", bucket.at("z-insert")}, {"buckets_ms", bucket.at("buckets")},
-                      {"data_ms", bucket.at("data")}, {"neighbors_buckets_ms", bucket.at("neighbors")},
-                      {"neighbors_brute_force_ms", brute.at("neighbors")}, {"speedup", speedup},
-                      {"curvature_ms", bucket.at("curvature")}, {"frame_buckets_ms", bucket.at("total")},
-                      {"frame_brute_force_ms", brute.at("total")}, {"plain_kbuffer_ms", plain.at("total")},
+      rows.push_back({{"objects", m}, {"layers", o.layers}, {"k", o.k}, {"fragments", r.fragments},
+                      {"z_insert_ms", r.zInsertMs}, {"buckets_ms", r.bucketsMs}, {"data_ms", r.dataMs},
+                      {"neighbors_buckets_ms", r.bucketQuery.wallMs}, {"neighbors_brute_force_ms", r.bruteQuery.wallMs},
+                      {"neighbors_buckets_cpu_ms", r.bucketQuery.cpuMs}, {"neighbors_brute_force_cpu_ms", r.bruteQuery.cpuMs},
+                      {"speedup_wall", xWall}, {"speedup_cpu", xCpu}, {"curvature_ms", r.curvatureMs},
+                      {"plain_kbuffer_frame_ms", r.plainFrame.wallMs}, {"plain_kbuffer_frame_cpu_ms", r.plainFrame.cpuMs},
                       {"bytes_per_fragment_buckets", bucketBytes}, {"bytes_per_fragment_brute_force", bruteBytes}});
     } else {
-      std::printf("%7d %10llu %8.1f %8.1f %8.1f %10.1f %10.1f %8.2f %9.1f %10.1f %10.1f\n", m,
-                  static_cast<unsigned long long>(fragments), bucket.at("z-insert"), bucket.at("buckets"),
-                  bucket.at("data"), bucket.at("neighbors"), brute.at("neighbors"), speedup, bucket.at("curvature"),
-                  bucket.at("total"), plain.at("total"));
+      std::printf("%7d %9llu %8.1f %7.1f %7.1f %9.1f %9.1f %9.1f %9.1f %7.2f %7.2f %9.1f %10.1f\n", m,
+                  static_cast<unsigned long long>(r.fragments), r.zInsertMs, r.bucketsMs, r.dataMs, r.bucketQuery.wallMs,
+                  r.bruteQuery.wallMs, r.bucketQuery.cpuMs, r.bruteQuery.cpuMs, xWall, xCpu, r.curvatureMs,
+                  r.plainFrame.wallMs);
       std::fflush(stdout);
     }
   }
