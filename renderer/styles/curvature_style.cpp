@@ -63,7 +63,7 @@ std::vector<ParamSpec> CurvatureStyle::params() const {
                         "neighbour search: the same-shape bucket of the adjacent pixel, or all its fragments (Sec. 6)"),
       ParamSpec::choice("shape_id", "object", {"object", "component"},
                         "what a shape is: the scene object, or the connected component of its mesh"),
-      ParamSpec::number("scale", 64, 0, 1e6, "s in kappa = tanh(-s (dnx/dx + dny/dy)), normal change per pixel"),
+      ParamSpec::number("scale", 16, 0, 1e6, "s in kappa = tanh(-s (dnx/dx + dny/dy)), normal change per pixel"),
       ParamSpec::number("alpha", 0.6, 0, 1, "opacity of every fragment in modes plain and shading"),
       ParamSpec::text("shading_tf", "fig6a",
                       "1-D shading transfer function of kappa: fig6a, fig6b, points:k=v,k=v,... or a PNG file"),
