@@ -177,6 +177,7 @@ void addBenchCommand(CLI::App& app) {
   addDiffusionBench(*bench);
   addPeelBench(*bench);
   addDynamicBench(*bench);
+  addBucketBench(*bench);
   addIntegrateBench(*bench);
 }
 

@@ -13,6 +13,7 @@
 #include "renderer/image/image.hpp"
 #include "renderer/peel/peeling_renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
+#include "renderer/styles/style.hpp"
 
 namespace tlab::app {
 
@@ -26,6 +27,17 @@ struct RenderOptions {
   std::string renderer = "buffer";
   bool window = false;
 };
+
+// The styles and their --set keys, for the help text.
+std::string styleListing() {
+  std::string out = "Styles (--style NAME) and their parameters (--set key=value):\n";
+  for (const auto& name : render::styleNames()) {
+    const auto& style = render::findStyle(name);
+    out += "  " + name + ": " + style.description() + "\n";
+    for (const auto& p : style.params()) out += "      " + p.name + "=" + p.defaultValue + "  " + p.help + "\n";
+  }
+  return out + "  (every style also takes lighting=headlight|none)";
+}
 
 // Depth peeling (IRIS Sec. 5.1) instead of the illustration buffer, for the local styles.
 render::Image renderPeeled(render::Scene scene, const render::RenderRequest& request, render::RenderStats& stats,
@@ -101,6 +113,7 @@ void addRenderCommand(CLI::App& app) {
                   "buffer (the illustration buffer) or peel (depth peeling, local styles only: IRIS Sec. 5.1)")
       ->capture_default_str();
   cmd->add_flag("--window", options->window, "show the result in a GLFW window instead of rendering headless");
+  cmd->footer(styleListing());
   cmd->callback([options] { runRender(*options); });
 }
 

@@ -11,6 +11,7 @@ void addBenchCommand(CLI::App& app);     // cmd_bench.cpp
 void addDiffusionBench(CLI::App& bench); // cmd_bench_diffusion.cpp (tlab bench diffusion)
 void addPeelBench(CLI::App& bench);      // cmd_bench_peel.cpp (tlab bench peel)
 void addDynamicBench(CLI::App& bench);   // cmd_bench_dynamic.cpp (tlab bench dynamic)
+void addBucketBench(CLI::App& bench);    // cmd_bench_buckets.cpp (tlab bench buckets)
 void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
 void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
 void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp

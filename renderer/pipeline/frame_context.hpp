@@ -14,6 +14,8 @@
 
 namespace tlab::render {
 
+class BucketedKBuffer;
+
 struct FrameContext {
   const Scene& scene;
   const GpuScene& gpuScene;
@@ -27,6 +29,7 @@ struct FrameContext {
   Image& image;            // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
+  BucketedKBuffer* kbuffer = nullptr;  // the bucketed k-buffer, for styles that fill with it
 };
 
 // One pass of a style (VTK render-pass style): a small object with one job.

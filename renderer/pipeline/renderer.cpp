@@ -37,7 +37,17 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
 
   Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
-  if (style.usesFragmentLists()) {
+  std::optional<KBufferSettings> kBufferSettings = style.kBufferFill(params);
+  if (kBufferSettings) {
+    kBufferSettings->nearPlane = camera.nearPlane;
+    kBufferSettings->farPlane = camera.farPlane;
+    buffer_.reset();
+    const bool reusable = kbuffer_ && kbuffer_->width() == request.width && kbuffer_->height() == request.height &&
+                          kbuffer_->settings() == *kBufferSettings;
+    if (!reusable) kbuffer_ = std::make_unique<BucketedKBuffer>(shaders_, request.width, request.height, *kBufferSettings);
+    kbuffer_->build(gpuScene_, raster, timer);
+  } else if (style.usesFragmentLists()) {
+    kbuffer_.reset();
     FragmentProperties props = style.properties(params, SceneFacts{gpuScene_.componentCount()});
     if (request.allProperties) props.bits = 0x1Fu;  // every FragmentProperty
     const FragmentLayout layout(props);
@@ -51,9 +61,10 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
     buffer_->build(gpuScene_, raster, timer);
   } else {
     buffer_.reset();
+    kbuffer_.reset();
   }
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, buffer_.get(), image, shaders_, &drawOrder_};
+                     scene_.background, buffer_.get(), image, shaders_, &drawOrder_, kbuffer_.get()};
   for (const auto& pass : style.passes(params)) timer.time(pass->name(), [&] { pass->run(frame); });
   gpu::checkGl("rendering style " + style.name());
 
@@ -64,6 +75,10 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
     stats->camera = camera;
     stats->width = request.width;
     stats->height = request.height;
+    if (kbuffer_) {
+      stats->fragments = kbuffer_->fragmentCount();
+      stats->fillMethod = kbuffer_->settings().buckets ? "bucketed-kbuffer" : "kbuffer";
+    }
     if (buffer_) {
       stats->fragments = buffer_->fragmentCount();
       stats->rerenders = buffer_->rerenders();

@@ -10,6 +10,7 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/image/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
+#include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
 
@@ -70,6 +71,8 @@ class Renderer {
   // row 0 = top). Both need a style with fragment lists.
   std::vector<std::uint16_t> layerCounts() const;
   std::vector<FragmentRecord> fragmentsAt(int x, int y) const;
+  // After render() with a style that fills with the bucketed k-buffer: that buffer, else null.
+  const BucketedKBuffer* kBuffer() const { return kbuffer_.get(); }
 
  private:
   Scene scene_;
@@ -77,6 +80,7 @@ class Renderer {
   gpu::ShaderCache shaders_;
   std::unique_ptr<FragmentBuffer> buffer_;
   GroupDrawOrder drawOrder_;  // state across successive frames (seed 004, Alg. 1 line 1)
+  std::unique_ptr<BucketedKBuffer> kbuffer_;
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.

@@ -4,6 +4,7 @@
 
 #include "renderer/styles/constant_style.hpp"
 #include "renderer/styles/dynamic_style.hpp"
+#include "renderer/styles/curvature_style.hpp"
 #include "renderer/styles/iris_style.hpp"
 #include "renderer/styles/opaque_style.hpp"
 #include "renderer/styles/smart_style.hpp"
@@ -38,6 +39,7 @@ const std::vector<std::unique_ptr<Style>>& registry() {
     s.push_back(std::make_unique<IrisStyle>("iris", IllustrativeSettings::Opacity::Constant, true));
     s.push_back(std::make_unique<ViewDependentStyle>());
     s.push_back(std::make_unique<DynamicStyle>());
+    s.push_back(std::make_unique<CurvatureStyle>());
     return s;
   }();
   return styles;

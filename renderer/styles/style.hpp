@@ -4,10 +4,12 @@
 // what the style declares.
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "renderer/buffer/fragment_layout.hpp"
+#include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/pipeline/frame_context.hpp"
 #include "renderer/styles/style_params.hpp"
 
@@ -27,6 +29,10 @@ class Style {
   virtual std::vector<ParamSpec> params() const = 0;
   // False for styles that need only the nearest surface (no fragment lists at all).
   virtual bool usesFragmentLists() const { return true; }
+  // How the style fills: nothing (the default) means the illustration buffer; a style that
+  // fills with the bucketed k-buffer (seed 002) returns its settings, and the pipeline builds
+  // that instead (near/far are set from the camera).
+  virtual std::optional<KBufferSettings> kBufferFill(const StyleParams&) const { return std::nullopt; }
   virtual FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const = 0;
   // Checks combinations of parameters (single values are checked against their ParamSpec).
   virtual void validate(const StyleParams&) const {}

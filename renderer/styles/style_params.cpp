@@ -31,6 +31,15 @@ ParamSpec ParamSpec::choice(std::string name, std::string def, std::vector<std::
   return s;
 }
 
+ParamSpec ParamSpec::text(std::string name, std::string def, std::string help) {
+  ParamSpec s;
+  s.name = std::move(name);
+  s.kind = Kind::Text;
+  s.defaultValue = std::move(def);
+  s.help = std::move(help);
+  return s;
+}
+
 namespace {
 
 std::string joined(const std::vector<std::string>& words) {
@@ -72,7 +81,7 @@ StyleParams::StyleParams(const std::string& style, const std::vector<ParamSpec>&
     const std::string value = it == given.end() ? spec.defaultValue : it->second;
     if (spec.kind == ParamSpec::Kind::Number) {
       numbers_[spec.name] = parseNumber(style, spec, value);
-    } else {
+    } else if (spec.kind == ParamSpec::Kind::Choice) {
       bool ok = false;
       for (const auto& c : spec.choices) ok = ok || c == value;
       if (!ok)

@@ -8,7 +8,7 @@
 namespace tlab::render {
 
 struct ParamSpec {
-  enum class Kind { Number, Choice };
+  enum class Kind { Number, Choice, Text };
   std::string name;
   Kind kind = Kind::Number;
   std::string defaultValue;
@@ -18,6 +18,8 @@ struct ParamSpec {
 
   static ParamSpec number(std::string name, double def, double lo, double hi, std::string help);
   static ParamSpec choice(std::string name, std::string def, std::vector<std::string> choices, std::string help);
+  // Free text (a file name or an inline specification the style parses in validate()).
+  static ParamSpec text(std::string name, std::string def, std::string help);
 };
 
 // Validated parameters of one style: every declared key has a value (given or default).
@@ -30,6 +32,7 @@ class StyleParams {
               const std::map<std::string, std::string>& given);
   double number(const std::string& key) const;
   const std::string& choice(const std::string& key) const;
+  const std::string& text(const std::string& key) const { return choice(key); }
   bool is(const std::string& key, const std::string& word) const { return choice(key) == word; }
   const std::map<std::string, std::string>& values() const { return values_; }
 
