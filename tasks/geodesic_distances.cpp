@@ -124,18 +124,33 @@ void GeodesicDistances::requireManifold(const SurfacePoint& source, const std::v
   if (!hasTriangle(source.triangle)) throw std::invalid_argument("geodesic distance: point on a non-manifold triangle");
 }
 
-std::vector<double> GeodesicDistances::onPatch(const SurfacePoint& source, const std::vector<SurfacePoint>& targets, double radius) const {
+std::vector<bool> GeodesicDistances::selectPatch(const SurfacePoint& source, double radius, std::size_t* count) const {
   const WeldedMesh& w = surface_->welded;
   const glm::dvec3 a = source.position(w);
   const double reach = radius + surface_->longestEdge;  // a face touching B(a, radius) has a corner within this
   std::vector<bool> selected(w.triangles.size(), false);
-  std::size_t count = 0;
+  *count = 0;
   for (std::size_t t = 0; t < w.triangles.size(); ++t) {
     const auto& tri = w.triangles[t];
     const double nearest = std::min({glm::length(w.positions[tri[0]] - a), glm::length(w.positions[tri[1]] - a),
                                      glm::length(w.positions[tri[2]] - a)});
-    if (nearest <= reach && surface_->whole.faceOf[t]) selected[t] = true, ++count;
+    if (nearest <= reach && surface_->whole.faceOf[t]) selected[t] = true, ++*count;
   }
+  return selected;
+}
+
+std::size_t GeodesicDistances::patchFaces(const SurfacePoint& source, double radius) const {
+  std::size_t count = 0;
+  selectPatch(source, radius, &count);
+  return count;
+}
+
+std::size_t GeodesicDistances::faceCount() const { return surface_->welded.triangles.size(); }
+
+std::vector<double> GeodesicDistances::onPatch(const SurfacePoint& source, const std::vector<SurfacePoint>& targets, double radius) const {
+  const WeldedMesh& w = surface_->welded;
+  std::size_t count = 0;
+  const std::vector<bool> selected = selectPatch(source, radius, &count);
   std::optional<CgalPatch> local;
   if (count < w.triangles.size()) {
     local.emplace(w, selected);

@@ -41,11 +41,16 @@ class GeodesicDistances {
   std::vector<std::optional<double>> edgePathUpperBounds(const SurfacePoint& source, const std::vector<SurfacePoint>& targets) const;
   // Exact geodesic distance from `source` to each target; std::nullopt where no path exists.
   std::vector<std::optional<double>> fromSource(const SurfacePoint& source, const std::vector<SurfacePoint>& targets) const;
+  // How many faces the exact computation up to `radius` from `source` runs on (its cost grows
+  // faster than this), and how many the mesh has.
+  std::size_t patchFaces(const SurfacePoint& source, double radius) const;
+  std::size_t faceCount() const;
   // Exact distances up to `cap`; farther targets get a lower bound (see the header comment).
   std::vector<CappedDistance> fromSourceWithin(const SurfacePoint& source, const std::vector<SurfacePoint>& targets, double cap) const;
 
  private:
   struct Surface;
+  std::vector<bool> selectPatch(const SurfacePoint& source, double radius, std::size_t* count) const;
   // Distances on the patch of faces touching B(source, radius); negative where the patch has no path.
   std::vector<double> onPatch(const SurfacePoint& source, const std::vector<SurfacePoint>& targets, double radius) const;
   void requireManifold(const SurfacePoint& source, const std::vector<SurfacePoint>& targets) const;
