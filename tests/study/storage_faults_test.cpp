@@ -27,7 +27,7 @@ constexpr int kTrialsPerParticipant = 12;  // crash.toml: 4 blocks × 3 question
 
 CommandResult simulate(const std::string& db, int participants) {
   return runCommand(kTlab + " simulate " + studyData("crash.toml") + " --participants " + std::to_string(participants) + " --db " +
-                    quoted(db) + " --resume --trials");
+                    tlab::testing::quoted(db) + " --resume --trials");
 }
 
 void expectOneLineError(const CommandResult& r, const std::string& part) {
@@ -98,11 +98,11 @@ class TinyFilesystem {
 class ImmutableFile {
  public:
   explicit ImmutableFile(const std::string& file) : file_(file) {
-    ok_ = runCommand("chattr +i " + quoted(file) + " 2>&1").exitCode == 0;
+    ok_ = runCommand("chattr +i " + tlab::testing::quoted(file) + " 2>&1").exitCode == 0;
   }
   ~ImmutableFile() { release(); }
   void release() {
-    if (ok_) runCommand("chattr -i " + quoted(file_));
+    if (ok_) runCommand("chattr -i " + tlab::testing::quoted(file_));
     ok_ = false;
   }
   bool ok() const { return ok_; }
@@ -120,11 +120,13 @@ TEST(StorageFaults, FullDiskStopsCleanlyAndResumeCompletes) {
   if (!disk.mounted()) GTEST_SKIP() << "needs root to mount a tmpfs";
   const std::string db = (dir / "study.db").string();
   ASSERT_EQ(simulate(db, 1).exitCode, 0);
-  // Fill the disk, leaving 8 KiB: the next participant's plan or responses no longer fit.
-  runCommand("dd if=/dev/zero of=" + quoted((dir / "filler").string()) + " bs=4k 2>/dev/null; truncate -s -8k " +
-             quoted((dir / "filler").string()));
+  // Fill the disk, leaving 112 KiB: room for the write-ahead log index (32 KiB), the next
+  // participant's plan and a few responses; the disk fills up inside that session.
+  runCommand("dd if=/dev/zero of=" + tlab::testing::quoted((dir / "filler").string()) + " bs=4k 2>/dev/null; truncate -s -112k " +
+             tlab::testing::quoted((dir / "filler").string()));
   const auto full = simulate(db, 3);
   expectOneLineError(full, "is full: free space, then continue with --resume");
+  EXPECT_NE(full.err.find("participant 'sim-002': session stopped, trial "), std::string::npos) << full.err;
   expectAcknowledgedStored(full.out, db);
   std::filesystem::remove(dir / "filler");
   const auto resumed = simulate(db, 3);
@@ -143,7 +145,7 @@ TEST(StorageFaults, ReadOnlyDatabaseIsReadableNotWritableAndResumeCompletes) {
   expectOneLineError(simulate(db, 2), "is read-only");
   EXPECT_TRUE(readText(db) == before);
   // Readers still work on the read-only file.
-  const auto exported = runCommand(kTlab + " export " + quoted(db) + " --csv " + quoted((dir / "csv").string()));
+  const auto exported = runCommand(kTlab + " export " + tlab::testing::quoted(db) + " --csv " + tlab::testing::quoted((dir / "csv").string()));
   EXPECT_EQ(exported.exitCode, 0) << exported.err;
   readOnly.release();
   ASSERT_EQ(simulate(db, 2).exitCode, 0);
