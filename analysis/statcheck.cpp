@@ -195,7 +195,7 @@ std::vector<ApaResult> extractApaResults(std::string_view text) {
         r.pRelation = op == '<' ? PRelation::Less : (op == '>' ? PRelation::Greater : PRelation::Equal);
         r.p = ReportedValue::parse(m[7].str());
       }
-    } catch (const std::out_of_range&) {
+    } catch (const std::logic_error&) {  // std::out_of_range, std::invalid_argument from std::stod
       continue;
     }
     const bool dfValid = r.df1 > 0.0 && std::isfinite(r.df1) && (r.kind != StatisticKind::F || (r.df2 > 0.0 && std::isfinite(r.df2)));

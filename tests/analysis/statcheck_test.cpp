@@ -55,6 +55,21 @@ TEST(Statcheck, ImpossibleNumbersAreSkippedNotThrown) {
   EXPECT_EQ(report.verdicts[0].result.statistic.value, 2.18);
 }
 
+// Found by fuzz/statcheck_fuzzer (crash-061c0641…): a minus sign and its digits separated by a
+// line break or form feed, as PDF extraction leaves them, made std::stod throw.
+TEST(Statcheck, WhitespaceBetweenSignAndDigitsIsAllowed) {
+  const std::vector<ApaResult> r = extractApaResults("t(35) = \xE2\x88\x92\n2.66, p = .006 and t(4)=\xE2\x88\x92\f\f0.0, ns");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].statistic.value, -2.66);
+  EXPECT_EQ(r[0].statistic.decimals, 2);
+  EXPECT_EQ(r[1].statistic.value, 0.0);
+  const std::string fuzzed =
+      "=\xAE\xAE\xAE0, ns ns\xAFW! \xFAt(2)=\xE2\x88\x92" "0.0, ns ns\xFAt(4)=\xE2\x88\x92\f\f\f\f\f\f\f\f" "0.0, ns ns\xAFWe \xFAt(2\xAF.\n";
+  StatcheckReport report;
+  ASSERT_NO_THROW(report = statcheck(fuzzed, "crash.txt"));
+  EXPECT_EQ(report.verdicts.size(), 2u);
+}
+
 TEST(Statcheck, ConsistencyRules) {
   // t(35) = 2.66: two-tailed p = 2·pt(-2.66, 35) = 0.01170 (R), range over [2.655, 2.665]
   // ≈ [0.01155, 0.01186]; one-tailed ≈ 0.00585.
