@@ -19,7 +19,11 @@ export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:dete
 export LSAN_OPTIONS="suppressions=$root/scripts/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
-(cd build-asan && ctest --output-on-failure -j2 "$@")
+# The two Xvfb window tests load Mesa's GLX driver, which glfwTerminate unloads before the leak
+# check (2 allocations, 112 bytes in an "<unknown module>" that no suppression can name): those
+# two run with ASan + UBSan but without LeakSanitizer.
+(cd build-asan && ctest --output-on-failure -j2 -E Xvfb "$@")
+(cd build-asan && ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" ctest --output-on-failure -R Xvfb)
 
 tlab=build-asan/bin/tlab
 work=$(mktemp -d)
@@ -28,5 +32,5 @@ $tlab render builtin:nested-spheres --style smart --size 256x256 -o "$work/rende
 $tlab simulate tests/study/data/crash.toml --participants 4 --db "$work/sim.db"
 $tlab analyze "$work/sim.db" >/dev/null
 $tlab export "$work/sim.db" --csv "$work/csv" >/dev/null
-$tlab statcheck fuzz/corpus/statcheck/apa.txt >/dev/null || [ $? -eq 1 ]
+$tlab statcheck fuzz/corpus/statcheck/apa.txt >/dev/null
 echo "sanitize: clean (ASan + UBSan + LSan): ctest and render / simulate / analyze / export"
