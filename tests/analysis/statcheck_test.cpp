@@ -64,7 +64,7 @@ TEST(Statcheck, WhitespaceBetweenSignAndDigitsIsAllowed) {
   EXPECT_EQ(r[0].statistic.decimals, 2);
   EXPECT_EQ(r[1].statistic.value, 0.0);
   const std::string fuzzed =
-      "=\xAE\xAE\xAE0, ns ns\xAFW! \xFAt(2)=\xE2\x88\x92" "0.0, ns ns\xFAt(4)=\xE2\x88\x92\f\f\f\f\f\f\f\f" "0.0, ns ns\xAFWe \xFAt(2\xAF.\n";
+      "=\xAE\xAE\xAE" "0, ns ns\xAFW! \xFAt(2)=\xE2\x88\x92" "0.0, ns ns\xFAt(4)=\xE2\x88\x92\f\f\f\f\f\f\f\f" "0.0, ns ns\xAFWe \xFAt(2\xAF.\n";
   StatcheckReport report;
   ASSERT_NO_THROW(report = statcheck(fuzzed, "crash.txt"));
   EXPECT_EQ(report.verdicts.size(), 2u);
