@@ -6,6 +6,7 @@
 // Welch's test") is consistent with a table when every recomputed range meets the published
 // number's own rounding interval.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -60,9 +61,10 @@ struct ReportedValue {
   static ReportedValue parse(std::string_view printed) {
     ReportedValue r;
     r.text = std::string(printed);
+    // Any whitespace may sit between a sign and its digits ("−\n2.66" from a PDF's line break).
     std::string clean;
     for (const char c : printed)
-      if (c != ' ') clean.push_back(c);
+      if (!std::isspace(static_cast<unsigned char>(c))) clean.push_back(c);
     r.value = std::stod(clean);
     const auto dot = clean.find('.');
     const auto exponent = clean.find_first_of("eE");

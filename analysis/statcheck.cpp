@@ -4,6 +4,7 @@
 #include <fstream>
 #include <regex>
 #include <sstream>
+#include <stdexcept>
 
 #include "analysis/analysis_error.hpp"
 #include "analysis/distributions.hpp"
@@ -172,25 +173,33 @@ std::vector<ApaResult> extractApaResults(std::string_view text) {
        it != std::sregex_iterator(); ++it) {
     const std::smatch& m = *it;
     ApaResult r;
-    if (m[1].matched) {
-      r.kind = StatisticKind::T;
-      r.df1 = std::stod(m[1].str());
-    } else if (m[2].matched) {
-      r.kind = StatisticKind::F;
-      r.df1 = std::stod(m[2].str());
-      r.df2 = std::stod(m[3].str());
-    } else {
-      r.kind = StatisticKind::ChiSquared;
-      r.df1 = std::stod(m[4].str());
+    // A match whose numbers cannot stand for a test (df <= 0, a value beyond double's range) is
+    // not a test result: it is skipped, like any other text (found by fuzz/statcheck_fuzzer).
+    try {
+      if (m[1].matched) {
+        r.kind = StatisticKind::T;
+        r.df1 = std::stod(m[1].str());
+      } else if (m[2].matched) {
+        r.kind = StatisticKind::F;
+        r.df1 = std::stod(m[2].str());
+        r.df2 = std::stod(m[3].str());
+      } else {
+        r.kind = StatisticKind::ChiSquared;
+        r.df1 = std::stod(m[4].str());
+      }
+      r.statistic = ReportedValue::parse(m[5].str());
+      if (m[8].matched) {
+        r.pRelation = PRelation::NotSignificant;
+      } else {
+        const char op = m[6].str()[0];
+        r.pRelation = op == '<' ? PRelation::Less : (op == '>' ? PRelation::Greater : PRelation::Equal);
+        r.p = ReportedValue::parse(m[7].str());
+      }
+    } catch (const std::logic_error&) {  // std::out_of_range, std::invalid_argument from std::stod
+      continue;
     }
-    r.statistic = ReportedValue::parse(m[5].str());
-    if (m[8].matched) {
-      r.pRelation = PRelation::NotSignificant;
-    } else {
-      const char op = m[6].str()[0];
-      r.pRelation = op == '<' ? PRelation::Less : (op == '>' ? PRelation::Greater : PRelation::Equal);
-      r.p = ReportedValue::parse(m[7].str());
-    }
+    const bool dfValid = r.df1 > 0.0 && std::isfinite(r.df1) && (r.kind != StatisticKind::F || (r.df2 > 0.0 && std::isfinite(r.df2)));
+    if (!dfValid || !std::isfinite(r.statistic.value)) continue;
     r.text = m[0].str();
     r.line = norm.line[static_cast<std::size_t>(m.position(0))];
     results.push_back(r);

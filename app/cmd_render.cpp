@@ -79,9 +79,10 @@ void runRender(const RenderOptions& o) {
     renderer.emplace(std::move(scene));
     image = renderer->render(request, &stats);
   }
-  if (!o.output.empty()) render::writeFileAtomically(o.output, render::encodePng(image));
+  std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files;  // written all or none
+  if (!o.output.empty()) files.emplace_back(o.output, render::encodePng(image));
   if (!o.layersOut.empty())
-    render::writeFileAtomically(o.layersOut, render::encodePgm16(renderer->layerCounts(), image.width, image.height));
+    files.emplace_back(o.layersOut, render::encodePgm16(renderer->layerCounts(), image.width, image.height));
   if (!o.statsJson.empty()) {
     nlohmann::json j = statsToJson(stats, context->info());
     j["style"] = request.style;
@@ -90,8 +91,9 @@ void runRender(const RenderOptions& o) {
     j["renderer"] = o.renderer;
     if (o.renderer == "peel") j["peel_iterations"] = peelIterations;
     const std::string text = j.dump(2) + "\n";
-    render::writeFileAtomically(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
+    files.emplace_back(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
   }
+  render::writeFilesAtomically(files);
   if (!o.output.empty()) std::cout << "wrote " << o.output << " (" << image.width << "x" << image.height << ")\n";
   if (window) {
     const auto rgba = render::toRgba8(image);

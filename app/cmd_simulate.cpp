@@ -1,4 +1,4 @@
-// tlab simulate EXPERIMENT.toml --participants N --db sim.db [--resume] [--replicate R]: the study
+// tlab simulate EXPERIMENT.toml --participants N --db sim.db [--first K] [--resume] [--replicate R]: the study
 // run by simulated observers through the same runner (no window, headless rendering); progress
 // lines per participant (--trials: per committed response), then trials per second. With
 // --replicate R: a power analysis — the study repeated R times, and for each planned test how
@@ -22,6 +22,7 @@ namespace {
 struct SimulateOptions {
   std::string experiment;
   int participants = 0;
+  int first = 1;
   std::string db;
   bool resume = false;
   int replicates = 0;
@@ -67,6 +68,7 @@ void run(const SimulateOptions& o) {
   const study::Experiment e = study::readExperimentFile(o.experiment);
   if (o.participants < 0) throw std::invalid_argument("--participants: must be >= 1");
   const int participants = o.participants > 0 ? o.participants : e.participants;
+  if (o.first < 1) throw std::invalid_argument("--first: must be >= 1");
   if (o.replicates < 0) throw std::invalid_argument("--replicate: must be >= 1");
   if (o.pace < 0) throw std::invalid_argument("--pace: must be >= 0");
   const auto context = gpu::createHeadlessContext();
@@ -76,6 +78,7 @@ void run(const SimulateOptions& o) {
   study::SessionStore store(o.db);
   study::SimulationOptions s;
   s.participants = participants;
+  s.firstParticipant = o.first;
   s.resume = o.resume;
   s.paceSeconds = o.pace;
   s.observerSeed = e.seed;
@@ -98,6 +101,8 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("experiment", o->experiment, "experiment file (TOML)")->required();
   cmd->add_option("--participants", o->participants, "simulated participants (default: the experiment's)");
   cmd->add_option("--db", o->db, "study database to write")->required();
+  cmd->add_option("--first", o->first, "number of the first simulated participant (sim-<first>...; a second station takes another range)")
+      ->capture_default_str();
   cmd->add_flag("--resume", o->resume, "continue: skip finished simulated participants, resume an interrupted one");
   cmd->add_option("--replicate", o->replicates, "power analysis: repeat the study R times and count significant planned tests");
   cmd->add_option("--pace", o->pace, "real seconds slept per simulated second of response time (default 0: as fast as possible)");

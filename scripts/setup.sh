@@ -10,6 +10,7 @@ packages=(
   libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool chromium
+  clang libclang-rt-14-dev time e2fsprogs
 )
 
 missing=()

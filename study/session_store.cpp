@@ -3,48 +3,17 @@
 #include <chrono>
 #include <ctime>
 
+#include <sqlite3.h>
+#include <unistd.h>
+
 #include "renderer/image/sha256.hpp"
+#include "study/schema_migrations.hpp"
 
 namespace tlab::study {
 
 namespace {
 
-constexpr const char* kSchema = R"sql(
-CREATE TABLE IF NOT EXISTS experiments (
-  id INTEGER PRIMARY KEY, experiment_id TEXT NOT NULL, file_path TEXT NOT NULL, file_text TEXT NOT NULL,
-  sha256 TEXT NOT NULL UNIQUE, tlab_version TEXT NOT NULL, created_at TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS participants (
-  id INTEGER PRIMARY KEY, experiment INTEGER NOT NULL REFERENCES experiments(id), participant TEXT NOT NULL,
-  slot INTEGER NOT NULL, status TEXT NOT NULL, created_at TEXT NOT NULL, finished_at TEXT,
-  UNIQUE(experiment, participant));
-CREATE TABLE IF NOT EXISTS assignments (
-  id INTEGER PRIMARY KEY, experiment INTEGER NOT NULL REFERENCES experiments(id), slot INTEGER NOT NULL,
-  participant INTEGER NOT NULL REFERENCES participants(id), design_row INTEGER NOT NULL, between_cell INTEGER NOT NULL,
-  block_order TEXT NOT NULL, status TEXT NOT NULL, assigned_at TEXT NOT NULL, note TEXT);
-CREATE TABLE IF NOT EXISTS sessions (
-  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), mode TEXT NOT NULL,
-  started_at TEXT NOT NULL, ended_at TEXT, end_reason TEXT);
-CREATE TABLE IF NOT EXISTS trials (
-  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), sequence INTEGER NOT NULL,
-  phase TEXT NOT NULL, block INTEGER NOT NULL, condition TEXT NOT NULL, levels_json TEXT NOT NULL,
-  task_id TEXT NOT NULL, task TEXT NOT NULL, trial INTEGER NOT NULL, question INTEGER NOT NULL,
-  questions_in_trial INTEGER NOT NULL, stimulus_key TEXT NOT NULL, probe_seed INTEGER NOT NULL,
-  question_json TEXT NOT NULL, answer_kind TEXT NOT NULL, truth_json TEXT NOT NULL, time_limit REAL NOT NULL,
-  trial_time_limit REAL, stimulus_path TEXT NOT NULL, stimulus_sha256 TEXT NOT NULL,
-  UNIQUE(participant, sequence));
-CREATE TABLE IF NOT EXISTS responses (
-  id INTEGER PRIMARY KEY, trial INTEGER NOT NULL UNIQUE REFERENCES trials(id), session INTEGER NOT NULL REFERENCES sessions(id),
-  raw_answer TEXT, answered INTEGER NOT NULL, correct INTEGER NOT NULL, score REAL NOT NULL, partial_credit REAL,
-  error REAL, rt_seconds REAL, onset_ns INTEGER NOT NULL, response_ns INTEGER NOT NULL, note TEXT NOT NULL,
-  recorded_at TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS events (
-  id INTEGER PRIMARY KEY, session INTEGER NOT NULL REFERENCES sessions(id), trial INTEGER REFERENCES trials(id),
-  t_ns INTEGER NOT NULL, kind TEXT NOT NULL, detail TEXT NOT NULL);
-CREATE TABLE IF NOT EXISTS questionnaire_answers (
-  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), session INTEGER NOT NULL REFERENCES sessions(id),
-  questionnaire TEXT NOT NULL, block INTEGER NOT NULL, item TEXT NOT NULL, value INTEGER NOT NULL, recorded_at TEXT NOT NULL,
-  UNIQUE(participant, questionnaire, block, item));
-)sql";
+
 
 std::string blockOrderText(const Design& design, const SlotDesign& slot) {
   std::string text;
@@ -53,6 +22,12 @@ std::string blockOrderText(const Design& design, const SlotDesign& slot) {
 }
 
 }  // namespace
+
+std::string stationName() {
+  char host[256] = {};
+  if (gethostname(host, sizeof host - 1) != 0) std::snprintf(host, sizeof host, "unknown");
+  return std::string(host) + ":" + std::to_string(getpid());
+}
 
 std::string utcTimestamp() {
   const auto now = std::chrono::system_clock::now();
@@ -67,25 +42,35 @@ std::string utcTimestamp() {
 }
 
 SessionStore::SessionStore(const std::string& path, bool create) : db_(path, create) {
+  const int version = db_.userVersion();
+  if (version > kSchemaVersion)
+    throw StoreError(path + ": written by a newer tlab (schema version " + std::to_string(version) + "; this tlab reads up to " +
+                     std::to_string(kSchemaVersion) + "): open it with that tlab or a newer one; nothing was changed");
+  checkIntegrity();
   db_.execute("PRAGMA journal_mode=WAL");
   db_.execute("PRAGMA synchronous=FULL");
   db_.execute("PRAGMA foreign_keys=ON");
-  const int version = db_.userVersion();
-  if (version > kSchemaVersion)
-    throw StoreError(path + ": schema version " + std::to_string(version) + " is newer than this tlab (" +
-                     std::to_string(kSchemaVersion) + ")");
   if (version == 0) {
+    // Tables first, then the version: a second process may just be creating the schema (one transaction).
     Statement tables = db_.prepare("SELECT count(*) FROM sqlite_master WHERE type = 'table'");
-    if (tables.step() && tables.integer(0) > 0) throw StoreError(path + ": not a tlab study database (it has other tables)");
-    createSchema();
+    if (tables.step() && tables.integer(0) > 0 && db_.userVersion() == 0)
+      throw StoreError(path + ": not a tlab study database (it has other tables)");
+  }
+  try {
+    migrateSchema(db_);
+  } catch (const StoreError& e) {
+    // A reader (analyze, export) may read an older but complete schema from a read-only file.
+    if (create || version == 0 || (e.code() & 0xff) != SQLITE_READONLY) throw;
   }
 }
 
-void SessionStore::createSchema() {
-  Transaction t(db_);
-  db_.execute(kSchema);
-  db_.execute("PRAGMA user_version = 1");
-  t.commit();
+void SessionStore::checkIntegrity() {
+  Statement check = db_.prepare("PRAGMA quick_check(1)");
+  if (check.step() && check.text(0) != "ok")
+    throw StoreError(db_.path() + ": the database file is damaged (" + check.text(0) +
+                         "); tlab does not write to it: restore it from a backup (or salvage with 'sqlite3 FILE .recover'), "
+                         "then continue with --resume",
+                     SQLITE_CORRUPT);
 }
 
 std::optional<std::int64_t> SessionStore::findExperiment(const std::string& experimentId) {
@@ -132,7 +117,12 @@ ParticipantRecord SessionStore::enrol(std::int64_t experiment, const std::string
   Statement insert = db_.prepare(
       "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, ?3, 'active', ?4)");
   insert.bind(1, experiment).bind(2, participant).bind(3, slot).bind(4, utcTimestamp());
-  insert.run();
+  try {
+    insert.run();
+  } catch (const StoreError& e) {
+    if (e.code() != SQLITE_CONSTRAINT_UNIQUE) throw;
+    throw StoreError(db_.path() + ": participant '" + participant + "' is already enrolled (by another station?)", e.code());
+  }
   const std::int64_t id = db_.lastInsertId();
   const SlotDesign d = design.slot(slot);
   Statement assign = db_.prepare(
@@ -178,8 +168,8 @@ std::vector<AssignmentRecord> SessionStore::assignments(std::int64_t experiment)
 }
 
 std::int64_t SessionStore::startSession(std::int64_t participantId, const std::string& mode) {
-  Statement s = db_.prepare("INSERT INTO sessions (participant, mode, started_at) VALUES (?1, ?2, ?3)");
-  s.bind(1, participantId).bind(2, mode).bind(3, utcTimestamp()).run();
+  Statement s = db_.prepare("INSERT INTO sessions (participant, mode, started_at, station) VALUES (?1, ?2, ?3, ?4)");
+  s.bind(1, participantId).bind(2, mode).bind(3, utcTimestamp()).bind(4, stationName()).run();
   return db_.lastInsertId();
 }
 
@@ -249,7 +239,14 @@ void SessionStore::recordResponse(const ResponseRecord& r) {
   s.bind(1, r.trial).bind(2, r.session).bind(3, r.rawAnswer).bind(4, int(r.answered)).bind(5, int(r.correct)).bind(6, r.score);
   s.bind(7, r.partialCredit).bind(8, r.error).bind(9, r.rtSeconds).bind(10, r.onsetNs).bind(11, r.responseNs).bind(12, r.note);
   s.bind(13, utcTimestamp());
-  s.run();
+  try {
+    s.run();
+  } catch (const StoreError& e) {
+    if (e.code() != SQLITE_CONSTRAINT_UNIQUE) throw;
+    throw StoreError(db_.path() + ": trial " + std::to_string(r.trial) +
+                         " already has a response: is this participant's session running at another station too?",
+                     e.code());
+  }
   Statement e = db_.prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, 'response', ?4)");
   e.bind(1, r.session).bind(2, r.trial).bind(3, r.responseNs).bind(4, r.answered ? "answered" : "missing").run();
   t.commit();

@@ -73,9 +73,10 @@ struct ResponseRecord {
 
 class SessionStore {
  public:
-  static constexpr int kSchemaVersion = 1;
+  static constexpr int kSchemaVersion = 2;  // = latestSchemaVersion() (study/schema_migrations.hpp)
 
-  // Opens or creates the database file; refuses a newer or foreign schema.
+  // Opens or creates the database file; refuses a newer or foreign schema and a damaged file
+  // (PRAGMA quick_check); migrates an older schema (a reader of a read-only file goes without).
   explicit SessionStore(const std::string& path, bool create = true);
 
   Database& database() { return db_; }
@@ -109,9 +110,12 @@ class SessionStore {
   bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block);
 
  private:
-  void createSchema();
+  void checkIntegrity();
   Database db_;
 };
+
+// "host:pid" of this process, stored with each session (two stations may share one database).
+std::string stationName();
 
 // UTC now as "2026-11-21T23:59:59.123Z".
 std::string utcTimestamp();

@@ -5,20 +5,55 @@
 namespace tlab::study {
 
 namespace {
-[[noreturn]] void fail(sqlite3* db, const std::string& what) {
-  throw StoreError(what + ": " + (db ? sqlite3_errmsg(db) : "out of memory"));
+
+// What the user can do about a failed SQLite call, by its primary result code ("" when SQLite's
+// own message says enough).
+std::string remedy(int code) {
+  switch (code & 0xff) {
+    case SQLITE_FULL:
+      return "the disk (or the database's size limit) is full: free space, then continue with --resume";
+    case SQLITE_READONLY:
+      return "the database is read-only (file permissions, an immutable file or a read-only mount): make it writable, "
+             "then continue with --resume";
+    case SQLITE_BUSY:
+    case SQLITE_LOCKED:
+      return "the database is locked by another process (waited " + std::to_string(kBusyTimeoutMs / 1000) +
+             " s): let it finish, then continue with --resume";
+    case SQLITE_CORRUPT:
+    case SQLITE_NOTADB:
+      return "the database file is damaged (corrupt or truncated); tlab does not write to it: restore it from a backup "
+             "(or salvage with 'sqlite3 FILE .recover'), then continue with --resume";
+    case SQLITE_IOERR:
+      return "the disk reported an I/O error (is it full or failing?): check it, then continue with --resume";
+    case SQLITE_CANTOPEN:
+      return "the file or its folder cannot be opened or created (missing folder, permissions, read-only mount)";
+    default:
+      return "";
+  }
 }
+
+std::string explain(sqlite3* db) {
+  if (!db) return "out of memory";
+  const std::string hint = remedy(sqlite3_extended_errcode(db));
+  return std::string(sqlite3_errmsg(db)) + (hint.empty() ? "" : " - " + hint);
+}
+
+[[noreturn]] void fail(sqlite3* db, const std::string& what) { throw StoreError(what + ": " + explain(db), sqliteCode(db)); }
+
 }  // namespace
+
+int sqliteCode(sqlite3* db) { return db ? sqlite3_extended_errcode(db) : SQLITE_NOMEM; }
 
 Database::Database(const std::string& path, bool create) : path_(path) {
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0) | SQLITE_OPEN_NOMUTEX;
   if (sqlite3_open_v2(path.c_str(), &db_, flags, nullptr) != SQLITE_OK) {
-    const std::string message = db_ ? sqlite3_errmsg(db_) : "out of memory";
+    const std::string message = explain(db_);
+    const int code = sqliteCode(db_);
     sqlite3_close(db_);
     db_ = nullptr;
-    throw StoreError(path + ": cannot open the database: " + message);
+    throw StoreError(path + ": cannot open the database: " + message, code);
   }
-  sqlite3_busy_timeout(db_, 10000);
+  sqlite3_busy_timeout(db_, kBusyTimeoutMs);
   sqlite3_extended_result_codes(db_, 1);
 }
 
@@ -27,9 +62,8 @@ Database::~Database() { sqlite3_close_v2(db_); }
 void Database::execute(const char* sql) {
   char* message = nullptr;
   if (sqlite3_exec(db_, sql, nullptr, nullptr, &message) != SQLITE_OK) {
-    const std::string text = message ? message : sqlite3_errmsg(db_);
     sqlite3_free(message);
-    throw StoreError(path_ + ": " + text);
+    throw StoreError(path_ + ": " + explain(db_), sqliteCode(db_));
   }
 }
 

@@ -13,10 +13,22 @@ struct sqlite3_stmt;
 
 namespace tlab::study {
 
+// How long a connection waits for another process's write lock before it gives up.
+inline constexpr int kBusyTimeoutMs = 10000;
+
+// A storage failure. Messages from SQLite say what happened and what to do ("... is full: free
+// space, then continue with --resume"); `code` is SQLite's extended result code (0: not SQLite's).
 class StoreError : public std::runtime_error {
  public:
-  using std::runtime_error::runtime_error;
+  explicit StoreError(const std::string& message, int code = 0) : std::runtime_error(message), code_(code) {}
+  int code() const { return code_; }
+
+ private:
+  int code_ = 0;
 };
+
+// The extended result code of the connection's last failure.
+int sqliteCode(sqlite3* db);
 
 class Statement;
 

@@ -20,7 +20,7 @@ SimulationResult simulateStudy(const Experiment& experiment, SessionStore& store
   if (options.progress) runner.onProgress(options.progress);
   const std::int64_t experimentRow = store.registerExperiment(experiment, options.tlabVersion);
   SimulationResult result;
-  for (int i = 1; i <= options.participants; ++i) {
+  for (int i = options.firstParticipant; i < options.firstParticipant + options.participants; ++i) {
     const std::string id = simulatedParticipantId(i);
     const auto existing = store.findParticipant(experimentRow, id);
     if (existing && !options.resume)

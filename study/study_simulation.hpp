@@ -1,6 +1,6 @@
 #pragma once
 // StudySimulation: the whole study with SimulatedObservers instead of people — participants
-// "sim-001" … "sim-N" run one after the other through the same TrialRunner (same plan, stimuli,
+// "sim-001" … "sim-N" (or from sim-<first>) run one after the other through the same TrialRunner (same plan, stimuli,
 // scoring and database writes as a window session). With `resume`, finished simulated
 // participants are skipped and an interrupted one continues at its first unanswered trial.
 #include <cstdint>
@@ -16,6 +16,7 @@ namespace tlab::study {
 
 struct SimulationOptions {
   int participants = 1;
+  int firstParticipant = 1;         // sim-<first> … sim-<first+participants-1> (two stations: disjoint ranges)
   bool resume = false;
   double paceSeconds = 0.0;         // real seconds slept per simulated second
   std::uint64_t observerSeed = 0;   // seeds the observers (power analysis: one per replicate)

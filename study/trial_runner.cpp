@@ -132,6 +132,19 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
   return true;
 }
 
+void TrialRunner::stopAfterStorageError(Session& s, const SessionResult& result, std::size_t index, const StoreError& e) {
+  try {
+    store_.endSession(s.session, "storage error");
+  } catch (const StoreError&) {
+    // The same fault usually stops this write too; --resume does not need it.
+  }
+  const int safe = result.answeredBefore + result.answeredNow;
+  throw StoreError("participant '" + s.participant.participant + "': session stopped, trial " + std::to_string(s.plan.trials[index].sequence) + "/" +
+                       std::to_string(s.plan.trials.size()) + " was not stored (the " + std::to_string(safe) +
+                       " responses acknowledged before it are safe): " + e.what(),
+                   e.code());
+}
+
 void checkParticipant(SessionStore& store, const Experiment& experiment, const RunOptions& options) {
   const auto experimentRow = store.findExperiment(experiment.id);
   const auto existing = experimentRow ? store.findParticipant(*experimentRow, options.participant) : std::nullopt;
@@ -198,7 +211,11 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
       return close(SessionOutcome::Closed);
   for (std::size_t i = first; i < s.plan.trials.size(); ++i) {
     if (s.stored[i].answered) continue;
-    if (!runTrial(s, i)) return close(SessionOutcome::Closed);
+    try {
+      if (!runTrial(s, i)) return close(SessionOutcome::Closed);
+    } catch (const StoreError& e) {
+      stopAfterStorageError(s, result, i, e);
+    }
     ++result.answeredNow;
     const bool blockEnds = i + 1 == s.plan.trials.size() || s.plan.trials[i + 1].block != s.plan.trials[i].block;
     if (blockEnds && !runQuestionnaires(s, "after-block", s.plan.trials[i].block)) return close(SessionOutcome::Closed);

@@ -59,6 +59,9 @@ class TrialRunner {
   bool runTrial(Session& s, std::size_t index);
   bool runQuestionnaires(Session& s, const std::string& when, int block);
   void storeEvents(Session& s, std::optional<std::int64_t> trial);
+  // Ends the session as far as the store still allows and throws a StoreError naming the trial
+  // that was not stored and how many acknowledged responses are safe.
+  [[noreturn]] void stopAfterStorageError(Session& s, const SessionResult& result, std::size_t index, const StoreError& e);
 
   const Experiment& experiment_;
   SessionStore& store_;

@@ -32,7 +32,7 @@ class OsmesaContext final : public GpuContext {
                            OSMESA_CONTEXT_MAJOR_VERSION, 4, OSMESA_CONTEXT_MINOR_VERSION, 5, 0};
     ctx_ = OSMesaCreateContextAttribs(attribs, nullptr);
     if (!ctx_)
-      throw GlError("cannot create a headless OSMesa OpenGL 4.5 core context (is libosmesa6 installed?)");
+      throw GlError("cannot create a headless OSMesa OpenGL 4.5 core context (is libosmesa6 installed? is MESA_GL_VERSION_OVERRIDE set below 4.5?)");
     // OSMesa needs a default framebuffer to make the context current; we render into our own
     // framebuffer objects, so a 1x1 surface is enough.
     surface_.assign(4, 0);

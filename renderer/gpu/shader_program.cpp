@@ -61,6 +61,7 @@ ProgramName link(std::initializer_list<GLuint> shaders, std::string_view what) {
     glGetProgramiv(program.id(), GL_INFO_LOG_LENGTH, &len);
     std::string log(static_cast<std::size_t>(len > 1 ? len : 1), '\0');
     glGetProgramInfoLog(program.id(), len, nullptr, log.data());
+    while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
     for (char& c : log)
       if (c == '\n') c = ' ';
     throw GlError("shader program " + std::string(what) + " failed to link: " + log);

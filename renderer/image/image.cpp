@@ -72,4 +72,15 @@ void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t
   }
 }
 
+void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& files) {
+  std::size_t written = 0;
+  try {
+    for (; written < files.size(); ++written) writeFileAtomically(files[written].first, files[written].second);
+  } catch (...) {
+    std::error_code ec;
+    for (std::size_t i = 0; i < written; ++i) std::filesystem::remove(files[i].first, ec);
+    throw;
+  }
+}
+
 }  // namespace tlab::render

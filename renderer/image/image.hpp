@@ -2,6 +2,7 @@
 // An RGBA float image, row 0 at the top, and its encodings (PNG 8-bit, 16-bit PGM).
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -31,5 +32,8 @@ std::vector<std::uint8_t> encodePgm16(const std::vector<std::uint16_t>& values, 
 // Writes bytes to `path` through a temporary file and a rename: a failure never leaves a partial
 // file behind. Throws std::runtime_error naming the path.
 void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t>& bytes);
+// Several output files, all or none: each is written atomically, and if one fails the ones
+// already written are removed before the error propagates.
+void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& files);
 
 }  // namespace tlab::render

@@ -36,6 +36,40 @@ TEST(Statcheck, ExtractsTheVariantsOfApaResults) {
   EXPECT_EQ(report.pValuesWithoutStatistic, 1u);
 }
 
+// Found by fuzz/statcheck_fuzzer (crash-5bcd121e…): "chi2(0) = 0.9" made statcheck() throw from
+// the chi-squared distribution; a value beyond double's range made std::stod throw. Such matches
+// are not test results and are skipped; the valid results around them are still checked.
+TEST(Statcheck, ImpossibleNumbersAreSkippedNotThrown) {
+  const std::string fuzzed =
+      "Participants were faster, t(28) = 2.20, p = .036, and the interaction was F(2, 54) =\xE5" "3.91, p <\xE2\x80\x90" "5; "
+      "chi2(1, N = 80) z 4.10, p =\xE2\x88\x92" "43; o <\xE2\x80\x90" "5; chi2(0) = 0.9, p = .04.\n";
+  StatcheckReport report;
+  ASSERT_NO_THROW(report = statcheck(fuzzed, "crash.txt"));
+  ASSERT_EQ(report.verdicts.size(), 1u);
+  EXPECT_EQ(report.verdicts[0].result.kind, StatisticKind::T);
+  const std::string zeroDf = "t(0) = 2.1, p = .04; F(0, 12) = 3.1, p = .04; F(2, 0) = 3.1, p = .04; chi2(0) = 0.9, p = .04.";
+  EXPECT_TRUE(extractApaResults(zeroDf).empty());
+  const std::string huge = "t(12) = 2.1, p = 1e-999; t(" + std::string(400, '9') + ") = 2.1, p = .04; t(12) = 2.18, p = .05.";
+  ASSERT_NO_THROW(report = statcheck(huge, "huge.txt"));
+  ASSERT_EQ(report.verdicts.size(), 1u);
+  EXPECT_EQ(report.verdicts[0].result.statistic.value, 2.18);
+}
+
+// Found by fuzz/statcheck_fuzzer (crash-061c0641…): a minus sign and its digits separated by a
+// line break or form feed, as PDF extraction leaves them, made std::stod throw.
+TEST(Statcheck, WhitespaceBetweenSignAndDigitsIsAllowed) {
+  const std::vector<ApaResult> r = extractApaResults("t(35) = \xE2\x88\x92\n2.66, p = .006 and t(4)=\xE2\x88\x92\f\f0.0, ns");
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].statistic.value, -2.66);
+  EXPECT_EQ(r[0].statistic.decimals, 2);
+  EXPECT_EQ(r[1].statistic.value, 0.0);
+  const std::string fuzzed =
+      "=\xAE\xAE\xAE" "0, ns ns\xAFW! \xFAt(2)=\xE2\x88\x92" "0.0, ns ns\xFAt(4)=\xE2\x88\x92\f\f\f\f\f\f\f\f" "0.0, ns ns\xAFWe \xFAt(2\xAF.\n";
+  StatcheckReport report;
+  ASSERT_NO_THROW(report = statcheck(fuzzed, "crash.txt"));
+  EXPECT_EQ(report.verdicts.size(), 2u);
+}
+
 TEST(Statcheck, ConsistencyRules) {
   // t(35) = 2.66: two-tailed p = 2·pt(-2.66, 35) = 0.01170 (R), range over [2.655, 2.665]
   // ≈ [0.01155, 0.01186]; one-tailed ≈ 0.00585.

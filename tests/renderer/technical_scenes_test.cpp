@@ -18,7 +18,10 @@ double signedVolume(const TriangleMesh& m) {
 }
 
 bool closed(const TriangleMesh& m) {
-  for (const auto& e : EdgeAdjacency(m).edges())
+  // A named adjacency: edges() returns a reference into it, and a temporary in the range-for
+  // would die before the loop body runs (AddressSanitizer: stack-use-after-scope).
+  const EdgeAdjacency adjacency(m);
+  for (const auto& e : adjacency.edges())
     if (e.face1 == kNoFace) return false;
   return true;
 }

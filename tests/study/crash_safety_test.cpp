@@ -7,7 +7,6 @@
 #include <chrono>
 #include <map>
 #include <random>
-#include <sstream>
 #include <thread>
 
 #include "study/sqlite_database.hpp"
@@ -22,31 +21,6 @@ namespace {
 const std::string kTlab = TLAB_EXE;
 constexpr int kParticipants = 6;
 constexpr int kTrialsPerParticipant = 12;
-
-struct Ack {
-  std::string participant;
-  int sequence = 0;
-  std::string answer;
-};
-
-// "ack sim-001 3/12 test block 1 layer trial 1 q2 answer=2 correct rt=..." (complete lines only).
-std::vector<Ack> readAcks(const std::string& path) {
-  std::vector<Ack> acks;
-  const std::string text = readText(path);
-  std::size_t start = 0;
-  for (std::size_t end = text.find('\n'); end != std::string::npos; start = end + 1, end = text.find('\n', start)) {
-    std::istringstream line(text.substr(start, end - start));
-    std::string word, progress;
-    Ack a;
-    if (!(line >> word) || word != "ack") continue;
-    line >> a.participant >> progress;
-    a.sequence = std::stoi(progress.substr(0, progress.find('/')));
-    while (line >> word)
-      if (word.rfind("answer=", 0) == 0) a.answer = word.substr(7);
-    acks.push_back(a);
-  }
-  return acks;
-}
 
 struct StoredResponse {
   std::int64_t responseId = 0;
@@ -106,7 +80,7 @@ TEST(CrashSafety, SigkillAtRandomPointsLosesNothingAndDuplicatesNothing) {
       } else {
         // Inside a running session: after 1-2 acknowledged responses, plus up to 30 ms.
         const std::size_t target = random() % 2;
-        for (int i = 0; i < 2500 && readAcks(out).size() < target + 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        for (int i = 0; i < 2500 && parseAcks(readText(out)).size() < target + 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
         std::this_thread::sleep_for(std::chrono::milliseconds(random() % 30));
       }
       ::kill(pid, SIGKILL);
@@ -115,7 +89,7 @@ TEST(CrashSafety, SigkillAtRandomPointsLosesNothingAndDuplicatesNothing) {
     } else {
       code = waitProcess(pid);
     }
-    for (const auto& a : readAcks(out))
+    for (const auto& a : parseAcks(readText(out)))
       if (!acknowledged.emplace(std::make_pair(a.participant, a.sequence), a.answer).second) ++duplicateAcks;
     if (code == 0) finished = readText(out).find("simulated ") != std::string::npos;
     else ASSERT_EQ(code, -SIGKILL) << readText(out + ".err");

@@ -58,7 +58,7 @@ TEST(SessionStore, SchemaVersionAndWal) {
     EXPECT_EQ(mode.text(0), "wal");
   }
   SessionStore again(path);  // reopening keeps the schema
-  EXPECT_EQ(again.database().userVersion(), 1);
+  EXPECT_EQ(again.database().userVersion(), SessionStore::kSchemaVersion);
   {
     Database other((dir / "other.db").string(), true);
     other.execute("CREATE TABLE mine (x)");

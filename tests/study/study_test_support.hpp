@@ -1,6 +1,7 @@
 #pragma once
 // Shared helpers of the study tests: paths of the test experiments and the examples, and a
 // minimal RFC 4180 CSV reader to check what `tlab export` wrote byte for byte.
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -74,6 +75,31 @@ inline int waitProcess(pid_t pid) {
   int status = 0;
   ::waitpid(pid, &status, 0);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+// One acknowledged response of `tlab simulate --trials`, printed only after its transaction committed.
+struct Ack {
+  std::string participant;
+  int sequence = 0;
+  std::string answer;
+};
+
+// "ack sim-001 3/12 test block 1 layer trial 1 q2 answer=2 correct rt=..." (complete lines only).
+inline std::vector<Ack> parseAcks(const std::string& text) {
+  std::vector<Ack> acks;
+  std::size_t start = 0;
+  for (std::size_t end = text.find('\n'); end != std::string::npos; start = end + 1, end = text.find('\n', start)) {
+    std::istringstream line(text.substr(start, end - start));
+    std::string word, progress;
+    Ack a;
+    if (!(line >> word) || word != "ack") continue;
+    line >> a.participant >> progress;
+    a.sequence = std::stoi(progress.substr(0, progress.find('/')));
+    while (line >> word)
+      if (word.rfind("answer=", 0) == 0) a.answer = word.substr(7);
+    acks.push_back(a);
+  }
+  return acks;
 }
 
 }  // namespace tlab::testing

@@ -1,0 +1,16 @@
+// Fuzz target: experiment file text (TOML) → Experiment, through toml++ and our validation.
+// Every rejection must be an ExperimentFileError (one line naming file:line), nothing else.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "study/experiment_file.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string text(reinterpret_cast<const char*>(data), size);
+  try {
+    tlab::study::parseExperiment(text, "fuzz.toml");
+  } catch (const tlab::study::ExperimentFileError&) {
+  }
+  return 0;
+}
