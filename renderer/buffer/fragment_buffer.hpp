@@ -33,6 +33,15 @@ struct RasterUniforms {
   int lighting = 1;  // 0 none, 1 headlight
 };
 
+// A raster pass that captures fragments into storage buffers (the illustration buffer's fills,
+// the k-buffer's passes): binds the attachment-less framebuffer at width × height with depth
+// test, culling and blending off, uses `program` and sets uView, uProjection, uLighting and uWidth.
+// The caller sets its own uniforms, then endFragmentCapture draws the scene and waits for the
+// storage writes.
+void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int height, const gpu::ShaderProgram& program,
+                          const RasterUniforms& u);
+void endFragmentCapture(const GpuScene& scene);
+
 class FragmentBuffer {
  public:
   // `initialCapacity` fragments are allocated up front (0: one per pixel); the pool grows as

@@ -48,23 +48,11 @@ gpu::ShaderDefines BucketedKBuffer::defines() const {
 }
 
 void BucketedKBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {
-  glBindFramebuffer(GL_FRAMEBUFFER, emptyFbo_.id());
-  glViewport(0, 0, width_, height_);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
-  glUniform1i(program.uniform("uWidth"), width_);
+  beginFragmentCapture(emptyFbo_, width_, height_, program, u);
   glUniform1i(program.uniform("uShapeFromComponent"), settings_.shapeId == ShapeIdSource::Component ? 1 : 0);
   glUniform1f(program.uniform("uNear"), settings_.nearPlane);
   glUniform1f(program.uniform("uFar"), settings_.farPlane);
-  glUniform1i(program.uniform("uLighting"), u.lighting);  // -1 (absent) is ignored by GL
-  scene.bindObjectTable();
-  scene.draw();
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  endFragmentCapture(scene);
 }
 
 void BucketedKBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {

@@ -11,6 +11,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/styles/dynamic_style.hpp"
+#include "tests/support/front_view_scene.hpp"
 #include "tests/support/gl_fixture.hpp"
 
 using namespace tlab::render;
@@ -42,16 +43,7 @@ SceneObject wall(glm::vec4 color, Role roles) {
 }
 
 Scene sceneOf(std::vector<SceneObject> objects, glm::vec4 background = {0, 1, 0, 1}) {
-  Scene s;
-  s.objects = std::move(objects);
-  s.background = background;
-  Camera c;
-  c.eye = {0, 0, 6};
-  c.target = {0, 0, 0};
-  c.nearPlane = 1.0f;
-  c.farPlane = 12.0f;
-  s.camera = c;
-  return s;
+  return tlab::testing::frontViewScene(std::move(objects), background);
 }
 
 // A red target inside three nested opaque boxes, one group drawn innermost first (Sec. V.2).

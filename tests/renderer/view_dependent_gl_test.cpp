@@ -13,6 +13,7 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/scene/technical_scenes.hpp"
+#include "tests/support/front_view_scene.hpp"
 #include "tests/support/gl_fixture.hpp"
 
 using namespace tlab::render;
@@ -43,18 +44,7 @@ SceneObject opaqueBox(float half, glm::vec3 centre) {
   return o;
 }
 
-Scene sceneOf(std::vector<SceneObject> objects) {
-  Scene s;
-  s.objects = std::move(objects);
-  s.background = {0, 1, 0, 1};
-  Camera c;
-  c.eye = {0, 0, 6};
-  c.target = {0, 0, 0};
-  c.nearPlane = 1.0f;
-  c.farPlane = 12.0f;
-  s.camera = c;
-  return s;
-}
+Scene sceneOf(std::vector<SceneObject> objects) { return tlab::testing::frontViewScene(std::move(objects)); }
 
 Image render(const Scene& scene, const std::string& boundaries) {
   Renderer renderer(scene);
