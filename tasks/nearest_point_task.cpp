@@ -120,12 +120,6 @@ std::vector<double> headBounds(const std::vector<double>& upper, const std::vect
   return heads;
 }
 
-// The radius up to which distances are computed exactly: (1 + margin) × the smallest head bound.
-// That head (and any other point within the radius) is then known exactly and can be the nearest; every point beyond the radius is provably ≥ (1 + margin) × their distance, which is
-// all a question needs. The exact algorithm so runs on a small patch around A — its cost grows
-// faster than the patch's area (seen on the toroid: 0.05 s for 1.5 K faces, 14 s for all 52 K).
-constexpr std::size_t kExactHeads = 1;
-
 }  // namespace
 
 std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const {
@@ -208,12 +202,18 @@ std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const
       if (targets.size() < std::size_t(count)) continue;
       const std::vector<double> heads = headBounds(upper, straight, margin, wantTrap);
       if (heads.empty()) continue;  // no question possible from this A
-      const double nearestBound = heads[std::min(heads.size(), kExactHeads) - 1];
-      // Exact up to the cap; when no question can be formed, widen it once (doubled, at most to the
-      // largest bound, where every distance is exact) before trying another A.
+      // Exact up to (1 + margin) × the smallest head bound: that head (and any other point within
+      // the radius) is then known exactly and can be the nearest; every point beyond is provably
+      // ≥ (1 + margin) × its distance, which is all a question needs. So the exact algorithm runs
+      // on a small patch around A — its cost grows faster than the patch's area (seen on the
+      // toroid: 0.05 s for 1.5 K faces, 14 s for all 52 K).
+      const double nearestBound = heads.front();
+      // When no question can be formed, widen the radius once (doubled, at most to the largest
+      // bound, where every distance is exact) before trying another A.
       const double widest = (1.0 + margin) * *std::max_element(upper.begin(), upper.end());
       std::optional<Choice> choice;
-      for (double cap = (1.0 + margin) * nearestBound, round = 0;; cap = std::min(widest, kWidening * cap), ++round) {
+      double cap = (1.0 + margin) * nearestBound;
+      for (int round = 0;; ++round, cap = std::min(widest, kWidening * cap)) {
         if (geodesics[o].patchFaces(a, cap) > faceBudget(geodesics[o])) break;  // too costly: another A
         const auto distances = geodesics[o].fromSourceWithin(a, targets, cap);
         std::vector<PoolPoint> pool;
