@@ -3,6 +3,7 @@
 #include "analysis/statcheck.hpp"
 
 #include <fstream>
+#include <iterator>
 
 #include "tests/analysis/test_support.hpp"
 
@@ -115,6 +116,23 @@ TEST(Statcheck, SeedPapers) {
   const StatcheckReport carnecky = statcheckFile(seeds + "000_30b23ea88644c383.txt");
   EXPECT_EQ(carnecky.verdicts.size(), 0u);
   EXPECT_EQ(carnecky.pValuesWithoutStatistic, 3u);
+}
+
+// Found by fuzz/statcheck_fuzzer (timeout-6312012…, tests/data/analysis/statcheck_digit_run_hang.txt):
+// long runs of digits and blanks after "t(09) =" made std::regex backtrack through every split of
+// them (over 10 s for 619 bytes). The number and separator patterns are unambiguous now; the
+// valid results around such runs are still found.
+TEST(Statcheck, LongDigitAndBlankRunsDoNotMakeTheScannerBacktrack) {
+  std::ifstream in(std::string(TLAB_TEST_DATA) + "/analysis/statcheck_digit_run_hang.txt", std::ios::binary);
+  const std::string fuzzed((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  ASSERT_GT(fuzzed.size(), 600u);
+  EXPECT_NO_THROW(statcheck(fuzzed, "hang.txt"));
+  const std::string runs = "t(12) = 2.18, p = .05; t(9) = " + std::string(3000, '9') + std::string(2000, ' ') + std::string(3000, '1') +
+                           ", p = .2; t(20) = 2.09, p = .05.";
+  const std::vector<ApaResult> r = extractApaResults(runs);
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0].statistic.value, 2.18);
+  EXPECT_EQ(r[1].statistic.value, 2.09);
 }
 
 }  // namespace
