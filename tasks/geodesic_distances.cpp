@@ -118,6 +118,18 @@ std::vector<std::optional<double>> GeodesicDistances::edgePathUpperBounds(const 
   return out;
 }
 
+namespace {
+
+// The largest of the upper bounds that exist (0 when none does).
+double largestBound(const std::vector<std::optional<double>>& bounds) {
+  double largest = 0.0;
+  for (const auto& b : bounds)
+    if (b) largest = std::max(largest, *b);
+  return largest;
+}
+
+}  // namespace
+
 void GeodesicDistances::requireManifold(const SurfacePoint& source, const std::vector<SurfacePoint>& targets) const {
   for (const auto& p : targets)
     if (!hasTriangle(p.triangle)) throw std::invalid_argument("geodesic distance: point on a non-manifold triangle");
@@ -172,10 +184,7 @@ std::vector<std::optional<double>> GeodesicDistances::fromSource(const SurfacePo
   requireManifold(source, targets);
   // The patch of faces touching B(a, R), R = the largest upper bound (see the header).
   const auto bounds = edgePathUpperBounds(source, targets);
-  double radius = 0.0;
-  for (const auto& b : bounds)
-    if (b) radius = std::max(radius, *b);
-  const auto d = onPatch(source, targets, radius);
+  const auto d = onPatch(source, targets, largestBound(bounds));
   std::vector<std::optional<double>> out;
   for (std::size_t i = 0; i < targets.size(); ++i) out.push_back(bounds[i] && d[i] >= 0.0 ? std::optional<double>(d[i]) : std::nullopt);
   return out;
@@ -185,10 +194,7 @@ std::vector<CappedDistance> GeodesicDistances::fromSourceWithin(const SurfacePoi
                                                                 double cap) const {
   requireManifold(source, targets);
   const auto bounds = edgePathUpperBounds(source, targets);
-  double radius = 0.0;
-  for (const auto& b : bounds)
-    if (b) radius = std::max(radius, *b);
-  radius = std::min(radius, cap);
+  const double radius = std::min(largestBound(bounds), cap);
   const auto d = onPatch(source, targets, radius);
   const glm::dvec3 a = source.position(surface_->welded);
   std::vector<CappedDistance> out(targets.size());
