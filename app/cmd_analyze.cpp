@@ -23,6 +23,7 @@ struct AnalyzeOptions {
   std::string db;
   bool json = false;
   std::string experiment;
+  bool poolVersions = false;
 };
 
 nlohmann::json toJson(const study::StudyAnalysis& a) {
@@ -53,17 +54,19 @@ nlohmann::json toJson(const study::StudyAnalysis& a) {
 }
 
 void run(const AnalyzeOptions& o) {
-  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
-  study::SessionStore store(o.db, false);
-  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment);
+  study::SessionStore store(o.db, study::OpenMode::Read);
+  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, o.poolVersions);
   if (stored.experiment.analyses.empty()) throw std::runtime_error(stored.experiment.path + ": the experiment plans no [[analysis]]");
   const auto analyses = study::analyzeStudy(store, stored);
   if (o.json) {
     nlohmann::json j = {{"experiment", stored.experiment.id}, {"database", o.db}, {"analyses", nlohmann::json::array()}};
+    for (const auto& v : stored.versions)
+      j["versions"].push_back({{"version", v.version.version}, {"sha256", v.version.sha256}, {"design", v.design}, {"sessions", v.sessions}});
     for (const auto& a : analyses) j["analyses"].push_back(toJson(a));
     std::cout << j.dump(2) << "\n";
     return;
   }
+  std::printf("experiment '%s': data from %s\n\n", stored.experiment.id.c_str(), stored.describeVersions().c_str());
   for (const auto& a : analyses) std::fputs(analysisText(a).c_str(), stdout);
 }
 
@@ -75,6 +78,7 @@ void addAnalyzeCommand(CLI::App& app) {
   cmd->add_option("db", o->db, "study database")->required();
   cmd->add_flag("--json", o->json, "print JSON");
   cmd->add_option("--experiment", o->experiment, "experiment id (when the database holds several)");
+  cmd->add_flag("--pool-versions", o->poolVersions, "analyse data of experiment versions whose designs differ together");
   cmd->callback([o] { run(*o); });
 }
 

@@ -66,17 +66,15 @@ void run(const DesignOptions& o) {
   std::printf("test records in total: %d\n", total);
 
   if (o.db.empty()) return;
-  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
-  study::SessionStore store(o.db, false);
-  const auto row = store.findExperiment(e.id);
-  if (!row) {
+  study::SessionStore store(o.db, study::OpenMode::Read);
+  if (!store.findExperiment(e.id)) {
     std::printf("%s: no participant of experiment '%s' yet\n", o.db.c_str(), e.id.c_str());
     return;
   }
   analysis::TextTable held;
   held.caption = "Slots in " + o.db;
   held.header = {"slot", "row", "participant", "status"};
-  for (const auto& a : store.assignments(*row))
+  for (const auto& a : store.assignments(e.id))
     held.rows.push_back({std::to_string(a.slot), std::to_string(a.row), a.participant, a.status});
   std::fputs(analysis::renderPlainText(held).c_str(), stdout);
 }

@@ -20,10 +20,10 @@ struct DropOptions {
 };
 
 void run(const DropOptions& o) {
-  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
-  study::SessionStore store(o.db, false);
-  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment);
-  store.dropParticipant(stored.row, o.participant, o.reason);
+  study::requireSqliteFile(o.db);
+  study::SessionStore store(o.db, study::OpenMode::Write);
+  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, true);
+  store.dropParticipant(stored.experiment.id, o.participant, o.reason);
   std::printf("participant dropped; their slot goes to the next new participant\n");
 }
 

@@ -15,12 +15,13 @@ struct ExportOptions {
   std::string db;
   std::string csv;
   std::string experiment;
+  bool poolVersions = false;
 };
 
 void run(const ExportOptions& o) {
-  if (!std::filesystem::exists(o.db)) throw std::runtime_error(o.db + ": no such database");
-  study::SessionStore store(o.db, false);
-  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment);
+  study::SessionStore store(o.db, study::OpenMode::Read);
+  const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, o.poolVersions);
+  std::printf("experiment '%s': data from %s\n", stored.experiment.id.c_str(), stored.describeVersions().c_str());
   for (const auto& path : study::exportCsv(store, stored, o.csv)) std::printf("wrote %s\n", path.c_str());
 }
 
@@ -32,6 +33,7 @@ void addExportCommand(CLI::App& app) {
   cmd->add_option("db", o->db, "study database")->required();
   cmd->add_option("--csv", o->csv, "output folder for the CSV files")->required();
   cmd->add_option("--experiment", o->experiment, "experiment id (when the database holds several)");
+  cmd->add_flag("--pool-versions", o->poolVersions, "export data of experiment versions whose designs differ together");
   cmd->callback([o] { run(*o); });
 }
 

@@ -32,6 +32,7 @@ struct ReportOptions {
   std::string markdown;
   std::string title;
   std::string ssType = "2";
+  bool poolVersions = false;
 };
 
 void writeFile(const std::filesystem::path& path, const std::string& content) {
@@ -63,9 +64,8 @@ std::string numbered(const std::string& path, std::size_t index) {
 void runDatabase(const ReportOptions& o) {
   if (!o.dvs.empty() || !o.within.empty() || !o.between.empty() || !o.subject.empty())
     throw an::AnalysisError("a study database is reported by its experiment's analysis plan; --dv/--within/--between/--subject are for CSV files");
-  if (!std::filesystem::exists(o.file)) throw an::AnalysisError(o.file + ": no such database");
-  study::SessionStore store(o.file, false);
-  const study::StoredExperiment stored = study::storedExperiment(store);
+  study::SessionStore store(o.file, study::OpenMode::Read);
+  const study::StoredExperiment stored = study::storedExperiment(store, "", o.poolVersions);
   const auto analyses = study::analyzeStudy(store, stored);
   if (analyses.empty()) throw an::AnalysisError(o.file + ": the experiment plans no [[analysis]]");
   for (std::size_t i = 0; i < analyses.size(); ++i) {
@@ -104,6 +104,7 @@ void addReportCommand(CLI::App& app) {
   cmd->add_option("-o,--output", o.output, "HTML output file")->required();
   cmd->add_option("--markdown", o.markdown, "Also write Markdown (figures as SVG files next to it)");
   cmd->add_option("--title", o.title, "Report title");
+  cmd->add_flag("--pool-versions", o.poolVersions, "report data of experiment versions whose designs differ together (databases)");
   cmd->add_option("--ss-type", o.ssType, "Sums of squares for unbalanced data: 2 or 3")->capture_default_str();
   cmd->callback([options] { run(*options); });
 }

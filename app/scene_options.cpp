@@ -3,10 +3,8 @@
 #include <regex>
 #include <stdexcept>
 
-#include "renderer/scene/technical_scenes.hpp"
 #include "renderer/styles/style.hpp"
-#include "stimuli/scenes/stimulus_scenes.hpp"
-#include "tasks/letter_patterns.hpp"
+#include "study/scene_catalog.hpp"
 
 namespace tlab::app {
 
@@ -31,16 +29,7 @@ std::pair<int, int> parseSize(const std::string& text) {
   return {w, h};
 }
 
-const std::vector<render::BuiltinSceneSpec>& sceneCatalog() {
-  // The renderer's built-ins, the stimuli library's scenes, the technical scenes, and the T2
-  // letter-pattern world (its 5x7 bitmaps come from the tasks library).
-  static const std::vector<render::BuiltinSceneSpec> catalog = [] {
-    std::vector<render::BuiltinSceneSpec> extra = render::technicalScenes();
-    extra.push_back(stimuli::abstractPatternSpec(tasks::patternLetters(), tasks::letterCells));
-    return stimuli::allSceneSpecs(extra);
-  }();
-  return catalog;
-}
+const std::vector<render::BuiltinSceneSpec>& sceneCatalog() { return study::sceneCatalog(); }
 
 render::RenderRequest SceneOptions::request(const render::Scene& scene) const {
   render::RenderRequest r;

@@ -80,17 +80,15 @@ static void BM_RecordResponse(benchmark::State& state) {
   const Experiment e = elmqvistDesign();
   {
     SessionStore store(path.string());
-    const auto row = store.registerExperiment(e, "bench");
-    const auto p = store.enrol(row, "bench", makeDesign(e));
     const int n = 200000;
     std::vector<TrialRecord> trials(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {
       trials[std::size_t(i)].sequence = i + 1;
       trials[std::size_t(i)].phase = "test";
     }
-    store.insertTrials(p.id, trials);
+    const auto p = *store.enrol(e, "bench", "bench", 0, makeDesign(e), trials);
     const auto stored = store.trials(p.id);
-    const auto session = store.startSession(p.id, "bench");
+    const auto session = store.startSession(p.id, e, "bench", "bench");
     std::size_t next = 0;
     for (auto _ : state) {
       ResponseRecord r;

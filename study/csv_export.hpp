@@ -4,6 +4,8 @@
 // values, text exactly as stored (bytes unchanged, so invalid UTF-8 survives a round trip).
 //   trials.csv          one row per trial record (with its response, if any) and one column per factor
 //   questionnaires.csv  one row per questionnaire item answer
+//   sessions.csv        one row per session: version, station, status (finished / closed / interrupted,
+//                       resumed by session N / running), responses and stimulus onsets in it
 //   participants.csv    one row per participant with slot, design row and status
 //   events.csv          one row per event (pause, resume, layout, timing, responses)
 #include <string>
@@ -17,7 +19,7 @@ namespace tlab::study {
 // A CSV field: quoted when it holds a comma, quote, CR, LF or leading/trailing blank.
 std::string csvField(const std::string& text);
 
-// Writes the four files into `directory` (created if needed); returns their paths.
+// Writes the five files into `directory` (created if needed); returns their paths.
 std::vector<std::string> exportCsv(SessionStore& store, const StoredExperiment& stored, const std::string& directory);
 
 }  // namespace tlab::study

@@ -3,6 +3,7 @@
 // SimulatedObserver. The TrialRunner owns the order, the time limits and the database; a
 // responder only shows screens and returns answers with their monotonic timestamps.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -19,6 +20,9 @@ struct TrialView {
   double limitSeconds = 120.0;  // for this question: its own limit or what is left of the trial's
   int index = 1;                // 1-based position in the session
   int total = 1;
+  // Called once when the stimulus is first on screen (monotonic ns, detail JSON): the runner
+  // commits the onset at once, so the log knows every stimulus a participant saw.
+  std::function<void(std::int64_t, const std::string&)> onset;
 };
 
 struct Response {

@@ -54,12 +54,27 @@ CREATE TABLE IF NOT EXISTS schema_migrations (
   version INTEGER PRIMARY KEY, description TEXT NOT NULL, applied_at TEXT NOT NULL);
 )sql";
 
+// Version 3: versions of an experiment (same id, another file text), the version each session
+// ran, sessions left open by a crash marked as resumed by a later one, the process start time of
+// a session's station (is it still running?), and an index for the onsets of a trial.
+constexpr const char* kVersion3 = R"sql(
+ALTER TABLE experiments ADD COLUMN version INTEGER NOT NULL DEFAULT 1;
+UPDATE experiments SET version = (SELECT count(*) FROM experiments e2
+  WHERE e2.experiment_id = experiments.experiment_id AND e2.id <= experiments.id);
+ALTER TABLE sessions ADD COLUMN experiment INTEGER REFERENCES experiments(id);
+UPDATE sessions SET experiment = (SELECT p.experiment FROM participants p WHERE p.id = sessions.participant);
+ALTER TABLE sessions ADD COLUMN resumed_by INTEGER REFERENCES sessions(id);
+ALTER TABLE sessions ADD COLUMN process_start TEXT;
+CREATE INDEX IF NOT EXISTS events_by_trial ON events(trial, kind);
+)sql";
+
 }  // namespace
 
 const std::vector<SchemaMigration>& schemaMigrations() {
   static const std::vector<SchemaMigration> migrations = {
       {1, "study tables", kVersion1},
       {2, "sessions.station, per-session indexes, schema_migrations", kVersion2},
+      {3, "experiment versions, sessions.experiment/resumed_by/process_start, onset index", kVersion3},
   };
   return migrations;
 }

@@ -1,19 +1,25 @@
+// The study database. Over 300 lines: it is the one place that holds the SQL of the study log
+// (opening and checking the file, versions, enrolment, sessions, the plan, responses, events and
+// questionnaires); splitting it would spread one schema over several files.
 #include "study/session_store.hpp"
 
 #include <chrono>
+#include <csignal>
 #include <ctime>
+#include <fstream>
+#include <sstream>
 
+#include <nlohmann/json.hpp>
 #include <sqlite3.h>
 #include <unistd.h>
 
 #include "renderer/image/sha256.hpp"
+#include "study/fault_point.hpp"
 #include "study/schema_migrations.hpp"
 
 namespace tlab::study {
 
 namespace {
-
-
 
 std::string blockOrderText(const Design& design, const SlotDesign& slot) {
   std::string text;
@@ -21,12 +27,50 @@ std::string blockOrderText(const Design& design, const SlotDesign& slot) {
   return text;
 }
 
+std::string hostName() {
+  char host[256] = {};
+  if (gethostname(host, sizeof host - 1) != 0) return "unknown";
+  return host;
+}
+
+// Field 22 of /proc/PID/stat (start time in clock ticks since boot); "" when unreadable.
+std::string startTimeOf(const std::string& pid) {
+  std::ifstream in("/proc/" + pid + "/stat");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto close = text.rfind(')');  // the command name may hold spaces and parentheses
+  if (close == std::string::npos) return "";
+  std::istringstream fields(text.substr(close + 2));
+  std::string field;
+  for (int i = 3; i <= 22 && fields >> field; ++i)
+    if (i == 22) return field;
+  return "";
+}
+
+// Copies a database into memory (sqlite3_backup), so a reader can migrate an older schema there.
+std::unique_ptr<Database> memoryCopy(Database& from) {
+  auto copy = std::make_unique<Database>(":memory:", OpenMode::Create);
+  sqlite3_backup* backup = sqlite3_backup_init(copy->handle(), "main", from.handle(), "main");
+  if (!backup) throw StoreError(from.path() + ": cannot read it into memory: " + copy->explain());
+  sqlite3_backup_step(backup, -1);
+  if (sqlite3_backup_finish(backup) != SQLITE_OK) throw StoreError(from.path() + ": cannot read it into memory: " + copy->explain());
+  return copy;
+}
+
 }  // namespace
 
-std::string stationName() {
-  char host[256] = {};
-  if (gethostname(host, sizeof host - 1) != 0) std::snprintf(host, sizeof host, "unknown");
-  return std::string(host) + ":" + std::to_string(getpid());
+std::string stationName() { return hostName() + ":" + std::to_string(getpid()); }
+
+std::string processStartTime() { return startTimeOf("self"); }
+
+std::string stationState(const std::string& station, const std::string& processStart) {
+  const auto colon = station.rfind(':');
+  if (colon == std::string::npos || station.substr(0, colon) != hostName()) return "unknown";
+  const std::string pid = station.substr(colon + 1);
+  if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos) return "unknown";
+  const std::string started = startTimeOf(pid);
+  if (started.empty()) return "dead";
+  // A reused pid belongs to another process: compare start times where the session stored one.
+  return processStart.empty() || processStart == started ? "alive" : "dead";
 }
 
 std::string utcTimestamp() {
@@ -41,146 +85,206 @@ std::string utcTimestamp() {
   return buf;
 }
 
-SessionStore::SessionStore(const std::string& path, bool create) : db_(path, create) {
-  const int version = db_.userVersion();
-  if (version > kSchemaVersion)
-    throw StoreError(path + ": written by a newer tlab (schema version " + std::to_string(version) + "; this tlab reads up to " +
-                     std::to_string(kSchemaVersion) + "): open it with that tlab or a newer one; nothing was changed");
+SessionStore::SessionStore(const std::string& path, OpenMode mode) : path_(path) {
+  if (mode != OpenMode::Read && std::filesystem::exists(path) && std::filesystem::file_size(path) > 0) requireSqliteFile(path);
+  db_ = std::make_unique<Database>(path, mode);
+  // Everything before the first write only reads: a foreign, damaged or newer file stays untouched.
+  const int version = db_->userVersion();
+  requireStudyDatabase(version);
   checkIntegrity();
-  db_.execute("PRAGMA journal_mode=WAL");
-  db_.execute("PRAGMA synchronous=FULL");
-  db_.execute("PRAGMA foreign_keys=ON");
-  if (version == 0) {
-    // Tables first, then the version: a second process may just be creating the schema (one transaction).
-    Statement tables = db_.prepare("SELECT count(*) FROM sqlite_master WHERE type = 'table'");
-    if (tables.step() && tables.integer(0) > 0 && db_.userVersion() == 0)
-      throw StoreError(path + ": not a tlab study database (it has other tables)");
+  if (mode == OpenMode::Read) {
+    if (version < kSchemaVersion) {
+      db_ = memoryCopy(*db_);
+      migrateSchema(*db_);
+    }
+    return;
   }
-  try {
-    migrateSchema(db_);
-  } catch (const StoreError& e) {
-    // A reader (analyze, export) may read an older but complete schema from a read-only file.
-    if (create || version == 0 || (e.code() & 0xff) != SQLITE_READONLY) throw;
-  }
+  db_->execute("PRAGMA journal_mode=WAL");
+  db_->execute("PRAGMA synchronous=FULL");
+  db_->execute("PRAGMA foreign_keys=ON");
+  migrateSchema(*db_);
+}
+
+void SessionStore::requireStudyDatabase(int version) {
+  if (version > kSchemaVersion)
+    throw StoreError(path_ + ": written by a newer tlab (schema version " + std::to_string(version) + "; this tlab reads up to " +
+                     std::to_string(kSchemaVersion) + "): open it with that tlab or a newer one; nothing was changed");
+  Statement tables = db_->prepare("SELECT group_concat(name, ', '), sum(name IN ('experiments', 'trials', 'responses')) "
+                                  "FROM sqlite_master WHERE type = 'table'");
+  tables.step();
+  const std::string names = tables.isNull(0) ? "" : tables.text(0);
+  const bool empty = names.empty();
+  if (version == 0 && !empty)  // another process may be creating the schema: its tables and version commit together
+    throw StoreError(path_ + ": not a tlab study database (it has other tables: " + names + "); nothing was changed");
+  if (version > 0 && tables.integer(1) != 3)
+    throw StoreError(path_ + ": not a tlab study database (its tables are " + (empty ? std::string("none") : names) +
+                     "); nothing was changed");
+  if (db_->readOnly() && version == 0)
+    throw StoreError(path_ + ": an empty database: no experiment has been run into it yet");
 }
 
 void SessionStore::checkIntegrity() {
-  Statement check = db_.prepare("PRAGMA quick_check(1)");
+  Statement check = db_->prepare("PRAGMA quick_check(1)");
   if (check.step() && check.text(0) != "ok")
-    throw StoreError(db_.path() + ": the database file is damaged (" + check.text(0) +
+    throw StoreError(path_ + ": the database file is damaged (" + check.text(0) +
                          "); tlab does not write to it: restore it from a backup (or salvage with 'sqlite3 FILE .recover'), "
                          "then continue with --resume",
                      SQLITE_CORRUPT);
 }
 
-std::optional<std::int64_t> SessionStore::findExperiment(const std::string& experimentId) {
-  Statement s = db_.prepare("SELECT id FROM experiments WHERE experiment_id = ?1 ORDER BY id DESC LIMIT 1");
+std::vector<ExperimentVersion> SessionStore::versions(const std::string& experimentId) {
+  Statement s = db_->prepare(
+      "SELECT id, experiment_id, version, sha256, file_path, file_text FROM experiments WHERE experiment_id = ?1 ORDER BY version, id");
   s.bind(1, experimentId);
-  if (!s.step()) return std::nullopt;
-  return s.integer(0);
+  std::vector<ExperimentVersion> out;
+  while (s.step()) out.push_back({s.integer(0), s.text(1), int(s.integer(2)), s.text(3), s.text(4), s.text(5)});
+  return out;
 }
 
-std::int64_t SessionStore::registerExperiment(const Experiment& e, const std::string& tlabVersion) {
+std::optional<ExperimentVersion> SessionStore::findVersion(const Experiment& e) {
   const std::string hash = render::sha256Hex(e.text);
-  Transaction t(db_);
-  Statement same = db_.prepare("SELECT id FROM experiments WHERE sha256 = ?1");
-  same.bind(1, hash);
-  if (same.step()) return same.integer(0);
-  Statement other = db_.prepare("SELECT sha256 FROM experiments WHERE experiment_id = ?1");
-  other.bind(1, e.id);
-  if (other.step())
-    throw StoreError(db_.path() + " already holds experiment '" + e.id + "' from a different file (sha256 " +
-                     other.text(0).substr(0, 12) + "…, this file " + hash.substr(0, 12) +
-                     "…); use a new database or the original file");
-  Statement insert = db_.prepare(
-      "INSERT INTO experiments (experiment_id, file_path, file_text, sha256, tlab_version, created_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
-  insert.bind(1, e.id).bind(2, e.path).bind(3, e.text).bind(4, hash).bind(5, tlabVersion).bind(6, utcTimestamp());
+  for (auto& v : versions(e.id))
+    if (v.sha256 == hash) return v;
+  return std::nullopt;
+}
+
+std::optional<std::int64_t> SessionStore::findExperiment(const std::string& experimentId) {
+  const auto all = versions(experimentId);
+  if (all.empty()) return std::nullopt;
+  return all.back().row;
+}
+
+ExperimentVersion SessionStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
+  if (auto known = findVersion(e)) return *known;
+  const std::string hash = render::sha256Hex(e.text);
+  Statement other = db_->prepare("SELECT id FROM experiments WHERE sha256 = ?1");
+  other.bind(1, hash);
+  if (other.step())  // the same text under another id cannot happen: the id is part of the text
+    throw StoreError(path_ + ": holds this file's text under another experiment id");
+  const int version = int(versions(e.id).size()) + 1;
+  Statement insert = db_->prepare(
+      "INSERT INTO experiments (experiment_id, file_path, file_text, sha256, tlab_version, created_at, version) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+  insert.bind(1, e.id).bind(2, e.path).bind(3, e.text).bind(4, hash).bind(5, tlabVersion).bind(6, utcTimestamp()).bind(7, version);
   insert.run();
-  const std::int64_t id = db_.lastInsertId();
-  t.commit();
-  return id;
+  return {db_->lastInsertId(), e.id, version, hash, e.path, e.text};
 }
 
-std::optional<ParticipantRecord> SessionStore::findParticipant(std::int64_t experiment, const std::string& participant) {
-  Statement s = db_.prepare("SELECT id, participant, slot, status FROM participants WHERE experiment = ?1 AND participant = ?2");
-  s.bind(1, experiment).bind(2, participant);
+std::optional<ParticipantRecord> SessionStore::findParticipant(const std::string& experimentId, const std::string& participant) {
+  Statement s = db_->prepare(
+      "SELECT p.id, p.experiment, p.participant, p.slot, p.status FROM participants p JOIN experiments x ON x.id = p.experiment "
+      "WHERE x.experiment_id = ?1 AND p.participant = ?2");
+  s.bind(1, experimentId).bind(2, participant);
   if (!s.step()) return std::nullopt;
-  return ParticipantRecord{s.integer(0), s.text(1), int(s.integer(2)), s.text(3)};
+  return ParticipantRecord{s.integer(0), s.integer(1), s.text(2), int(s.integer(3)), s.text(4)};
 }
 
-ParticipantRecord SessionStore::enrol(std::int64_t experiment, const std::string& participant, const Design& design) {
-  Transaction t(db_);
-  Statement taken = db_.prepare("SELECT slot FROM assignments WHERE experiment = ?1 AND status != 'dropped' ORDER BY slot");
-  taken.bind(1, experiment);
+int SessionStore::nextFreeSlot(const std::string& experimentId) {
+  Statement taken = db_->prepare(
+      "SELECT DISTINCT a.slot FROM assignments a JOIN experiments x ON x.id = a.experiment "
+      "WHERE x.experiment_id = ?1 AND a.status != 'dropped' ORDER BY a.slot");
+  taken.bind(1, experimentId);
   int slot = 0;
   while (taken.step() && taken.integer(0) == slot) ++slot;
-  Statement insert = db_.prepare(
-      "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, ?3, 'active', ?4)");
-  insert.bind(1, experiment).bind(2, participant).bind(3, slot).bind(4, utcTimestamp());
-  try {
-    insert.run();
-  } catch (const StoreError& e) {
-    if (e.code() != SQLITE_CONSTRAINT_UNIQUE) throw;
-    throw StoreError(db_.path() + ": participant '" + participant + "' is already enrolled (by another station?)", e.code());
-  }
-  const std::int64_t id = db_.lastInsertId();
-  const SlotDesign d = design.slot(slot);
-  Statement assign = db_.prepare(
-      "INSERT INTO assignments (experiment, slot, participant, design_row, between_cell, block_order, status, assigned_at) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, 'active', ?7)");
-  assign.bind(1, experiment).bind(2, slot).bind(3, id).bind(4, d.row).bind(5, d.betweenCell).bind(6, blockOrderText(design, d));
-  assign.bind(7, utcTimestamp());
-  assign.run();
-  t.commit();
-  return ParticipantRecord{id, participant, slot, "active"};
+  return slot;
 }
 
-void SessionStore::dropParticipant(std::int64_t experiment, const std::string& participant, const std::string& reason) {
-  const auto p = findParticipant(experiment, participant);
-  if (!p) throw StoreError(db_.path() + ": no participant '" + participant + "' in this experiment");
+std::optional<ParticipantRecord> SessionStore::enrol(const Experiment& e, const std::string& tlabVersion, const std::string& participant,
+                                                     int slot, const Design& design, const std::vector<TrialRecord>& trials) {
+  Transaction t(*db_);
+  if (findParticipant(e.id, participant))
+    throw StoreError(path_ + ": participant '" + participant + "' was enrolled by another station a moment ago; continue with --resume "
+                     "once that station has stopped, or use another participant id");
+  if (nextFreeSlot(e.id) != slot) return std::nullopt;
+  const ExperimentVersion version = ensureVersion(e, tlabVersion);
+  Statement insert = db_->prepare(
+      "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, ?3, 'active', ?4)");
+  insert.bind(1, version.row).bind(2, participant).bind(3, slot).bind(4, utcTimestamp());
+  insert.run();
+  const std::int64_t id = db_->lastInsertId();
+  const SlotDesign d = design.slot(slot);
+  Statement assign = db_->prepare(
+      "INSERT INTO assignments (experiment, slot, participant, design_row, between_cell, block_order, status, assigned_at) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, 'active', ?7)");
+  assign.bind(1, version.row).bind(2, slot).bind(3, id).bind(4, d.row).bind(5, d.betweenCell).bind(6, blockOrderText(design, d));
+  assign.bind(7, utcTimestamp());
+  assign.run();
+  insertTrials(id, trials);
+  t.commit();
+  return ParticipantRecord{id, version.row, participant, slot, "active"};
+}
+
+void SessionStore::dropParticipant(const std::string& experimentId, const std::string& participant, const std::string& reason) {
+  const auto p = findParticipant(experimentId, participant);
+  if (!p) throw StoreError(path_ + ": no participant '" + participant + "' in this experiment");
   if (p->status == "dropped") throw StoreError("participant '" + participant + "' has already dropped out");
-  Transaction t(db_);
-  Statement a = db_.prepare("UPDATE participants SET status = 'dropped' WHERE id = ?1");
+  Transaction t(*db_);
+  Statement a = db_->prepare("UPDATE participants SET status = 'dropped' WHERE id = ?1");
   a.bind(1, p->id).run();
-  Statement b = db_.prepare("UPDATE assignments SET status = 'dropped', note = ?2 WHERE participant = ?1");
+  Statement b = db_->prepare("UPDATE assignments SET status = 'dropped', note = ?2 WHERE participant = ?1");
   b.bind(1, p->id).bind(2, reason).run();
   t.commit();
 }
 
 void SessionStore::finishParticipant(std::int64_t participantId) {
-  Transaction t(db_);
-  Statement a = db_.prepare("UPDATE participants SET status = 'finished', finished_at = ?2 WHERE id = ?1");
+  Transaction t(*db_);
+  Statement a = db_->prepare("UPDATE participants SET status = 'finished', finished_at = ?2 WHERE id = ?1");
   a.bind(1, participantId).bind(2, utcTimestamp()).run();
-  Statement b = db_.prepare("UPDATE assignments SET status = 'finished' WHERE participant = ?1 AND status = 'active'");
+  Statement b = db_->prepare("UPDATE assignments SET status = 'finished' WHERE participant = ?1 AND status = 'active'");
   b.bind(1, participantId).run();
   t.commit();
 }
 
-std::vector<AssignmentRecord> SessionStore::assignments(std::int64_t experiment) {
-  Statement s = db_.prepare(
+std::vector<AssignmentRecord> SessionStore::assignments(const std::string& experimentId) {
+  Statement s = db_->prepare(
       "SELECT a.slot, a.design_row, a.between_cell, p.participant, a.status, a.block_order FROM assignments a "
-      "JOIN participants p ON p.id = a.participant WHERE a.experiment = ?1 ORDER BY a.slot, a.id");
-  s.bind(1, experiment);
+      "JOIN participants p ON p.id = a.participant JOIN experiments x ON x.id = a.experiment WHERE x.experiment_id = ?1 "
+      "ORDER BY a.slot, a.id");
+  s.bind(1, experimentId);
   std::vector<AssignmentRecord> out;
   while (s.step())
     out.push_back({int(s.integer(0)), int(s.integer(1)), int(s.integer(2)), s.text(3), s.text(4), s.text(5)});
   return out;
 }
 
-std::int64_t SessionStore::startSession(std::int64_t participantId, const std::string& mode) {
-  Statement s = db_.prepare("INSERT INTO sessions (participant, mode, started_at, station) VALUES (?1, ?2, ?3, ?4)");
-  s.bind(1, participantId).bind(2, mode).bind(3, utcTimestamp()).bind(4, stationName()).run();
-  return db_.lastInsertId();
+std::int64_t SessionStore::startSession(std::int64_t participantId, const Experiment& e, const std::string& tlabVersion,
+                                        const std::string& mode) {
+  Transaction t(*db_);
+  const ExperimentVersion version = ensureVersion(e, tlabVersion);
+  Statement open = db_->prepare(
+      "SELECT s.id, coalesce(s.station, ''), coalesce(s.process_start, ''), s.started_at, p.participant FROM sessions s "
+      "JOIN participants p ON p.id = s.participant WHERE s.participant = ?1 AND s.ended_at IS NULL AND s.resumed_by IS NULL");
+  open.bind(1, participantId);
+  std::vector<std::int64_t> interrupted;
+  while (open.step()) {
+    const std::string station = open.text(1), state = stationState(station, open.text(2));
+    if (state == "dead") {
+      interrupted.push_back(open.integer(0));
+      continue;
+    }
+    throw SessionConflict(path_ + ": participant '" + open.text(4) + "' is in session " + std::to_string(open.integer(0)) +
+                          " at station " + station + " (started " + open.text(3) + (state == "unknown" ? ", another machine" : "") +
+                          "); let that session finish, or stop it and continue there with --resume");
+  }
+  Statement s = db_->prepare(
+      "INSERT INTO sessions (participant, mode, started_at, station, experiment, process_start) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  s.bind(1, participantId).bind(2, mode).bind(3, utcTimestamp()).bind(4, stationName()).bind(5, version.row);
+  s.bind(6, processStartTime()).run();
+  const std::int64_t session = db_->lastInsertId();
+  Statement mark = db_->prepare("UPDATE sessions SET end_reason = 'interrupted', resumed_by = ?2 WHERE id = ?1");
+  for (const auto id : interrupted) mark.bind(1, id).bind(2, session).run();
+  t.commit();
+  return session;
 }
 
 void SessionStore::endSession(std::int64_t session, const std::string& reason) {
-  Statement s = db_.prepare("UPDATE sessions SET ended_at = ?2, end_reason = ?3 WHERE id = ?1");
+  Statement s = db_->prepare("UPDATE sessions SET ended_at = ?2, end_reason = ?3 WHERE id = ?1");
   s.bind(1, session).bind(2, utcTimestamp()).bind(3, reason).run();
 }
 
 void SessionStore::insertTrials(std::int64_t participantId, const std::vector<TrialRecord>& trials) {
-  Transaction t(db_);
-  Statement s = db_.prepare(
+  Transaction t(*db_);  // inside enrol's transaction: a savepoint
+  Statement s = db_->prepare(
       "INSERT INTO trials (participant, sequence, phase, block, condition, levels_json, task_id, task, trial, question, "
       "questions_in_trial, stimulus_key, probe_seed, question_json, answer_kind, truth_json, time_limit, trial_time_limit, "
       "stimulus_path, stimulus_sha256) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20)");
@@ -196,7 +300,7 @@ void SessionStore::insertTrials(std::int64_t participantId, const std::vector<Tr
 }
 
 std::vector<TrialRecord> SessionStore::trials(std::int64_t participantId) {
-  Statement s = db_.prepare(
+  Statement s = db_->prepare(
       "SELECT t.id, sequence, phase, block, condition, levels_json, task_id, task, t.trial, question, questions_in_trial, "
       "stimulus_key, probe_seed, question_json, answer_kind, truth_json, time_limit, trial_time_limit, stimulus_path, "
       "stimulus_sha256, r.id IS NOT NULL FROM trials t LEFT JOIN responses r ON r.trial = t.id WHERE t.participant = ?1 "
@@ -231,9 +335,36 @@ std::vector<TrialRecord> SessionStore::trials(std::int64_t participantId) {
   return out;
 }
 
+std::map<std::string, double> SessionStore::usedSeconds(std::int64_t participantId) {
+  Statement used = db_->prepare(
+      "SELECT t.phase, t.block, t.task_id, t.trial, coalesce(r.rt_seconds, t.time_limit) FROM responses r "
+      "JOIN trials t ON t.id = r.trial WHERE t.participant = ?1");
+  used.bind(1, participantId);
+  std::map<std::string, double> out;
+  while (used.step())
+    out[used.text(0) + "/" + std::to_string(used.integer(1)) + "/" + used.text(2) + "/" + std::to_string(used.integer(3))] += used.real(4);
+  return out;
+}
+
+int SessionStore::recordOnset(std::int64_t session, std::int64_t trial, std::int64_t tNs, const std::string& detail) {
+  Transaction t(*db_);
+  Statement count = db_->prepare("SELECT count(*) FROM events WHERE trial = ?1 AND kind = 'onset'");
+  count.bind(1, trial);
+  count.step();
+  const int shown = int(count.integer(0)) + 1;
+  // The detail says which showing this is; 2 and more: the same stimulus again after an interruption.
+  nlohmann::json d = nlohmann::json::parse(detail.empty() ? "{}" : detail, nullptr, false);
+  if (!d.is_object()) d = nlohmann::json{{"detail", detail}};
+  d["showing"] = shown;
+  if (shown > 1) d["repeat"] = "shown again after an interruption";
+  recordEvent(session, trial, tNs, "onset", d.dump());
+  t.commit();
+  return shown;
+}
+
 void SessionStore::recordResponse(const ResponseRecord& r) {
-  Transaction t(db_);
-  Statement s = db_.prepare(
+  Transaction t(*db_);
+  Statement s = db_->prepare(
       "INSERT INTO responses (trial, session, raw_answer, answered, correct, score, partial_credit, error, rt_seconds, "
       "onset_ns, response_ns, note, recorded_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)");
   s.bind(1, r.trial).bind(2, r.session).bind(3, r.rawAnswer).bind(4, int(r.answered)).bind(5, int(r.correct)).bind(6, r.score);
@@ -243,18 +374,19 @@ void SessionStore::recordResponse(const ResponseRecord& r) {
     s.run();
   } catch (const StoreError& e) {
     if (e.code() != SQLITE_CONSTRAINT_UNIQUE) throw;
-    throw StoreError(db_.path() + ": trial " + std::to_string(r.trial) +
+    throw StoreError(path_ + ": trial " + std::to_string(r.trial) +
                          " already has a response: is this participant's session running at another station too?",
                      e.code());
   }
-  Statement e = db_.prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, 'response', ?4)");
+  Statement e = db_->prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, 'response', ?4)");
   e.bind(1, r.session).bind(2, r.trial).bind(3, r.responseNs).bind(4, r.answered ? "answered" : "missing").run();
+  faultPoint("commit", ++responses_);
   t.commit();
 }
 
 void SessionStore::recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                                const std::string& detail) {
-  Statement e = db_.prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, ?4, ?5)");
+  Statement e = db_->prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, ?4, ?5)");
   e.bind(1, session);
   if (trial) e.bind(2, *trial);
   else e.bindNull(2);
@@ -263,8 +395,8 @@ void SessionStore::recordEvent(std::int64_t session, std::optional<std::int64_t>
 
 void SessionStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                        const std::vector<std::pair<std::string, int>>& itemValues) {
-  Transaction t(db_);
-  Statement s = db_.prepare(
+  Transaction t(*db_);
+  Statement s = db_->prepare(
       "INSERT INTO questionnaire_answers (participant, session, questionnaire, block, item, value, recorded_at) "
       "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
   for (const auto& [item, value] : itemValues) {
@@ -275,7 +407,7 @@ void SessionStore::recordQuestionnaire(std::int64_t participantId, std::int64_t 
 }
 
 bool SessionStore::hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) {
-  Statement s = db_.prepare("SELECT 1 FROM questionnaire_answers WHERE participant = ?1 AND questionnaire = ?2 AND block = ?3 LIMIT 1");
+  Statement s = db_->prepare("SELECT 1 FROM questionnaire_answers WHERE participant = ?1 AND questionnaire = ?2 AND block = ?3 LIMIT 1");
   s.bind(1, participantId).bind(2, questionnaire).bind(3, block);
   return s.step();
 }

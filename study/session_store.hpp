@@ -6,6 +6,8 @@
 // questionnaire answers. The schema version is PRAGMA user_version. Every write that a
 // participant's progress depends on is one transaction, committed before the runner goes on.
 #include <cstdint>
+#include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,6 +20,7 @@ namespace tlab::study {
 
 struct ParticipantRecord {
   std::int64_t id = 0;
+  std::int64_t experiment = 0;  // the version row it enrolled under
   std::string participant;
   int slot = 0;
   std::string status;  // active, finished, dropped
@@ -71,35 +74,71 @@ struct ResponseRecord {
   std::string note;
 };
 
+// One version of an experiment file in the database: the same experiment id with another text
+// (sha256) is a new version; every session records the version it ran.
+struct ExperimentVersion {
+  std::int64_t row = 0;
+  std::string experimentId;
+  int version = 1;
+  std::string sha256;
+  std::string filePath;
+  std::string fileText;
+};
+
+// Another process is running this participant's session right now.
+class SessionConflict : public StoreError {
+ public:
+  using StoreError::StoreError;
+};
+
 class SessionStore {
  public:
-  static constexpr int kSchemaVersion = 2;  // = latestSchemaVersion() (study/schema_migrations.hpp)
+  static constexpr int kSchemaVersion = 3;  // = latestSchemaVersion() (study/schema_migrations.hpp)
 
-  // Opens or creates the database file; refuses a newer or foreign schema and a damaged file
-  // (PRAGMA quick_check); migrates an older schema (a reader of a read-only file goes without).
-  explicit SessionStore(const std::string& path, bool create = true);
+  // Create/Write: opens (or creates) the file; refuses a file that is not SQLite, one with other
+  // tables, a newer schema and a damaged file (PRAGMA quick_check) before anything is written;
+  // then switches to WAL and migrates an older schema. Read: never writes a byte (see OpenMode);
+  // an older schema is copied into memory and migrated there.
+  explicit SessionStore(const std::string& path, OpenMode mode = OpenMode::Create);
+  SessionStore(const std::string& path, bool create) : SessionStore(path, create ? OpenMode::Create : OpenMode::Write) {}
 
-  Database& database() { return db_; }
+  Database& database() { return *db_; }
+  const std::string& path() const { return path_; }
 
-  // The experiments row for this file (inserted on first use). Throws when the database already
-  // holds the same experiment id with a different file text.
-  std::int64_t registerExperiment(const Experiment& experiment, const std::string& tlabVersion);
-  std::optional<std::int64_t> findExperiment(const std::string& experimentId);
+  // Versions of `experimentId`, oldest first; the version whose text is `experiment`'s, if stored.
+  std::vector<ExperimentVersion> versions(const std::string& experimentId);
+  std::optional<ExperimentVersion> findVersion(const Experiment& experiment);
+  std::optional<std::int64_t> findExperiment(const std::string& experimentId);  // latest version's row
 
-  std::optional<ParticipantRecord> findParticipant(std::int64_t experiment, const std::string& participant);
-  // A new participant takes the lowest free slot: never assigned, or freed by a dropout.
-  ParticipantRecord enrol(std::int64_t experiment, const std::string& participant, const Design& design);
-  void dropParticipant(std::int64_t experiment, const std::string& participant, const std::string& reason);
+  // The participant under any version of the experiment.
+  std::optional<ParticipantRecord> findParticipant(const std::string& experimentId, const std::string& participant);
+  // The lowest free slot: never assigned, or freed by a dropout (over every version).
+  int nextFreeSlot(const std::string& experimentId);
+  // One transaction: this file's version (registered if new), the participant in `slot`, its
+  // assignment and its whole plan. Writes nothing and returns nullopt when `slot` was taken in the
+  // meantime (the caller prepares the plan of the new slot and tries again).
+  std::optional<ParticipantRecord> enrol(const Experiment& experiment, const std::string& tlabVersion, const std::string& participant,
+                                         int slot, const Design& design, const std::vector<TrialRecord>& trials);
+  void dropParticipant(const std::string& experimentId, const std::string& participant, const std::string& reason);
   void finishParticipant(std::int64_t participantId);
-  std::vector<AssignmentRecord> assignments(std::int64_t experiment);
+  std::vector<AssignmentRecord> assignments(const std::string& experimentId);
 
-  std::int64_t startSession(std::int64_t participantId, const std::string& mode);
+  // One transaction: registers this file's version if new, refuses (SessionConflict) while
+  // another live process runs a session of this participant, marks the participant's sessions
+  // left open by a dead process as interrupted and resumed by the new one, and opens the session.
+  std::int64_t startSession(std::int64_t participantId, const Experiment& experiment, const std::string& tlabVersion,
+                            const std::string& mode);
   void endSession(std::int64_t session, const std::string& reason);
 
-  // Stores the whole plan of a participant in one transaction (before the first trial shows).
+  // Stores the whole plan of a participant in one transaction (databases whose plan is missing).
   void insertTrials(std::int64_t participantId, const std::vector<TrialRecord>& trials);
   std::vector<TrialRecord> trials(std::int64_t participantId);
+  // Seconds already used per trial key "phase/block/task/trial" (trial time limits continue).
+  std::map<std::string, double> usedSeconds(std::int64_t participantId);
 
+  // The stimulus of `trial` was shown: committed at once, before any answer. Returns how often
+  // this trial has now been shown (2 and more: shown again after an interruption).
+  int recordOnset(std::int64_t session, std::int64_t trial, std::int64_t tNs, const std::string& detail);
   // One transaction: the response and its event. Throws StoreError if the trial already has one.
   void recordResponse(const ResponseRecord& response);
   void recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
@@ -110,12 +149,21 @@ class SessionStore {
   bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block);
 
  private:
+  void requireStudyDatabase(int version);
   void checkIntegrity();
-  Database db_;
+  ExperimentVersion ensureVersion(const Experiment& experiment, const std::string& tlabVersion);
+  std::string path_;
+  std::unique_ptr<Database> db_;
+  int responses_ = 0;  // response transactions of this process (fault points)
 };
 
 // "host:pid" of this process, stored with each session (two stations may share one database).
 std::string stationName();
+// Whether the process of a session's station still runs: "alive" for this machine's live processes
+// started at `processStart`, "dead" for this machine's others, "unknown" for another machine's.
+std::string stationState(const std::string& station, const std::string& processStart);
+// This process's start time (clock ticks since boot, /proc/self/stat), stored with each session.
+std::string processStartTime();
 
 // UTC now as "2026-11-21T23:59:59.123Z".
 std::string utcTimestamp();

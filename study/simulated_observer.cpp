@@ -136,6 +136,7 @@ std::optional<Response> SimulatedObserver::respond(const TrialView& view) {
   Response r;
   const double seconds = d.answer ? d.seconds : view.limitSeconds;
   r.onsetNs = clockNs_;
+  if (view.onset) view.onset(r.onsetNs, "{\"simulated\":true}");
   clockNs_ += std::int64_t(seconds * 1e9);
   r.responseNs = clockNs_;
   r.text = d.answer;

@@ -32,10 +32,17 @@ int sqliteCode(sqlite3* db);
 
 class Statement;
 
+// How a database file is opened. Read never writes a byte: it checks that the file is an SQLite
+// file first, opens it read-only, and where no write-ahead log exists (a cleanly closed database)
+// opens it immutable, so no -wal/-shm files appear beside it and read-only folders and media work.
+enum class OpenMode { Create, Write, Read };
+
 class Database {
  public:
-  // Opens (creating if `create`) the file; sets a busy timeout so concurrent readers wait.
-  Database(const std::string& path, bool create);
+  // Opens the file; a connection that must wait for another process's lock waits up to
+  // kBusyTimeoutMs (its busy handler records how long it waited, for honest messages).
+  Database(const std::string& path, OpenMode mode);
+  Database(const std::string& path, bool create) : Database(path, create ? OpenMode::Create : OpenMode::Write) {}
   ~Database();
   Database(const Database&) = delete;
   Database& operator=(const Database&) = delete;
@@ -46,14 +53,28 @@ class Database {
   Statement prepare(std::string_view sql);
   std::int64_t lastInsertId() const;
   int userVersion();
+  bool readOnly() const { return mode_ == OpenMode::Read; }
   sqlite3* handle() const { return db_; }
+  // What a failed call means, with a remedy (the busy message says how long it really waited).
+  std::string explain() const;
 
  private:
+  friend class Statement;
+  static int onBusy(void* self, int count);
   std::string path_;
+  OpenMode mode_ = OpenMode::Write;
   sqlite3* db_ = nullptr;
+  long long busySinceNs_ = 0;   // steady clock when the current wait began
+  long long busyWaitedNs_ = -1;  // how long the last wait lasted; -1: the last BUSY came without one
 };
 
-// BEGIN IMMEDIATE ... COMMIT; rolls back unless commit() was called.
+// Throws StoreError unless `path` exists and starts with the SQLite header ("not an SQLite
+// database" for text or other files). Reads 16 bytes; writes nothing.
+void requireSqliteFile(const std::string& path);
+
+// BEGIN IMMEDIATE ... COMMIT; rolls back unless commit() was called. Inside another transaction
+// it is a savepoint of it (RELEASE on commit, ROLLBACK TO otherwise), so a store method that
+// writes in one transaction can be part of a larger one.
 class Transaction {
  public:
   explicit Transaction(Database& db);
@@ -64,6 +85,7 @@ class Transaction {
 
  private:
   Database& db_;
+  bool nested_ = false;
   bool done_ = false;
 };
 

@@ -1,5 +1,7 @@
 #include "study/stimulus_library.hpp"
 
+#include "study/fault_point.hpp"
+
 #include <filesystem>
 #include <sstream>
 
@@ -62,9 +64,7 @@ std::vector<std::string> effectiveTaskSettings(const PlannedTrial& trial) {
 }
 
 StimulusLibrary::StimulusLibrary(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, TextPainter& painter)
-    : directory_(std::move(directory)), catalog_(std::move(catalog)), painter_(painter) {
-  std::filesystem::create_directories(directory_);
-}
+    : directory_(std::move(directory)), catalog_(std::move(catalog)), painter_(painter) {}
 
 const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& key) {
   const std::string id = key.text();
@@ -136,7 +136,10 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
     const std::vector<std::uint8_t> png = render::encodePng(canvas->toImage());
     const std::string sha = render::sha256Hex(png);
     const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
-    if (!std::filesystem::exists(path)) render::writeFileAtomically(path, png);
+    if (!std::filesystem::exists(path)) {
+      std::filesystem::create_directories(directory_);  // made with its first stimulus: a failed start leaves no folder
+      render::writeFileAtomically(path, png);
+    }
     found = written_.emplace(id, std::make_pair(sha, std::move(canvas))).first;
   }
   p.stimulusSha256 = found->second.first;
@@ -147,6 +150,7 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
     p.floorPlan = plan;
     p.floorPlanImage = image;
   }
+  faultPoint("prepare", ++prepared_);
   return p;
 }
 

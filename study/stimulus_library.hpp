@@ -64,6 +64,7 @@ class StimulusLibrary {
   std::map<std::string, std::vector<tasks::Question>> questions_;
   std::map<std::string, std::pair<std::string, std::shared_ptr<const Canvas>>> written_;
   std::map<std::string, std::pair<FloorPlan, std::shared_ptr<const Canvas>>> plans_;  // key → (sha, canvas)
+  int prepared_ = 0;  // prepare() calls of this library (fault points)
 };
 
 // Where a study database keeps its stimuli: "study.db" → "study-stimuli/".

@@ -197,7 +197,7 @@ DemoResult runDemo(const DemoOptions& o, const std::vector<render::BuiltinSceneS
   say(line);
 
   start = Clock::now();
-  SessionStore store(result.databasePath, false);
+  SessionStore store(result.databasePath, OpenMode::Read);
   const StoredExperiment stored = storedExperiment(store);
   result.analyses = analyzeStudy(store, stored);
   analysis::ReportPage page;

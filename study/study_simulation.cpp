@@ -18,13 +18,12 @@ SimulationResult simulateStudy(const Experiment& experiment, SessionStore& store
   const auto start = std::chrono::steady_clock::now();
   TrialRunner runner(experiment, store, stimuli);
   if (options.progress) runner.onProgress(options.progress);
-  const std::int64_t experimentRow = store.registerExperiment(experiment, options.tlabVersion);
   SimulationResult result;
   for (int i = options.firstParticipant; i < options.firstParticipant + options.participants; ++i) {
     const std::string id = simulatedParticipantId(i);
-    const auto existing = store.findParticipant(experimentRow, id);
+    const auto existing = store.findParticipant(experiment.id, id);
     if (existing && !options.resume)
-      throw StoreError(store.database().path() + " already holds simulated participant '" + id +
+      throw StoreError(store.path() + " already holds simulated participant '" + id +
                        "'; continue with --resume or use a new database");
     if (existing && existing->status != "active") continue;
     SimulatedObserver observer(experiment.observer, options.observerSeed, id, options.paceSeconds);

@@ -17,20 +17,65 @@ const std::map<std::string, std::string> kDependentVariableSql = {
 
 }  // namespace
 
-StoredExperiment storedExperiment(SessionStore& store, const std::string& experimentId) {
-  Statement s = store.database().prepare("SELECT id, experiment_id, file_path, file_text FROM experiments ORDER BY id");
-  std::vector<std::tuple<std::int64_t, std::string, std::string, std::string>> rows;
-  while (s.step()) rows.emplace_back(s.integer(0), s.text(1), s.text(2), s.text(3));
-  std::string ids;
-  for (const auto& r : rows) ids += (ids.empty() ? "" : ", ") + std::get<1>(r);
-  if (rows.empty()) throw StoreError(store.database().path() + ": no experiment has been run into this database yet");
-  for (auto it = rows.rbegin(); it != rows.rend(); ++it) {
-    if (!experimentId.empty() && std::get<1>(*it) != experimentId) continue;
-    if (experimentId.empty() && rows.size() > 1 && std::get<1>(rows.front()) != std::get<1>(rows.back()))
-      throw StoreError(store.database().path() + " holds several experiments (" + ids + "); choose one with --experiment");
-    return {std::get<0>(*it), parseExperiment(std::get<3>(*it), store.database().path() + ":" + std::get<2>(*it))};
+namespace {
+
+std::vector<std::string> experimentIds(SessionStore& store) {
+  Statement s = store.database().prepare("SELECT experiment_id FROM experiments GROUP BY experiment_id ORDER BY min(id)");
+  std::vector<std::string> ids;
+  while (s.step()) ids.push_back(s.text(0));
+  return ids;
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& i : items) out += (out.empty() ? "" : ", ") + i;
+  return out;
+}
+
+std::vector<StoredVersion> storedVersions(SessionStore& store, const std::string& experimentId) {
+  std::vector<StoredVersion> all;
+  for (auto& v : store.versions(experimentId)) {
+    Statement count = store.database().prepare("SELECT count(*) FROM sessions WHERE experiment = ?1");
+    count.bind(1, v.row);
+    count.step();
+    const Experiment e = parseExperiment(v.fileText, store.path() + ":" + v.filePath, StimulusChecks::Skip);
+    all.push_back({v, designFingerprint(e), int(count.integer(0))});
   }
-  throw StoreError(store.database().path() + ": no experiment '" + experimentId + "' (it holds " + ids + ")");
+  std::vector<StoredVersion> withData;
+  for (const auto& v : all)
+    if (v.sessions > 0) withData.push_back(v);
+  return withData.empty() ? all : withData;
+}
+
+}  // namespace
+
+std::string StoredExperiment::describeVersions() const {
+  std::string out;
+  for (const auto& v : versions)
+    out += (out.empty() ? "" : "; ") + std::string("version ") + std::to_string(v.version.version) + " (file " +
+           v.version.sha256.substr(0, 8) + "…, design " + v.design.substr(0, 8) + "…, " + std::to_string(v.sessions) + " sessions)";
+  return out;
+}
+
+StoredExperiment storedExperiment(SessionStore& store, const std::string& experimentId, bool poolVersions) {
+  const auto ids = experimentIds(store);
+  if (ids.empty()) throw StoreError(store.path() + ": no experiment has been run into this database yet");
+  std::string id = experimentId;
+  if (id.empty() && ids.size() > 1)
+    throw StoreError(store.path() + " holds several experiments (" + joined(ids) + "); choose one with --experiment");
+  if (id.empty()) id = ids.front();
+  if (std::find(ids.begin(), ids.end(), id) == ids.end())
+    throw StoreError(store.path() + ": no experiment '" + id + "' (it holds " + joined(ids) + ")");
+  StoredExperiment stored;
+  stored.versions = storedVersions(store, id);
+  const auto& newest = stored.versions.back().version;
+  stored.row = newest.row;
+  stored.experiment = parseExperiment(newest.fileText, store.path() + ":" + newest.filePath, StimulusChecks::Skip);
+  for (const auto& v : stored.versions)
+    if (v.design != stored.versions.front().design && !poolVersions)
+      throw StoreError(store.path() + ": the data of experiment '" + id + "' come from versions whose designs differ (" +
+                       stored.describeVersions() + "); pool them anyway with --pool-versions");
+  return stored;
 }
 
 analysis::AnalysisPlan analysisPlan(const AnalysisSpec& spec, const std::string& dv) {
@@ -57,13 +102,13 @@ analysis::Table analysisTable(SessionStore& store, const StoredExperiment& store
   std::vector<std::string> names = {"participant"};
   for (const auto& f : e.factors) names.push_back(f.name);
   names.insert(names.end(), {"task", "block", dv});
-  analysis::Table table(store.database().path(), names);
+  analysis::Table table(store.path(), names);
   Statement s = store.database().prepare(
       "SELECT p.participant, t.levels_json, t.task_id, t.block, " + column->second + ", t.id FROM trials t "
       "JOIN participants p ON p.id = t.participant JOIN responses r ON r.trial = t.id "
-      "WHERE p.experiment = ?1 AND p.status != 'dropped' AND t.phase = 'test' AND " + column->second + " IS NOT NULL "
+      "JOIN experiments x ON x.id = p.experiment WHERE x.experiment_id = ?1 AND p.status != 'dropped' AND t.phase = 'test' AND " + column->second + " IS NOT NULL "
       "ORDER BY p.id, t.sequence");
-  s.bind(1, stored.row);
+  s.bind(1, e.id);
   while (s.step()) {
     const std::string taskId = s.text(2);
     if (!spec.tasks.empty() && std::find(spec.tasks.begin(), spec.tasks.end(), taskId) == spec.tasks.end()) continue;

@@ -9,19 +9,31 @@
 
 #include "analysis/report.hpp"
 #include "analysis/table.hpp"
+#include "study/design_fingerprint.hpp"
 #include "study/experiment.hpp"
 #include "study/session_store.hpp"
 
 namespace tlab::study {
 
-struct StoredExperiment {
-  std::int64_t row = 0;
-  Experiment experiment;
+// One version of the experiment file and what the database holds of it.
+struct StoredVersion {
+  ExperimentVersion version;
+  std::string design;  // designFingerprint of its text
+  int sessions = 0;
 };
 
-// The experiment of the database (its stored file text, parsed again). With several experiments
-// in one database, `experimentId` chooses; throws StoreError listing them otherwise.
-StoredExperiment storedExperiment(SessionStore& store, const std::string& experimentId = "");
+struct StoredExperiment {
+  std::int64_t row = 0;   // the newest version with data (or the newest)
+  Experiment experiment;  // its file text, parsed again
+  std::vector<StoredVersion> versions;  // the versions the data come from (every version when none has data)
+  // "version 1 (file 1a2b3c4d…, design 5e6f…, 12 sessions); version 2 (…)"
+  std::string describeVersions() const;
+};
+
+// The experiment of the database. With several experiments in one database, `experimentId`
+// chooses; throws StoreError listing them otherwise. Data from versions whose designs differ are
+// refused (naming the versions) unless `poolVersions`; versions that differ only in text pool.
+StoredExperiment storedExperiment(SessionStore& store, const std::string& experimentId = "", bool poolVersions = false);
 
 analysis::Table analysisTable(SessionStore& store, const StoredExperiment& stored, const AnalysisSpec& spec,
                               const std::string& dependentVariable);

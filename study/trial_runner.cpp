@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "study/fault_point.hpp"
 #include "study/session_plan.hpp"
 #include "tasks/answer_parser.hpp"
 #include "tasks/question_json.hpp"
@@ -96,7 +97,11 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
   if (limit <= 0.0) {
     response.note = "trial time limit reached";  // never shown: missing, which counts as wrong
   } else {
-    const TrialView view{plan, prepared, limit, plan.sequence, int(s.plan.trials.size())};
+    TrialView view{plan, prepared, limit, plan.sequence, int(s.plan.trials.size())};
+    view.onset = [&](std::int64_t tNs, const std::string& detail) {
+      store_.recordOnset(s.session, record.id, tNs, detail);
+      faultPoint("onset", ++onsets_);
+    };
     const auto given = s.responder.respond(view);
     storeEvents(s, record.id);
     if (!given) return false;
@@ -129,6 +134,7 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
   store_.recordResponse(r);
   s.usedSeconds[key] += response.rtSeconds.value_or(std::max(limit, 0.0));
   if (progress_) progress_({s.participant.participant, plan.sequence, int(s.plan.trials.size()), &plan, response.text, score.correct, response.rtSeconds});
+  faultPoint("ack", ++acks_);
   return true;
 }
 
@@ -146,8 +152,7 @@ void TrialRunner::stopAfterStorageError(Session& s, const SessionResult& result,
 }
 
 void checkParticipant(SessionStore& store, const Experiment& experiment, const RunOptions& options) {
-  const auto experimentRow = store.findExperiment(experiment.id);
-  const auto existing = experimentRow ? store.findParticipant(*experimentRow, options.participant) : std::nullopt;
+  const auto existing = store.findParticipant(experiment.id, options.participant);
   if (existing && existing->status == "finished")
     throw StoreError("participant '" + options.participant + "' has already finished experiment '" + experiment.id +
                      "'; a second run is refused (use a new participant id)");
@@ -157,25 +162,48 @@ void checkParticipant(SessionStore& store, const Experiment& experiment, const R
   if (existing && !options.resume)
     throw StoreError("participant '" + options.participant + "' has an unfinished session; continue it with --resume");
   if (!existing && options.resume)
-    throw StoreError("participant '" + options.participant + "' has no session to resume in " + store.database().path());
+    throw StoreError("participant '" + options.participant + "' has no session to resume in " + store.path());
+}
+
+std::vector<TrialRecord> TrialRunner::preparePlan(const SessionPlan& plan) {
+  std::vector<TrialRecord> records;
+  for (const auto& p : plan.trials) records.push_back(makeTrialRecord(p, stimuli_.prepare(p)));
+  return records;
+}
+
+// A newcomer: every stimulus of the slot's plan is prepared before anything is written, then the
+// version, the participant, the slot and the plan are stored in one transaction. Another station
+// may take the predicted slot meanwhile: then the next free slot's plan is prepared instead.
+ParticipantRecord TrialRunner::enrolNewcomer(const RunOptions& options, SessionPlan& plan) {
+  for (int attempt = 0;; ++attempt) {
+    const int slot = store_.nextFreeSlot(experiment_.id);
+    plan = makeSessionPlan(experiment_, design_, slot);
+    const auto records = preparePlan(plan);
+    if (auto p = store_.enrol(experiment_, options.tlabVersion, options.participant, slot, design_, records)) return *p;
+    if (attempt == 1000) throw StoreError(store_.path() + ": could not claim a free slot (other stations keep taking them)");
+  }
 }
 
 SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) {
-  const std::int64_t experimentRow = store_.registerExperiment(experiment_, options.tlabVersion);
   checkParticipant(store_, experiment_, options);
-  const auto existing = store_.findParticipant(experimentRow, options.participant);
-  Session s{responder, existing ? *existing : store_.enrol(experimentRow, options.participant, design_), 0, {}, {}, {}, {}};
-  s.plan = makeSessionPlan(experiment_, design_, s.participant.slot);
+  faultPoint("open");
+  const auto existing = store_.findParticipant(experiment_.id, options.participant);
+  Session s{responder, {}, 0, {}, {}, {}, {}};
+  if (existing) {
+    s.participant = *existing;
+    s.plan = makeSessionPlan(experiment_, design_, s.participant.slot);
+  } else {
+    s.participant = enrolNewcomer(options, s.plan);
+  }
   s.stored = store_.trials(s.participant.id);
-  if (s.stored.empty()) {
-    std::vector<TrialRecord> records;
-    for (const auto& p : s.plan.trials) records.push_back(makeTrialRecord(p, stimuli_.prepare(p)));
-    store_.insertTrials(s.participant.id, records);
+  if (s.stored.empty()) {  // a database from a tlab that stored the plan after enrolment
+    store_.insertTrials(s.participant.id, preparePlan(s.plan));
     s.stored = store_.trials(s.participant.id);
   }
   if (s.stored.size() != s.plan.trials.size())
     throw StoreError("participant '" + options.participant + "': the stored plan has " + std::to_string(s.stored.size()) +
-                     " trials but the experiment file gives " + std::to_string(s.plan.trials.size()));
+                     " trials but the experiment file gives " + std::to_string(s.plan.trials.size()) +
+                     " (the design changed since this participant began): use a new participant id");
 
   SessionResult result;
   result.slot = s.participant.slot;
@@ -183,18 +211,10 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
   std::size_t first = 0;
   while (first < s.stored.size() && s.stored[first].answered) ++first;
   for (const auto& t : s.stored) result.answeredBefore += t.answered ? 1 : 0;
-  // Time already spent on partly answered trials (trial time limits continue where they were).
-  {
-    Statement used = store_.database().prepare(
-        "SELECT t.phase, t.block, t.task_id, t.trial, coalesce(r.rt_seconds, t.time_limit) FROM responses r "
-        "JOIN trials t ON t.id = r.trial WHERE t.participant = ?1");
-    used.bind(1, s.participant.id);
-    while (used.step())
-      s.usedSeconds[used.text(0) + "/" + std::to_string(used.integer(1)) + "/" + used.text(2) + "/" + std::to_string(used.integer(3))] +=
-          used.real(4);
-  }
+  s.usedSeconds = store_.usedSeconds(s.participant.id);  // trial time limits continue where they were
 
-  s.session = store_.startSession(s.participant.id, responder.mode());
+  s.session = store_.startSession(s.participant.id, experiment_, options.tlabVersion, responder.mode());
+  faultPoint("session", ++sessions_);
   auto close = [&](SessionOutcome outcome) {
     storeEvents(s, std::nullopt);
     store_.endSession(s.session, outcome == SessionOutcome::Finished ? "finished" : "closed");

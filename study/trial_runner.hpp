@@ -13,6 +13,7 @@
 #include "study/counterbalancing.hpp"
 #include "study/experiment.hpp"
 #include "study/responder.hpp"
+#include "study/session_plan.hpp"
 #include "study/session_store.hpp"
 #include "study/stimulus_library.hpp"
 
@@ -63,11 +64,15 @@ class TrialRunner {
   // that was not stored and how many acknowledged responses are safe.
   [[noreturn]] void stopAfterStorageError(Session& s, const SessionResult& result, std::size_t index, const StoreError& e);
 
+  std::vector<TrialRecord> preparePlan(const SessionPlan& plan);
+  ParticipantRecord enrolNewcomer(const RunOptions& options, SessionPlan& plan);
+
   const Experiment& experiment_;
   SessionStore& store_;
   StimulusLibrary& stimuli_;
   Design design_;
   std::function<void(const TrialProgress&)> progress_;
+  int sessions_ = 0, onsets_ = 0, acks_ = 0;  // counts of this process (fault points)
 };
 
 // Throws StoreError with a clear message when the participant has finished, has dropped out, has

@@ -305,7 +305,8 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
     onsetSumMs_ += onsetMs;
     onsetMaxMs_ = std::max(onsetMaxMs_, onsetMs);
     layoutJson["present_ms"] = onsetMs;
-    event(onsetNs, "onset", layoutJson.dump());
+    if (view.onset) view.onset(onsetNs, layoutJson.dump());  // committed now, before any answer
+    else event(onsetNs, "onset", layoutJson.dump());
   }
   auto submit = [&](const std::string& text, std::int64_t t) -> std::optional<Response> {
     try {

@@ -244,6 +244,12 @@ const std::vector<BuiltinSceneSpec>& builtinScenes() {
 }
 
 Scene buildBuiltinScene(const std::string& nameAndQuery, const std::vector<BuiltinSceneSpec>& specs) {
+  const auto [spec, values] = parseBuiltinScene(nameAndQuery, specs);
+  return spec->build(values);
+}
+
+std::pair<const BuiltinSceneSpec*, std::map<std::string, double>> parseBuiltinScene(const std::string& nameAndQuery,
+                                                                                     const std::vector<BuiltinSceneSpec>& specs) {
   const auto q = nameAndQuery.find('?');
   const std::string name = nameAndQuery.substr(0, q);
   const auto spec = std::find_if(specs.begin(), specs.end(), [&](const auto& s) { return s.name == name; });
@@ -279,8 +285,7 @@ Scene buildBuiltinScene(const std::string& nameAndQuery, const std::vector<Built
       values[key] = v;
     }
   }
-  Scene scene = spec->build(values);
-  return scene;
+  return {&*spec, values};
 }
 
 }  // namespace tlab::render

@@ -34,6 +34,10 @@ const std::vector<BuiltinSceneSpec>& builtinScenes();
 // the bad part.
 Scene buildBuiltinScene(const std::string& nameAndQuery, const std::vector<BuiltinSceneSpec>& specs);
 
+// The same checks without building: the scene's spec and its parameter values (defaults filled in).
+std::pair<const BuiltinSceneSpec*, std::map<std::string, double>> parseBuiltinScene(const std::string& nameAndQuery,
+                                                                                     const std::vector<BuiltinSceneSpec>& specs);
+
 // Mesh primitives used by the scenes (and by later scene generators).
 TriangleMesh makeUvSphere(float radius, int segments, int rings);
 TriangleMesh makeBox(glm::vec3 halfExtent);

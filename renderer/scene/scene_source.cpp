@@ -14,4 +14,10 @@ Scene loadScene(const std::string& source, const std::vector<BuiltinSceneSpec>& 
   return loadGltfFile(source);
 }
 
+void checkSceneSource(const std::string& source, const std::vector<BuiltinSceneSpec>& catalog) {
+  constexpr std::string_view prefix = "builtin:";
+  if (source.rfind(prefix, 0) == 0) parseBuiltinScene(source.substr(prefix.size()), catalog);
+  else loadGltfFile(source);
+}
+
 }  // namespace tlab::render

@@ -12,4 +12,8 @@ namespace tlab::render {
 // libraries). Throws with a one-line message naming the scene source.
 Scene loadScene(const std::string& source, const std::vector<BuiltinSceneSpec>& catalog = builtinScenes());
 
+// The checks loadScene makes before the expensive work: a built-in's name and parameters, or a
+// glTF file that exists and loads. Throws the same one-line messages.
+void checkSceneSource(const std::string& source, const std::vector<BuiltinSceneSpec>& catalog = builtinScenes());
+
 }  // namespace tlab::render

@@ -1,5 +1,9 @@
-// Crash safety: a simulated session is killed with SIGKILL at random points (more than 20 times)
-// and resumed each time. No acknowledged response (printed only after its transaction committed)
+// Crash safety: a simulated session is killed with SIGKILL 24 times at points the test chooses
+// with a seeded random generator — at start-up, during stimulus preparation, right after a
+// stimulus onset was committed, inside a response transaction before its COMMIT, and after K
+// acknowledged responses — and resumed each time. The process stops itself at the chosen fault
+// point (TLAB_STOP_AT, study/fault_point.hpp) and is killed there, so every kill lands where it
+// was meant to on any machine, however fast. No acknowledged response (printed only after its transaction committed)
 // may be lost or duplicated, every trial ends with exactly one response, the responses follow the
 // planned order, and the final data equal those of an uninterrupted run with the same seeds.
 #include <gtest/gtest.h>
@@ -51,12 +55,38 @@ std::map<std::pair<std::string, int>, StoredResponse> readResponses(const std::s
 
 std::vector<std::string> simulateArgs(const std::string& db) {
   return {kTlab, "simulate", studyData("crash.toml"), "--participants", std::to_string(kParticipants), "--db", db, "--resume",
-          "--trials", "--pace", "0.002"};
+          "--trials"};
+}
+
+// Runs tlab with TLAB_STOP_AT=`point`; when it stops there, kills it. The exit code, or -SIGKILL.
+int runUntil(const std::vector<std::string>& args, const std::string& point, const std::string& out) {
+  const std::string env = "TLAB_STOP_AT=" + point;
+  const pid_t pid = spawnProcess(args, out, out + ".err", {env});
+  int status = 0;
+  ::waitpid(pid, &status, WUNTRACED);
+  if (WIFSTOPPED(status)) {
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -WTERMSIG(status);
+}
+
+// A fault point the run is sure to reach while `remaining` responses are still to come.
+std::string chooseKillPoint(std::mt19937& random, int run, int remaining) {
+  const int most = std::max(1, std::min(4, remaining - 1));
+  const int k = 1 + int(random() % std::uint32_t(most));
+  switch (run % 5) {
+    case 0: return "open";
+    case 1: return "prepare:" + std::to_string(k);
+    case 2: return "onset:" + std::to_string(k);
+    case 3: return "commit:" + std::to_string(k);
+    default: return "ack:" + std::to_string(k);
+  }
 }
 
 }  // namespace
 
-TEST(CrashSafety, SigkillAtRandomPointsLosesNothingAndDuplicatesNothing) {
+TEST(CrashSafety, SigkillAtChosenPointsLosesNothingAndDuplicatesNothing) {
   const auto dir = freshDir("crash");
   const std::string db = (dir / "crash.db").string(), reference = (dir / "reference.db").string();
   ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("crash.toml") + " --participants " + std::to_string(kParticipants) + " --db " +
@@ -65,36 +95,28 @@ TEST(CrashSafety, SigkillAtRandomPointsLosesNothingAndDuplicatesNothing) {
 
   std::mt19937 random(20261122);
   std::map<std::pair<std::string, int>, std::string> acknowledged;
+  std::map<std::string, int> killsAt;
   int kills = 0, runs = 0, duplicateAcks = 0;
   bool finished = false;
   while (!finished) {
-    ASSERT_LT(runs, 200) << "the session never finished";
+    ASSERT_LT(runs, 60) << "the session never finished";
     const std::string out = (dir / ("run" + std::to_string(runs) + ".out")).string();
-    const pid_t pid = spawnProcess(simulateArgs(db), out, out + ".err");
+    const int remaining = kParticipants * kTrialsPerParticipant - int(acknowledged.size());
+    const std::string point = kills < 24 && remaining > 1 ? chooseKillPoint(random, runs, remaining) : "";
+    const int code = runUntil(simulateArgs(db), point, out);
     ++runs;
-    int code;
-    if (kills < 24) {
-      if (runs % 3 != 0) {
-        // Anywhere, including start-up, planning and rendering.
-        std::this_thread::sleep_for(std::chrono::milliseconds(random() % 300));
-      } else {
-        // Inside a running session: after 1-2 acknowledged responses, plus up to 30 ms.
-        const std::size_t target = random() % 2;
-        for (int i = 0; i < 2500 && parseAcks(readText(out)).size() < target + 1; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(2));
-        std::this_thread::sleep_for(std::chrono::milliseconds(random() % 30));
-      }
-      ::kill(pid, SIGKILL);
-      code = waitProcess(pid);
-      if (code == -SIGKILL) ++kills;
-    } else {
-      code = waitProcess(pid);
-    }
     for (const auto& a : parseAcks(readText(out)))
       if (!acknowledged.emplace(std::make_pair(a.participant, a.sequence), a.answer).second) ++duplicateAcks;
-    if (code == 0) finished = readText(out).find("simulated ") != std::string::npos;
-    else ASSERT_EQ(code, -SIGKILL) << readText(out + ".err");
+    if (code == -SIGKILL) {
+      ++kills;
+      ++killsAt[point.substr(0, point.find(':'))];
+      continue;
+    }
+    ASSERT_EQ(code, 0) << point << ": " << readText(out + ".err");
+    finished = readText(out).find("simulated ") != std::string::npos;
   }
-  EXPECT_GE(kills, 20);
+  EXPECT_EQ(kills, 24);
+  for (const char* kind : {"open", "prepare", "onset", "commit", "ack"}) EXPECT_GE(killsAt[kind], 4) << kind;
   EXPECT_EQ(duplicateAcks, 0) << "a trial was acknowledged twice (answered again after a resume)";
 
   int duplicates = 0, trials = 0;
@@ -127,6 +149,20 @@ TEST(CrashSafety, SigkillAtRandomPointsLosesNothingAndDuplicatesNothing) {
   auto open = d.prepare("SELECT count(*) FROM sessions WHERE ended_at IS NULL");
   ASSERT_TRUE(open.step());
   EXPECT_GE(open.integer(0), 5);
+  // Sessions killed while running are marked as interrupted and resumed by the next one.
+  auto resumed = d.prepare("SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by IS NOT NULL");
+  ASSERT_TRUE(resumed.step());
+  EXPECT_GE(resumed.integer(0), 5);
+  // Every stimulus shown was logged when it was shown: each answered trial has an onset before its
+  // response, and trials whose session was killed after the onset were shown again and say so.
+  auto unseen = d.prepare("SELECT count(*) FROM responses r WHERE NOT EXISTS "
+                          "(SELECT 1 FROM events e WHERE e.trial = r.trial AND e.kind = 'onset' AND e.id < "
+                          "(SELECT min(id) FROM events e2 WHERE e2.trial = r.trial AND e2.kind = 'response'))");
+  ASSERT_TRUE(unseen.step());
+  EXPECT_EQ(unseen.integer(0), 0);
+  auto repeats = d.prepare("SELECT count(*) FROM events WHERE kind = 'onset' AND detail LIKE '%shown again%'");
+  ASSERT_TRUE(repeats.step());
+  EXPECT_GE(repeats.integer(0), 4);  // at least the onset and commit kills
   auto finishedCount = d.prepare("SELECT count(*) FROM participants WHERE status = 'finished'");
   ASSERT_TRUE(finishedCount.step());
   EXPECT_EQ(finishedCount.integer(0), kParticipants);

@@ -8,6 +8,7 @@
 #include "study/csv_export.hpp"
 #include "study/experiment_file.hpp"
 #include "study/session_store.hpp"
+#include "study/study_table.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 
@@ -71,34 +72,103 @@ TEST(SessionStore, DroppedOutSlotGoesToTheNextNewcomer) {
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   const Design design = makeDesign(e);
   SessionStore store((dir / "s.db").string());
-  const auto row = store.registerExperiment(e, "test");
-  EXPECT_EQ(store.registerExperiment(e, "test"), row);
-  EXPECT_EQ(store.enrol(row, "a", design).slot, 0);
-  EXPECT_EQ(store.enrol(row, "b", design).slot, 1);
-  EXPECT_EQ(store.enrol(row, "c", design).slot, 2);
-  store.dropParticipant(row, "b", "moved away");
-  EXPECT_THROW(store.dropParticipant(row, "b", "again"), StoreError);
-  EXPECT_EQ(store.enrol(row, "d", design).slot, 1);
-  EXPECT_EQ(store.enrol(row, "e", design).slot, 3);
-  const auto assignments = store.assignments(row);
+  auto enrol = [&](const std::string& who) { return store.enrol(e, "test", who, store.nextFreeSlot(e.id), design, {fakeTrial(1)})->slot; };
+  EXPECT_EQ(enrol("a"), 0);
+  EXPECT_EQ(enrol("b"), 1);
+  EXPECT_EQ(enrol("c"), 2);
+  store.dropParticipant(e.id, "b", "moved away");
+  EXPECT_THROW(store.dropParticipant(e.id, "b", "again"), StoreError);
+  EXPECT_EQ(enrol("d"), 1);
+  EXPECT_EQ(enrol("e"), 3);
+  const auto assignments = store.assignments(e.id);
   ASSERT_EQ(assignments.size(), 5u);
   EXPECT_EQ(assignments[1].participant, "b");
   EXPECT_EQ(assignments[1].status, "dropped");
   EXPECT_EQ(assignments[2].participant, "d");
   EXPECT_EQ(assignments[2].row, 1);
-  Experiment changed = e;
-  changed.text += "\n# edited\n";
-  EXPECT_THROW(store.registerExperiment(changed, "test"), StoreError);
+  EXPECT_EQ(store.versions(e.id).size(), 1u);  // the same file is one version
+}
+
+TEST(SessionStore, ATakenSlotWritesNothingAndAKnownParticipantIsRefused) {
+  const auto dir = freshDir("store_taken_slot");
+  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
+  const Design design = makeDesign(e);
+  SessionStore store((dir / "s.db").string());
+  ASSERT_TRUE(store.enrol(e, "test", "a", 0, design, {fakeTrial(1)}));
+  EXPECT_FALSE(store.enrol(e, "test", "b", 0, design, {fakeTrial(1)}));  // slot 0 is taken: nothing written
+  EXPECT_FALSE(store.findParticipant(e.id, "b"));
+  EXPECT_THROW(store.enrol(e, "test", "a", 1, design, {fakeTrial(1)}), StoreError);
+  Statement count = store.database().prepare("SELECT (SELECT count(*) FROM participants), (SELECT count(*) FROM trials)");
+  ASSERT_TRUE(count.step());
+  EXPECT_EQ(count.integer(0), 1);
+  EXPECT_EQ(count.integer(1), 1);
+}
+
+TEST(SessionStore, AnEditedFileIsANewVersionAndEverySessionRecordsItsVersion) {
+  const auto dir = freshDir("store_versions");
+  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
+  const Design design = makeDesign(e);
+  SessionStore store((dir / "s.db").string());
+  const auto a = *store.enrol(e, "test", "a", 0, design, {fakeTrial(1)});
+  const auto first = store.startSession(a.id, e, "test", "simulated");
+  Experiment edited = e;
+  edited.text += "\n# instructions edited while piloting\n";
+  const auto b = *store.enrol(edited, "test", "b", 1, design, {fakeTrial(1)});
+  const auto second = store.startSession(b.id, edited, "test", "simulated");
+  const auto versions = store.versions(e.id);
+  ASSERT_EQ(versions.size(), 2u);
+  EXPECT_EQ(versions[0].version, 1);
+  EXPECT_EQ(versions[1].version, 2);
+  EXPECT_EQ(store.findVersion(edited)->row, versions[1].row);
+  Statement s = store.database().prepare("SELECT experiment FROM sessions WHERE id IN (?1, ?2) ORDER BY id");
+  s.bind(1, first).bind(2, second);
+  ASSERT_TRUE(s.step());
+  EXPECT_EQ(s.integer(0), versions[0].row);
+  ASSERT_TRUE(s.step());
+  EXPECT_EQ(s.integer(0), versions[1].row);
+}
+
+TEST(SessionStore, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
+  const auto dir = freshDir("store_session_claim");
+  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
+  SessionStore store((dir / "s.db").string());
+  const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
+  const auto open = store.startSession(p.id, e, "test", "window");  // this process: alive
+  EXPECT_THROW(store.startSession(p.id, e, "test", "window"), SessionConflict);
+  // The same session as if its process had died (another start time on this host): resumed.
+  Statement dead = store.database().prepare("UPDATE sessions SET process_start = 'not-this-process' WHERE id = ?1");
+  dead.bind(1, open).run();
+  const auto resumed = store.startSession(p.id, e, "test", "window");
+  Statement s = store.database().prepare("SELECT end_reason, resumed_by, ended_at IS NULL FROM sessions WHERE id = ?1");
+  s.bind(1, open);
+  ASSERT_TRUE(s.step());
+  EXPECT_EQ(s.text(0), "interrupted");
+  EXPECT_EQ(s.integer(1), resumed);
+  EXPECT_EQ(s.integer(2), 1);  // when it really ended is unknown: left empty
+}
+
+TEST(SessionStore, OnsetsAreCommittedAndCountShowings) {
+  const auto dir = freshDir("store_onsets");
+  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
+  SessionStore store((dir / "s.db").string());
+  const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
+  const auto session = store.startSession(p.id, e, "test", "simulated");
+  const auto trial = store.trials(p.id).at(0).id;
+  EXPECT_EQ(store.recordOnset(session, trial, 100, R"({"present_ms":1.5})"), 1);
+  EXPECT_EQ(store.recordOnset(session, trial, 200, R"({"present_ms":1.5})"), 2);
+  Statement s = store.database().prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
+  ASSERT_TRUE(s.step());
+  EXPECT_EQ(s.text(0), R"({"present_ms":1.5,"showing":1})");
+  ASSERT_TRUE(s.step());
+  EXPECT_NE(s.text(0).find("shown again after an interruption"), std::string::npos) << s.text(0);
 }
 
 TEST(SessionStore, OneResponsePerTrial) {
   const auto dir = freshDir("store_unique");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   SessionStore store((dir / "s.db").string());
-  const auto row = store.registerExperiment(e, "test");
-  const auto p = store.enrol(row, "p", makeDesign(e));
-  store.insertTrials(p.id, {fakeTrial(1)});
-  const auto session = store.startSession(p.id, "simulated");
+  const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
+  const auto session = store.startSession(p.id, e, "test", "simulated");
   ResponseRecord r;
   r.trial = store.trials(p.id).at(0).id;
   r.session = session;
@@ -118,12 +188,10 @@ TEST(SessionStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
   const auto texts = hostileTexts();
   {
     SessionStore store((dir / "s.db").string());
-    const auto row = store.registerExperiment(e, "test");
     for (std::size_t i = 0; i < texts.size(); ++i) {
       const std::string id = texts[i] + "#" + std::to_string(i);  // ids must differ
-      const auto p = store.enrol(row, id, design);
-      store.insertTrials(p.id, {fakeTrial(1)});
-      const auto session = store.startSession(p.id, "simulated");
+      const auto p = *store.enrol(e, "test", id, int(i), design, {fakeTrial(1)});
+      const auto session = store.startSession(p.id, e, "test", "simulated");
       ResponseRecord r;
       r.trial = store.trials(p.id).at(0).id;
       r.session = session;
@@ -139,7 +207,7 @@ TEST(SessionStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
     Statement s = store.database().prepare(std::string("SELECT count(*) FROM ") + table);
     EXPECT_TRUE(s.step()) << table;  // every table survived
   }
-  const StoredExperiment stored{*store.findExperiment("tiny"), e};
+  const StoredExperiment stored = storedExperiment(store);
   exportCsv(store, stored, (dir / "csv").string());
   const auto rows = parseCsv(readText((dir / "csv" / "trials.csv").string()));
   ASSERT_EQ(rows.size(), texts.size() + 1);

@@ -116,7 +116,7 @@ class ImmutableFile {
 
 TEST(StorageFaults, FullDiskStopsCleanlyAndResumeCompletes) {
   const auto dir = freshDir("fault_disk_full") / "disk";
-  TinyFilesystem disk(dir, 1024);
+  TinyFilesystem disk(dir, 8192);  // room for the write-ahead log (up to 1000 pages before a checkpoint)
   if (!disk.mounted()) GTEST_SKIP() << "needs root to mount a tmpfs";
   const std::string db = (dir / "study.db").string();
   ASSERT_EQ(simulate(db, 1).exitCode, 0);
@@ -195,25 +195,39 @@ TEST(StorageFaults, DatabaseFromANewerTlabIsRefusedUntouched) {
 
 TEST(StorageFaults, SchemaOneDatabaseIsMigratedAndKeepsItsResponses) {
   const auto dir = freshDir("fault_migrate");
-  const std::string db = (dir / "study.db").string();
-  ASSERT_EQ(simulate(db, 1).exitCode, 0);
-  const auto before = storedAnswers(db);
+  const std::string db = (dir / "study.db").string(), current = (dir / "current.db").string();
+  ASSERT_EQ(simulate(current, 1).exitCode, 0);
+  const auto before = storedAnswers(current);
   {
-    // What the schema-1 tlab left: the version-2 additions removed.
-    Database d(db, false);
-    d.execute("DROP TABLE schema_migrations; DROP INDEX responses_by_session; DROP INDEX events_by_session;"
-              "ALTER TABLE sessions DROP COLUMN station; PRAGMA user_version = 1");
+    // What the schema-1 tlab left: its tables, holding the rows of a current run.
+    Database d(db, true);
+    tlab::study::migrateSchema(d, 1);
+    d.execute(("ATTACH '" + current + "' AS src").c_str());
+    d.execute("INSERT INTO experiments SELECT id, experiment_id, file_path, file_text, sha256, tlab_version, created_at FROM src.experiments;"
+              "INSERT INTO participants SELECT * FROM src.participants; INSERT INTO assignments SELECT * FROM src.assignments;"
+              "INSERT INTO sessions SELECT id, participant, mode, started_at, ended_at, end_reason FROM src.sessions;"
+              "INSERT INTO trials SELECT * FROM src.trials; INSERT INTO responses SELECT * FROM src.responses;"
+              "INSERT INTO events SELECT * FROM src.events; INSERT INTO questionnaire_answers SELECT * FROM src.questionnaire_answers;"
+              "DETACH src");
   }
+  // A reader migrates a copy in memory and leaves the old file as it was.
+  const std::string oldBytes = readText(db);
+  EXPECT_EQ(runCommand(kTlab + " export " + tlab::testing::quoted(db) + " --csv " + tlab::testing::quoted((dir / "csv").string())).exitCode, 0);
+  EXPECT_TRUE(readText(db) == oldBytes) << "a reader changed the schema-1 file";
   ASSERT_EQ(simulate(db, 2).exitCode, 0);
   Database d(db, false);
   EXPECT_EQ(d.userVersion(), tlab::study::latestSchemaVersion());
   auto migrations = d.prepare("SELECT group_concat(version) FROM schema_migrations");
   ASSERT_TRUE(migrations.step());
-  EXPECT_EQ(migrations.text(0), "2");
+  EXPECT_EQ(migrations.text(0), "2,3");
   auto stations = d.prepare("SELECT count(*), count(station) FROM sessions");
   ASSERT_TRUE(stations.step());
   EXPECT_EQ(stations.integer(0), 2);
   EXPECT_EQ(stations.integer(1), 1) << "only the session run after the migration knows its station";
+  auto versions = d.prepare("SELECT count(*), min(version) FROM experiments");
+  ASSERT_TRUE(versions.step());
+  EXPECT_EQ(versions.integer(0), 1);
+  EXPECT_EQ(versions.integer(1), 1);
   const auto after = storedAnswers(db);
   for (const auto& [key, answer] : before) EXPECT_EQ(after.at(key), answer);
   expectComplete(db, 2);
