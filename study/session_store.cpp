@@ -8,6 +8,7 @@
 #include <ctime>
 #include <fstream>
 #include <sstream>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 #include <sqlite3.h>
@@ -56,6 +57,27 @@ std::unique_ptr<Database> memoryCopy(Database& from) {
   return copy;
 }
 
+// PRAGMA journal_mode=WAL on a new file needs an exclusive lock while this connection already
+// reads the file, and SQLite then answers BUSY at once, without its busy handler, whenever
+// another process is reading it at that moment (two stations opening a new database together).
+// So it is retried here, within the same deadline as every other wait.
+void switchToWal(Database& db) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(kBusyTimeoutMs);
+  for (int attempt = 0;; ++attempt) {
+    try {
+      Statement mode = db.prepare("PRAGMA journal_mode=WAL");
+      if (mode.step() && mode.text(0) == "wal") return;
+    } catch (const StoreError& e) {
+      if ((e.code() & 0xff) != SQLITE_BUSY && (e.code() & 0xff) != SQLITE_LOCKED) throw;
+    }
+    if (std::chrono::steady_clock::now() > deadline)
+      throw StoreError(db.path() + ": cannot switch the database to write-ahead logging: another process kept it locked for " +
+                           std::to_string(kBusyTimeoutMs / 1000) + " s; let it finish, then try again",
+                       SQLITE_BUSY);
+    std::this_thread::sleep_for(std::chrono::milliseconds(std::min(50, 1 << std::min(attempt, 6))));
+  }
+}
+
 }  // namespace
 
 std::string stationName() { return hostName() + ":" + std::to_string(getpid()); }
@@ -89,8 +111,7 @@ SessionStore::SessionStore(const std::string& path, OpenMode mode) : path_(path)
   if (mode != OpenMode::Read && std::filesystem::exists(path) && std::filesystem::file_size(path) > 0) requireSqliteFile(path);
   db_ = std::make_unique<Database>(path, mode);
   // Everything before the first write only reads: a foreign, damaged or newer file stays untouched.
-  const int version = db_->userVersion();
-  requireStudyDatabase(version);
+  const int version = requireStudyDatabase();
   checkIntegrity();
   if (mode == OpenMode::Read) {
     if (version < kSchemaVersion) {
@@ -99,28 +120,30 @@ SessionStore::SessionStore(const std::string& path, OpenMode mode) : path_(path)
     }
     return;
   }
-  db_->execute("PRAGMA journal_mode=WAL");
+  switchToWal(*db_);
   db_->execute("PRAGMA synchronous=FULL");
   db_->execute("PRAGMA foreign_keys=ON");
   migrateSchema(*db_);
 }
 
-void SessionStore::requireStudyDatabase(int version) {
+int SessionStore::requireStudyDatabase() {
+  // One statement, one snapshot: another station may be creating the schema right now (its tables
+  // and its user_version commit together).
+  Statement s = db_->prepare("SELECT (SELECT user_version FROM pragma_user_version), group_concat(name, ', '), "
+                             "coalesce(sum(name IN ('experiments', 'trials', 'responses')), 0) FROM sqlite_master WHERE type = 'table'");
+  s.step();
+  const int version = int(s.integer(0));
+  const std::string names = s.isNull(1) ? "" : s.text(1);
   if (version > kSchemaVersion)
     throw StoreError(path_ + ": written by a newer tlab (schema version " + std::to_string(version) + "; this tlab reads up to " +
                      std::to_string(kSchemaVersion) + "): open it with that tlab or a newer one; nothing was changed");
-  Statement tables = db_->prepare("SELECT group_concat(name, ', '), sum(name IN ('experiments', 'trials', 'responses')) "
-                                  "FROM sqlite_master WHERE type = 'table'");
-  tables.step();
-  const std::string names = tables.isNull(0) ? "" : tables.text(0);
-  const bool empty = names.empty();
-  if (version == 0 && !empty)  // another process may be creating the schema: its tables and version commit together
+  if (version == 0 && !names.empty())
     throw StoreError(path_ + ": not a tlab study database (it has other tables: " + names + "); nothing was changed");
-  if (version > 0 && tables.integer(1) != 3)
-    throw StoreError(path_ + ": not a tlab study database (its tables are " + (empty ? std::string("none") : names) +
+  if (version > 0 && s.integer(2) != 3)
+    throw StoreError(path_ + ": not a tlab study database (its tables are " + (names.empty() ? std::string("none") : names) +
                      "); nothing was changed");
-  if (db_->readOnly() && version == 0)
-    throw StoreError(path_ + ": an empty database: no experiment has been run into it yet");
+  if (db_->readOnly() && version == 0) throw StoreError(path_ + ": an empty database: no experiment has been run into it yet");
+  return version;
 }
 
 void SessionStore::checkIntegrity() {

@@ -149,7 +149,7 @@ class SessionStore {
   bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block);
 
  private:
-  void requireStudyDatabase(int version);
+  int requireStudyDatabase();  // the schema version
   void checkIntegrity();
   ExperimentVersion ensureVersion(const Experiment& experiment, const std::string& tlabVersion);
   std::string path_;

@@ -3,7 +3,11 @@
 // exported byte for byte.
 #include <gtest/gtest.h>
 
+#include <atomic>
+#include <chrono>
+#include <mutex>
 #include <filesystem>
+#include <thread>
 
 #include "study/csv_export.hpp"
 #include "study/experiment_file.hpp"
@@ -65,6 +69,35 @@ TEST(SessionStore, SchemaVersionAndWal) {
     other.execute("CREATE TABLE mine (x)");
   }
   EXPECT_THROW(SessionStore((dir / "other.db").string()), StoreError);
+}
+
+// The two-station bug: two processes opening a new file both switch it to WAL; each holds a read
+// lock when it asks for the write lock, and SQLite answers one of them BUSY at once, without its
+// busy handler (deadlock avoidance). The store retries the switch within its busy deadline.
+TEST(SessionStore, StationsOpeningOneNewDatabaseTogetherAllSucceed) {
+  const auto dir = freshDir("store_new_file_together");
+  int failures = 0;
+  std::string lastError;
+  for (int round = 0; round < 40; ++round) {
+    const std::string path = (dir / ("s" + std::to_string(round) + ".db")).string();
+    std::atomic<int> ready{0};
+    std::mutex m;
+    auto station = [&] {
+      ++ready;
+      while (ready < 4) std::this_thread::yield();
+      try {
+        SessionStore store(path);
+      } catch (const StoreError& e) {
+        std::lock_guard<std::mutex> lock(m);
+        ++failures;
+        lastError = e.what();
+      }
+    };
+    std::vector<std::thread> stations;
+    for (int i = 0; i < 4; ++i) stations.emplace_back(station);
+    for (auto& t : stations) t.join();
+  }
+  EXPECT_EQ(failures, 0) << lastError;
 }
 
 TEST(SessionStore, DroppedOutSlotGoesToTheNextNewcomer) {
