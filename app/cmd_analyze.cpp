@@ -14,6 +14,7 @@
 #include "app/analysis_text.hpp"
 #include "app/commands.hpp"
 #include "study/study_analysis.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -54,7 +55,8 @@ nlohmann::json toJson(const study::StudyAnalysis& a) {
 }
 
 void run(const AnalyzeOptions& o) {
-  study::SessionStore store(o.db, study::OpenMode::Read);
+  const auto storeOwner = study::openStore(o.db, study::OpenMode::Read);
+  study::Store& store = *storeOwner;
   const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, o.poolVersions);
   if (stored.experiment.analyses.empty()) throw std::runtime_error(stored.experiment.path + ": the experiment plans no [[analysis]]");
   const auto analyses = study::analyzeStudy(store, stored);

@@ -10,7 +10,7 @@
 #include "study/counterbalancing.hpp"
 #include "study/experiment_file.hpp"
 #include "study/session_plan.hpp"
-#include "study/session_store.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -66,7 +66,8 @@ void run(const DesignOptions& o) {
   std::printf("test records in total: %d\n", total);
 
   if (o.db.empty()) return;
-  study::SessionStore store(o.db, study::OpenMode::Read);
+  const auto storeOwner = study::openStore(o.db, study::OpenMode::Read);
+  study::Store& store = *storeOwner;
   if (!store.findExperiment(e.id)) {
     std::printf("%s: no participant of experiment '%s' yet\n", o.db.c_str(), e.id.c_str());
     return;

@@ -7,6 +7,7 @@
 
 #include "app/commands.hpp"
 #include "study/study_table.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -20,8 +21,8 @@ struct DropOptions {
 };
 
 void run(const DropOptions& o) {
-  study::requireSqliteFile(o.db);
-  study::SessionStore store(o.db, study::OpenMode::Write);
+  const auto storeOwner = study::openStore(o.db, study::OpenMode::Write);
+  study::Store& store = *storeOwner;
   const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, true);
   store.dropParticipant(stored.experiment.id, o.participant, o.reason);
   std::printf("participant dropped; their slot goes to the next new participant\n");

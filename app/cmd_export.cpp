@@ -6,6 +6,7 @@
 
 #include "app/commands.hpp"
 #include "study/csv_export.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -19,7 +20,8 @@ struct ExportOptions {
 };
 
 void run(const ExportOptions& o) {
-  study::SessionStore store(o.db, study::OpenMode::Read);
+  const auto storeOwner = study::openStore(o.db, study::OpenMode::Read);
+  study::Store& store = *storeOwner;
   const study::StoredExperiment stored = study::storedExperiment(store, o.experiment, o.poolVersions);
   std::printf("experiment '%s': data from %s\n", stored.experiment.id.c_str(), stored.describeVersions().c_str());
   for (const auto& path : study::exportCsv(store, stored, o.csv)) std::printf("wrote %s\n", path.c_str());

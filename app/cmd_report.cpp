@@ -15,6 +15,7 @@
 #include "analysis/report_markdown.hpp"
 #include "app/commands.hpp"
 #include "study/study_analysis.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -64,7 +65,8 @@ std::string numbered(const std::string& path, std::size_t index) {
 void runDatabase(const ReportOptions& o) {
   if (!o.dvs.empty() || !o.within.empty() || !o.between.empty() || !o.subject.empty())
     throw an::AnalysisError("a study database is reported by its experiment's analysis plan; --dv/--within/--between/--subject are for CSV files");
-  study::SessionStore store(o.file, study::OpenMode::Read);
+  const auto storeOwner = study::openStore(o.file, study::OpenMode::Read);
+  study::Store& store = *storeOwner;
   const study::StoredExperiment stored = study::storedExperiment(store, "", o.poolVersions);
   const auto analyses = study::analyzeStudy(store, stored);
   if (analyses.empty()) throw an::AnalysisError(o.file + ": the experiment plans no [[analysis]]");

@@ -11,6 +11,7 @@
 #include "study/experiment_file.hpp"
 #include "study/trial_runner.hpp"
 #include "study/window_responder.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -41,7 +42,8 @@ void run(const RunCommandOptions& o) {
   if (o.participant.empty()) throw std::invalid_argument("--participant: must not be empty");
   const study::Experiment e = study::readExperimentFile(o.experiment);
   const auto [width, height] = parseSize(o.size);
-  study::SessionStore store(o.db);
+  const auto storeOwner = study::openStore(o.db);
+  study::Store& store = *storeOwner;
   const study::RunOptions run{o.participant, o.resume, TLAB_VERSION "+" TLAB_GIT_REVISION};
   study::checkParticipant(store, e, run);  // refuse before opening a window
   auto window = openParticipantWindow(width, height, "tlab run - " + e.id);

@@ -14,6 +14,7 @@
 #include "study/experiment_file.hpp"
 #include "study/power_analysis.hpp"
 #include "study/study_simulation.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::app {
 
@@ -75,7 +76,8 @@ void run(const SimulateOptions& o) {
   study::TextPainter painter;
   study::StimulusLibrary stimuli(study::stimulusDirectoryFor(o.db), sceneCatalog(), painter);
   if (o.replicates > 0) return runPower(e, o, stimuli, participants);
-  study::SessionStore store(o.db);
+  const auto storeOwner = study::openStore(o.db);
+  study::Store& store = *storeOwner;
   study::SimulationOptions s;
   s.participants = participants;
   s.firstParticipant = o.first;

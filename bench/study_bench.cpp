@@ -10,7 +10,7 @@
 #include "study/experiment_file.hpp"
 #include "study/graeco_latin_square.hpp"
 #include "study/session_plan.hpp"
-#include "study/session_store.hpp"
+#include "study/open_store.hpp"
 #include "study/williams_design.hpp"
 
 using namespace tlab::study;
@@ -79,7 +79,8 @@ static void BM_RecordResponse(benchmark::State& state) {
   std::filesystem::remove(path);
   const Experiment e = elmqvistDesign();
   {
-    SessionStore store(path.string());
+    const auto storeOwner = openStore(path.string());
+    Store& store = *storeOwner;
     const int n = 200000;
     std::vector<TrialRecord> trials(static_cast<std::size_t>(n));
     for (int i = 0; i < n; ++i) {

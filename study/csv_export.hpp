@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "study/session_store.hpp"
+#include "study/store.hpp"
 #include "study/study_table.hpp"
 
 namespace tlab::study {
@@ -20,6 +20,6 @@ namespace tlab::study {
 std::string csvField(const std::string& text);
 
 // Writes the five files into `directory` (created if needed); returns their paths.
-std::vector<std::string> exportCsv(SessionStore& store, const StoredExperiment& stored, const std::string& directory);
+std::vector<std::string> exportCsv(Store& store, const StoredExperiment& stored, const std::string& directory);
 
 }  // namespace tlab::study

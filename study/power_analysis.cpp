@@ -6,6 +6,7 @@
 #include "study/order_permutations.hpp"
 #include "study/study_analysis.hpp"
 #include "study/study_simulation.hpp"
+#include "study/open_store.hpp"
 
 namespace tlab::study {
 
@@ -16,7 +17,8 @@ std::vector<PowerEntry> powerAnalysis(const Experiment& experiment, StimulusLibr
     const auto path = std::filesystem::path(options.workDirectory) / ("replicate-" + std::to_string(r) + ".db");
     for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
     {
-      SessionStore store(path.string());
+      const auto storeOwner = openStore(path.string());
+      Store& store = *storeOwner;
       SimulationOptions sim;
       sim.participants = options.participants;
       sim.observerSeed = mixSeed(experiment.seed, "replicate:" + std::to_string(r));

@@ -1,6 +1,6 @@
 #include "study/schema_migrations.hpp"
 
-#include "study/session_store.hpp"
+#include "study/store.hpp"
 
 namespace tlab::study {
 

@@ -8,6 +8,8 @@
 #include <string>
 #include <string_view>
 
+#include "study/store_basics.hpp"
+
 struct sqlite3;
 struct sqlite3_stmt;
 
@@ -16,30 +18,16 @@ namespace tlab::study {
 // How long a connection waits for another process's write lock before it gives up.
 inline constexpr int kBusyTimeoutMs = 10000;
 
-// A storage failure. Messages from SQLite say what happened and what to do ("... is full: free
-// space, then continue with --resume"); `code` is SQLite's extended result code (0: not SQLite's).
-class StoreError : public std::runtime_error {
- public:
-  explicit StoreError(const std::string& message, int code = 0) : std::runtime_error(message), code_(code) {}
-  int code() const { return code_; }
-
- private:
-  int code_ = 0;
-};
-
 // The extended result code of the connection's last failure.
 int sqliteCode(sqlite3* db);
 
 class Statement;
 
-// How a database file is opened. Read never writes a byte: it checks that the file is an SQLite
-// file first, opens it read-only, and where no write-ahead log exists (a cleanly closed database)
-// opens it immutable, so no -wal/-shm files appear beside it and read-only folders and media work.
-enum class OpenMode { Create, Write, Read };
-
 class Database {
  public:
-  // Opens the file; a connection that must wait for another process's lock waits up to
+  // Opens the file. Read checks the SQLite header first, opens read-only, and where no write-ahead
+  // log exists (a cleanly closed database) immutable, so no -wal/-shm files appear beside it and
+  // read-only folders and media work. A connection that must wait for another process's lock waits up to
   // kBusyTimeoutMs (its busy handler records how long it waited, for honest messages).
   Database(const std::string& path, OpenMode mode);
   Database(const std::string& path, bool create) : Database(path, create ? OpenMode::Create : OpenMode::Write) {}

@@ -68,13 +68,13 @@ std::vector<PlannedPValue> StudyAnalysis::pValues() const {
   return out;
 }
 
-std::vector<StudyAnalysis> analyzeStudy(SessionStore& store, const StoredExperiment& stored) {
+std::vector<StudyAnalysis> analyzeStudy(Store& store, const StoredExperiment& stored) {
   std::vector<StudyAnalysis> out;
   for (const auto& spec : stored.experiment.analyses) {
     StudyAnalysis a;
     a.spec = spec;
     a.report.title = spec.title;
-    a.report.source = store.database().path();
+    a.report.source = store.location();
     for (const auto& dv : spec.dependentVariables) {
       try {
         const analysis::Table table = analysisTable(store, stored, spec, dv);

@@ -34,6 +34,6 @@ struct StudyAnalysis {
   std::vector<PlannedPValue> pValues() const;
 };
 
-std::vector<StudyAnalysis> analyzeStudy(SessionStore& store, const StoredExperiment& stored);
+std::vector<StudyAnalysis> analyzeStudy(Store& store, const StoredExperiment& stored);
 
 }  // namespace tlab::study

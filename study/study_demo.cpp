@@ -16,7 +16,7 @@
 #include "study/example_experiments.hpp"
 #include "study/experiment_file.hpp"
 #include "study/session_plan.hpp"
-#include "study/session_store.hpp"
+#include "study/open_store.hpp"
 #include "study/stimulus_library.hpp"
 #include "study/study_simulation.hpp"
 #include "study/study_table.hpp"
@@ -96,7 +96,7 @@ Prepared prepareAll(const Experiment& experiment, int participants, StimulusLibr
 }
 
 // The dependent variable's mean per task (columns) and level of `factor` (rows), from the records.
-analysis::TextTable summaryTable(SessionStore& store, const StoredExperiment& stored, const AnalysisSpec& spec) {
+analysis::TextTable summaryTable(Store& store, const StoredExperiment& stored, const AnalysisSpec& spec) {
   const std::string dv = spec.dependentVariables.front();
   const std::string factor = !spec.within.empty() ? spec.within.front() : !spec.between.empty() ? spec.between.front() : "";
   AnalysisSpec all = spec;
@@ -182,7 +182,8 @@ DemoResult runDemo(const DemoOptions& o, const std::vector<render::BuiltinSceneS
 
   start = Clock::now();
   {
-    SessionStore store(result.databasePath);
+    const auto storeOwner = openStore(result.databasePath);
+    Store& store = *storeOwner;
     stimuli::ProgressBar bar("participants", std::size_t(result.participants), o.progressBars);
     SimulationOptions s;
     s.participants = result.participants;
@@ -197,7 +198,8 @@ DemoResult runDemo(const DemoOptions& o, const std::vector<render::BuiltinSceneS
   say(line);
 
   start = Clock::now();
-  SessionStore store(result.databasePath, OpenMode::Read);
+  const auto storeOwner = openStore(result.databasePath, OpenMode::Read);
+  Store& store = *storeOwner;
   const StoredExperiment stored = storedExperiment(store);
   result.analyses = analyzeStudy(store, stored);
   analysis::ReportPage page;

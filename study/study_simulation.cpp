@@ -13,7 +13,7 @@ std::string simulatedParticipantId(int index) {
   return buf;
 }
 
-SimulationResult simulateStudy(const Experiment& experiment, SessionStore& store, StimulusLibrary& stimuli,
+SimulationResult simulateStudy(const Experiment& experiment, Store& store, StimulusLibrary& stimuli,
                                const SimulationOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   TrialRunner runner(experiment, store, stimuli);
@@ -23,7 +23,7 @@ SimulationResult simulateStudy(const Experiment& experiment, SessionStore& store
     const std::string id = simulatedParticipantId(i);
     const auto existing = store.findParticipant(experiment.id, id);
     if (existing && !options.resume)
-      throw StoreError(store.path() + " already holds simulated participant '" + id +
+      throw StoreError(store.location() + " already holds simulated participant '" + id +
                        "'; continue with --resume or use a new database");
     if (existing && existing->status != "active") continue;
     SimulatedObserver observer(experiment.observer, options.observerSeed, id, options.paceSeconds);

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "study/experiment.hpp"
-#include "study/session_store.hpp"
+#include "study/store.hpp"
 #include "study/stimulus_library.hpp"
 #include "study/trial_runner.hpp"
 
@@ -33,7 +33,7 @@ struct SimulationResult {
 
 std::string simulatedParticipantId(int index);  // 1-based: "sim-001"
 
-SimulationResult simulateStudy(const Experiment& experiment, SessionStore& store, StimulusLibrary& stimuli,
+SimulationResult simulateStudy(const Experiment& experiment, Store& store, StimulusLibrary& stimuli,
                                const SimulationOptions& options);
 
 }  // namespace tlab::study

@@ -11,7 +11,7 @@
 #include "analysis/table.hpp"
 #include "study/design_fingerprint.hpp"
 #include "study/experiment.hpp"
-#include "study/session_store.hpp"
+#include "study/store.hpp"
 
 namespace tlab::study {
 
@@ -33,9 +33,9 @@ struct StoredExperiment {
 // The experiment of the database. With several experiments in one database, `experimentId`
 // chooses; throws StoreError listing them otherwise. Data from versions whose designs differ are
 // refused (naming the versions) unless `poolVersions`; versions that differ only in text pool.
-StoredExperiment storedExperiment(SessionStore& store, const std::string& experimentId = "", bool poolVersions = false);
+StoredExperiment storedExperiment(Store& store, const std::string& experimentId = "", bool poolVersions = false);
 
-analysis::Table analysisTable(SessionStore& store, const StoredExperiment& stored, const AnalysisSpec& spec,
+analysis::Table analysisTable(Store& store, const StoredExperiment& stored, const AnalysisSpec& spec,
                               const std::string& dependentVariable);
 
 // The AnalysisPlan of an analysis spec for one dependent variable (subject column "participant").

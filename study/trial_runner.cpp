@@ -56,7 +56,7 @@ TrialRecord makeTrialRecord(const PlannedTrial& plan, const PreparedTrial& prepa
   return r;
 }
 
-TrialRunner::TrialRunner(const Experiment& experiment, SessionStore& store, StimulusLibrary& stimuli)
+TrialRunner::TrialRunner(const Experiment& experiment, Store& store, StimulusLibrary& stimuli)
     : experiment_(experiment), store_(store), stimuli_(stimuli), design_(makeDesign(experiment)) {}
 
 void TrialRunner::storeEvents(Session& s, std::optional<std::int64_t> trial) {
@@ -151,7 +151,7 @@ void TrialRunner::stopAfterStorageError(Session& s, const SessionResult& result,
                    e.code());
 }
 
-void checkParticipant(SessionStore& store, const Experiment& experiment, const RunOptions& options) {
+void checkParticipant(Store& store, const Experiment& experiment, const RunOptions& options) {
   const auto existing = store.findParticipant(experiment.id, options.participant);
   if (existing && existing->status == "finished")
     throw StoreError("participant '" + options.participant + "' has already finished experiment '" + experiment.id +
@@ -162,7 +162,7 @@ void checkParticipant(SessionStore& store, const Experiment& experiment, const R
   if (existing && !options.resume)
     throw StoreError("participant '" + options.participant + "' has an unfinished session; continue it with --resume");
   if (!existing && options.resume)
-    throw StoreError("participant '" + options.participant + "' has no session to resume in " + store.path());
+    throw StoreError("participant '" + options.participant + "' has no session to resume in " + store.location());
 }
 
 std::vector<TrialRecord> TrialRunner::preparePlan(const SessionPlan& plan) {
@@ -180,7 +180,7 @@ ParticipantRecord TrialRunner::enrolNewcomer(const RunOptions& options, SessionP
     plan = makeSessionPlan(experiment_, design_, slot);
     const auto records = preparePlan(plan);
     if (auto p = store_.enrol(experiment_, options.tlabVersion, options.participant, slot, design_, records)) return *p;
-    if (attempt == 1000) throw StoreError(store_.path() + ": could not claim a free slot (other stations keep taking them)");
+    if (attempt == 1000) throw StoreError(store_.location() + ": could not claim a free slot (other stations keep taking them)");
   }
 }
 

@@ -14,7 +14,7 @@
 #include "study/experiment.hpp"
 #include "study/responder.hpp"
 #include "study/session_plan.hpp"
-#include "study/session_store.hpp"
+#include "study/store.hpp"
 #include "study/stimulus_library.hpp"
 
 namespace tlab::study {
@@ -48,7 +48,7 @@ struct SessionResult {
 
 class TrialRunner {
  public:
-  TrialRunner(const Experiment& experiment, SessionStore& store, StimulusLibrary& stimuli);
+  TrialRunner(const Experiment& experiment, Store& store, StimulusLibrary& stimuli);
 
   void onProgress(std::function<void(const TrialProgress&)> callback) { progress_ = std::move(callback); }
 
@@ -68,7 +68,7 @@ class TrialRunner {
   ParticipantRecord enrolNewcomer(const RunOptions& options, SessionPlan& plan);
 
   const Experiment& experiment_;
-  SessionStore& store_;
+  Store& store_;
   StimulusLibrary& stimuli_;
   Design design_;
   std::function<void(const TrialProgress&)> progress_;
@@ -78,7 +78,7 @@ class TrialRunner {
 // Throws StoreError with a clear message when the participant has finished, has dropped out, has
 // an unfinished session without `resume`, or has none to resume. TrialRunner::run checks this
 // too; calling it first lets a command refuse before it opens a window.
-void checkParticipant(SessionStore& store, const Experiment& experiment, const RunOptions& options);
+void checkParticipant(Store& store, const Experiment& experiment, const RunOptions& options);
 
 // The database record of a planned and prepared trial.
 TrialRecord makeTrialRecord(const PlannedTrial& plan, const PreparedTrial& prepared);

@@ -12,7 +12,7 @@
 #include <map>
 
 #include "study/schema_migrations.hpp"
-#include "study/session_store.hpp"
+#include "study/sqlite_store.hpp"
 #include "study/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
@@ -238,7 +238,7 @@ TEST(StorageFaults, MigrationsRunInOrderToTheLatestVersion) {
   Database d((dir / "m.db").string(), true);
   const auto& all = tlab::study::schemaMigrations();
   for (std::size_t i = 0; i < all.size(); ++i) EXPECT_EQ(all[i].version, int(i) + 1);
-  EXPECT_EQ(tlab::study::SessionStore::kSchemaVersion, tlab::study::latestSchemaVersion());
+  EXPECT_EQ(tlab::study::SqliteStore::kSchemaVersion, tlab::study::latestSchemaVersion());
   EXPECT_EQ(tlab::study::migrateSchema(d, 1), 1);
   EXPECT_EQ(d.userVersion(), 1);
   EXPECT_EQ(tlab::study::migrateSchema(d), int(all.size()) - 1);

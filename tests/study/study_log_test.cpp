@@ -247,3 +247,21 @@ TEST(StudyLog, ExportSaysHowEverySessionEndedAndKeepsSeedsExact) {
   ASSERT_TRUE(seed.step());
   EXPECT_EQ(trials[1][column("probe_seed")], "seed:" + std::to_string(std::uint64_t(seed.integer(0))));
 }
+
+TEST(StudyLog, ErrorLinesSayWhatToDo) {
+  const auto dir = freshDir("log_error_lines");
+  const std::string db = (dir / "study.db").string();
+  // tlab run has no --window to leave out: without a display it names Xvfb and tlab simulate.
+  const auto run = runCommand("env -u DISPLAY -u WAYLAND_DISPLAY " + kTlab + " run " + studyData("tiny.toml") + " --participant P01 --db " +
+                              quoted(db));
+  expectOneLineError(run, "tlab simulate");
+  EXPECT_NE(run.err.find("xvfb-run"), std::string::npos) << run.err;
+  EXPECT_EQ(run.err.find("render headless"), std::string::npos) << run.err;
+  // An export folder that cannot be made: one plain line naming it.
+  ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("tiny.toml") + " --participants 1 --db " + quoted(db)).exitCode, 0);
+  const auto blocked = dir / "not-a-folder";
+  writeText(blocked, "a file where the export folder should go\n");
+  const auto exported = runCommand(kTlab + " export " + quoted(db) + " --csv " + quoted((blocked / "csv").string()));
+  expectOneLineError(exported, (blocked / "csv").string() + ": cannot create the export folder");
+  EXPECT_EQ(exported.err.find("filesystem error"), std::string::npos) << exported.err;
+}

@@ -1,7 +1,7 @@
-// The study database. Over 300 lines: it is the one place that holds the SQL of the study log
-// (opening and checking the file, versions, enrolment, sessions, the plan, responses, events and
-// questionnaires); splitting it would spread one schema over several files.
-#include "study/session_store.hpp"
+// SqliteStore: opening and checking the file, versions, enrolment, sessions, the plan, responses,
+// events and questionnaires (the tables export and analysis read: sqlite_store_tables.cpp). Over
+// 300 lines: it holds the SQL of the study log's writes in one place, next to one schema.
+#include "study/sqlite_store.hpp"
 
 #include <chrono>
 #include <csignal>
@@ -107,8 +107,10 @@ std::string utcTimestamp() {
   return buf;
 }
 
-SessionStore::SessionStore(const std::string& path, OpenMode mode) : path_(path) {
-  if (mode != OpenMode::Read && std::filesystem::exists(path) && std::filesystem::file_size(path) > 0) requireSqliteFile(path);
+SqliteStore::SqliteStore(const std::string& path, OpenMode mode) : path_(path) {
+  std::error_code ec;  // an existing file (or folder) is checked before SQLite touches it; a new or empty one is created
+  const bool existing = std::filesystem::is_directory(path, ec) || (std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > 0);
+  if (mode == OpenMode::Write || (mode == OpenMode::Create && existing)) requireSqliteFile(path);
   db_ = std::make_unique<Database>(path, mode);
   // Everything before the first write only reads: a foreign, damaged or newer file stays untouched.
   const int version = requireStudyDatabase();
@@ -126,7 +128,7 @@ SessionStore::SessionStore(const std::string& path, OpenMode mode) : path_(path)
   migrateSchema(*db_);
 }
 
-int SessionStore::requireStudyDatabase() {
+int SqliteStore::requireStudyDatabase() {
   // One statement, one snapshot: another station may be creating the schema right now (its tables
   // and its user_version commit together).
   Statement s = db_->prepare("SELECT (SELECT user_version FROM pragma_user_version), group_concat(name, ', '), "
@@ -146,7 +148,7 @@ int SessionStore::requireStudyDatabase() {
   return version;
 }
 
-void SessionStore::checkIntegrity() {
+void SqliteStore::checkIntegrity() {
   Statement check = db_->prepare("PRAGMA quick_check(1)");
   if (check.step() && check.text(0) != "ok")
     throw StoreError(path_ + ": the database file is damaged (" + check.text(0) +
@@ -155,7 +157,7 @@ void SessionStore::checkIntegrity() {
                      SQLITE_CORRUPT);
 }
 
-std::vector<ExperimentVersion> SessionStore::versions(const std::string& experimentId) {
+std::vector<ExperimentVersion> SqliteStore::versions(const std::string& experimentId) {
   Statement s = db_->prepare(
       "SELECT id, experiment_id, version, sha256, file_path, file_text FROM experiments WHERE experiment_id = ?1 ORDER BY version, id");
   s.bind(1, experimentId);
@@ -164,20 +166,34 @@ std::vector<ExperimentVersion> SessionStore::versions(const std::string& experim
   return out;
 }
 
-std::optional<ExperimentVersion> SessionStore::findVersion(const Experiment& e) {
+std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) {
   const std::string hash = render::sha256Hex(e.text);
   for (auto& v : versions(e.id))
     if (v.sha256 == hash) return v;
   return std::nullopt;
 }
 
-std::optional<std::int64_t> SessionStore::findExperiment(const std::string& experimentId) {
+std::vector<std::string> SqliteStore::experimentIds() {
+  Statement s = db_->prepare("SELECT experiment_id FROM experiments GROUP BY experiment_id ORDER BY min(id)");
+  std::vector<std::string> ids;
+  while (s.step()) ids.push_back(s.text(0));
+  return ids;
+}
+
+int SqliteStore::sessionCount(std::int64_t versionRow) {
+  Statement count = db_->prepare("SELECT count(*) FROM sessions WHERE experiment = ?1");
+  count.bind(1, versionRow);
+  count.step();
+  return int(count.integer(0));
+}
+
+std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& experimentId) {
   const auto all = versions(experimentId);
   if (all.empty()) return std::nullopt;
   return all.back().row;
 }
 
-ExperimentVersion SessionStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
+ExperimentVersion SqliteStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
   if (auto known = findVersion(e)) return *known;
   const std::string hash = render::sha256Hex(e.text);
   Statement other = db_->prepare("SELECT id FROM experiments WHERE sha256 = ?1");
@@ -193,7 +209,7 @@ ExperimentVersion SessionStore::ensureVersion(const Experiment& e, const std::st
   return {db_->lastInsertId(), e.id, version, hash, e.path, e.text};
 }
 
-std::optional<ParticipantRecord> SessionStore::findParticipant(const std::string& experimentId, const std::string& participant) {
+std::optional<ParticipantRecord> SqliteStore::findParticipant(const std::string& experimentId, const std::string& participant) {
   Statement s = db_->prepare(
       "SELECT p.id, p.experiment, p.participant, p.slot, p.status FROM participants p JOIN experiments x ON x.id = p.experiment "
       "WHERE x.experiment_id = ?1 AND p.participant = ?2");
@@ -202,7 +218,7 @@ std::optional<ParticipantRecord> SessionStore::findParticipant(const std::string
   return ParticipantRecord{s.integer(0), s.integer(1), s.text(2), int(s.integer(3)), s.text(4)};
 }
 
-int SessionStore::nextFreeSlot(const std::string& experimentId) {
+int SqliteStore::nextFreeSlot(const std::string& experimentId) {
   Statement taken = db_->prepare(
       "SELECT DISTINCT a.slot FROM assignments a JOIN experiments x ON x.id = a.experiment "
       "WHERE x.experiment_id = ?1 AND a.status != 'dropped' ORDER BY a.slot");
@@ -212,7 +228,7 @@ int SessionStore::nextFreeSlot(const std::string& experimentId) {
   return slot;
 }
 
-std::optional<ParticipantRecord> SessionStore::enrol(const Experiment& e, const std::string& tlabVersion, const std::string& participant,
+std::optional<ParticipantRecord> SqliteStore::enrol(const Experiment& e, const std::string& tlabVersion, const std::string& participant,
                                                      int slot, const Design& design, const std::vector<TrialRecord>& trials) {
   Transaction t(*db_);
   if (findParticipant(e.id, participant))
@@ -237,7 +253,7 @@ std::optional<ParticipantRecord> SessionStore::enrol(const Experiment& e, const 
   return ParticipantRecord{id, version.row, participant, slot, "active"};
 }
 
-void SessionStore::dropParticipant(const std::string& experimentId, const std::string& participant, const std::string& reason) {
+void SqliteStore::dropParticipant(const std::string& experimentId, const std::string& participant, const std::string& reason) {
   const auto p = findParticipant(experimentId, participant);
   if (!p) throw StoreError(path_ + ": no participant '" + participant + "' in this experiment");
   if (p->status == "dropped") throw StoreError("participant '" + participant + "' has already dropped out");
@@ -249,7 +265,7 @@ void SessionStore::dropParticipant(const std::string& experimentId, const std::s
   t.commit();
 }
 
-void SessionStore::finishParticipant(std::int64_t participantId) {
+void SqliteStore::finishParticipant(std::int64_t participantId) {
   Transaction t(*db_);
   Statement a = db_->prepare("UPDATE participants SET status = 'finished', finished_at = ?2 WHERE id = ?1");
   a.bind(1, participantId).bind(2, utcTimestamp()).run();
@@ -258,7 +274,7 @@ void SessionStore::finishParticipant(std::int64_t participantId) {
   t.commit();
 }
 
-std::vector<AssignmentRecord> SessionStore::assignments(const std::string& experimentId) {
+std::vector<AssignmentRecord> SqliteStore::assignments(const std::string& experimentId) {
   Statement s = db_->prepare(
       "SELECT a.slot, a.design_row, a.between_cell, p.participant, a.status, a.block_order FROM assignments a "
       "JOIN participants p ON p.id = a.participant JOIN experiments x ON x.id = a.experiment WHERE x.experiment_id = ?1 "
@@ -270,7 +286,7 @@ std::vector<AssignmentRecord> SessionStore::assignments(const std::string& exper
   return out;
 }
 
-std::int64_t SessionStore::startSession(std::int64_t participantId, const Experiment& e, const std::string& tlabVersion,
+std::int64_t SqliteStore::startSession(std::int64_t participantId, const Experiment& e, const std::string& tlabVersion,
                                         const std::string& mode) {
   Transaction t(*db_);
   const ExperimentVersion version = ensureVersion(e, tlabVersion);
@@ -300,12 +316,12 @@ std::int64_t SessionStore::startSession(std::int64_t participantId, const Experi
   return session;
 }
 
-void SessionStore::endSession(std::int64_t session, const std::string& reason) {
+void SqliteStore::endSession(std::int64_t session, const std::string& reason) {
   Statement s = db_->prepare("UPDATE sessions SET ended_at = ?2, end_reason = ?3 WHERE id = ?1");
   s.bind(1, session).bind(2, utcTimestamp()).bind(3, reason).run();
 }
 
-void SessionStore::insertTrials(std::int64_t participantId, const std::vector<TrialRecord>& trials) {
+void SqliteStore::insertTrials(std::int64_t participantId, const std::vector<TrialRecord>& trials) {
   Transaction t(*db_);  // inside enrol's transaction: a savepoint
   Statement s = db_->prepare(
       "INSERT INTO trials (participant, sequence, phase, block, condition, levels_json, task_id, task, trial, question, "
@@ -322,7 +338,7 @@ void SessionStore::insertTrials(std::int64_t participantId, const std::vector<Tr
   t.commit();
 }
 
-std::vector<TrialRecord> SessionStore::trials(std::int64_t participantId) {
+std::vector<TrialRecord> SqliteStore::trials(std::int64_t participantId) {
   Statement s = db_->prepare(
       "SELECT t.id, sequence, phase, block, condition, levels_json, task_id, task, t.trial, question, questions_in_trial, "
       "stimulus_key, probe_seed, question_json, answer_kind, truth_json, time_limit, trial_time_limit, stimulus_path, "
@@ -358,7 +374,7 @@ std::vector<TrialRecord> SessionStore::trials(std::int64_t participantId) {
   return out;
 }
 
-std::map<std::string, double> SessionStore::usedSeconds(std::int64_t participantId) {
+std::map<std::string, double> SqliteStore::usedSeconds(std::int64_t participantId) {
   Statement used = db_->prepare(
       "SELECT t.phase, t.block, t.task_id, t.trial, coalesce(r.rt_seconds, t.time_limit) FROM responses r "
       "JOIN trials t ON t.id = r.trial WHERE t.participant = ?1");
@@ -369,7 +385,7 @@ std::map<std::string, double> SessionStore::usedSeconds(std::int64_t participant
   return out;
 }
 
-int SessionStore::recordOnset(std::int64_t session, std::int64_t trial, std::int64_t tNs, const std::string& detail) {
+int SqliteStore::recordOnset(std::int64_t session, std::int64_t trial, std::int64_t tNs, const std::string& detail) {
   Transaction t(*db_);
   Statement count = db_->prepare("SELECT count(*) FROM events WHERE trial = ?1 AND kind = 'onset'");
   count.bind(1, trial);
@@ -385,7 +401,7 @@ int SessionStore::recordOnset(std::int64_t session, std::int64_t trial, std::int
   return shown;
 }
 
-void SessionStore::recordResponse(const ResponseRecord& r) {
+void SqliteStore::recordResponse(const ResponseRecord& r) {
   Transaction t(*db_);
   Statement s = db_->prepare(
       "INSERT INTO responses (trial, session, raw_answer, answered, correct, score, partial_credit, error, rt_seconds, "
@@ -407,7 +423,7 @@ void SessionStore::recordResponse(const ResponseRecord& r) {
   t.commit();
 }
 
-void SessionStore::recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
+void SqliteStore::recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                                const std::string& detail) {
   Statement e = db_->prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, ?4, ?5)");
   e.bind(1, session);
@@ -416,7 +432,7 @@ void SessionStore::recordEvent(std::int64_t session, std::optional<std::int64_t>
   e.bind(3, tNs).bind(4, kind).bind(5, detail).run();
 }
 
-void SessionStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
+void SqliteStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                        const std::vector<std::pair<std::string, int>>& itemValues) {
   Transaction t(*db_);
   Statement s = db_->prepare(
@@ -429,7 +445,7 @@ void SessionStore::recordQuestionnaire(std::int64_t participantId, std::int64_t 
   t.commit();
 }
 
-bool SessionStore::hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) {
+bool SqliteStore::hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) {
   Statement s = db_->prepare("SELECT 1 FROM questionnaire_answers WHERE participant = ?1 AND questionnaire = ?2 AND block = ?3 LIMIT 1");
   s.bind(1, participantId).bind(2, questionnaire).bind(3, block);
   return s.step();

@@ -11,7 +11,7 @@
 
 #include "study/csv_export.hpp"
 #include "study/experiment_file.hpp"
-#include "study/session_store.hpp"
+#include "study/sqlite_store.hpp"
 #include "study/study_table.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
@@ -52,29 +52,30 @@ std::vector<std::string> hostileTexts() {
 
 }  // namespace
 
-TEST(SessionStore, SchemaVersionAndWal) {
+TEST(SqliteStore, SchemaVersionAndWal) {
   const auto dir = freshDir("store_schema");
   const std::string path = (dir / "s.db").string();
   {
-    SessionStore store(path);
-    EXPECT_EQ(store.database().userVersion(), SessionStore::kSchemaVersion);
-    Statement mode = store.database().prepare("PRAGMA journal_mode");
+    SqliteStore store(path);
+    Database db(path, false);
+    EXPECT_EQ(db.userVersion(), SqliteStore::kSchemaVersion);
+    Statement mode = db.prepare("PRAGMA journal_mode");
     ASSERT_TRUE(mode.step());
     EXPECT_EQ(mode.text(0), "wal");
   }
-  SessionStore again(path);  // reopening keeps the schema
-  EXPECT_EQ(again.database().userVersion(), SessionStore::kSchemaVersion);
+  SqliteStore again(path);  // reopening keeps the schema
+  EXPECT_EQ(Database(path, false).userVersion(), SqliteStore::kSchemaVersion);
   {
     Database other((dir / "other.db").string(), true);
     other.execute("CREATE TABLE mine (x)");
   }
-  EXPECT_THROW(SessionStore((dir / "other.db").string()), StoreError);
+  EXPECT_THROW(SqliteStore((dir / "other.db").string()), StoreError);
 }
 
 // The two-station bug: two processes opening a new file both switch it to WAL; each holds a read
 // lock when it asks for the write lock, and SQLite answers one of them BUSY at once, without its
 // busy handler (deadlock avoidance). The store retries the switch within its busy deadline.
-TEST(SessionStore, StationsOpeningOneNewDatabaseTogetherAllSucceed) {
+TEST(SqliteStore, StationsOpeningOneNewDatabaseTogetherAllSucceed) {
   const auto dir = freshDir("store_new_file_together");
   int failures = 0;
   std::string lastError;
@@ -86,7 +87,7 @@ TEST(SessionStore, StationsOpeningOneNewDatabaseTogetherAllSucceed) {
       ++ready;
       while (ready < 4) std::this_thread::yield();
       try {
-        SessionStore store(path);
+        SqliteStore store(path);
       } catch (const StoreError& e) {
         std::lock_guard<std::mutex> lock(m);
         ++failures;
@@ -100,11 +101,13 @@ TEST(SessionStore, StationsOpeningOneNewDatabaseTogetherAllSucceed) {
   EXPECT_EQ(failures, 0) << lastError;
 }
 
-TEST(SessionStore, DroppedOutSlotGoesToTheNextNewcomer) {
+TEST(SqliteStore, DroppedOutSlotGoesToTheNextNewcomer) {
   const auto dir = freshDir("store_dropout");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   const Design design = makeDesign(e);
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   auto enrol = [&](const std::string& who) { return store.enrol(e, "test", who, store.nextFreeSlot(e.id), design, {fakeTrial(1)})->slot; };
   EXPECT_EQ(enrol("a"), 0);
   EXPECT_EQ(enrol("b"), 1);
@@ -122,26 +125,30 @@ TEST(SessionStore, DroppedOutSlotGoesToTheNextNewcomer) {
   EXPECT_EQ(store.versions(e.id).size(), 1u);  // the same file is one version
 }
 
-TEST(SessionStore, ATakenSlotWritesNothingAndAKnownParticipantIsRefused) {
+TEST(SqliteStore, ATakenSlotWritesNothingAndAKnownParticipantIsRefused) {
   const auto dir = freshDir("store_taken_slot");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   const Design design = makeDesign(e);
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   ASSERT_TRUE(store.enrol(e, "test", "a", 0, design, {fakeTrial(1)}));
   EXPECT_FALSE(store.enrol(e, "test", "b", 0, design, {fakeTrial(1)}));  // slot 0 is taken: nothing written
   EXPECT_FALSE(store.findParticipant(e.id, "b"));
   EXPECT_THROW(store.enrol(e, "test", "a", 1, design, {fakeTrial(1)}), StoreError);
-  Statement count = store.database().prepare("SELECT (SELECT count(*) FROM participants), (SELECT count(*) FROM trials)");
+  Statement count = db.prepare("SELECT (SELECT count(*) FROM participants), (SELECT count(*) FROM trials)");
   ASSERT_TRUE(count.step());
   EXPECT_EQ(count.integer(0), 1);
   EXPECT_EQ(count.integer(1), 1);
 }
 
-TEST(SessionStore, AnEditedFileIsANewVersionAndEverySessionRecordsItsVersion) {
+TEST(SqliteStore, AnEditedFileIsANewVersionAndEverySessionRecordsItsVersion) {
   const auto dir = freshDir("store_versions");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   const Design design = makeDesign(e);
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   const auto a = *store.enrol(e, "test", "a", 0, design, {fakeTrial(1)});
   const auto first = store.startSession(a.id, e, "test", "simulated");
   Experiment edited = e;
@@ -153,7 +160,7 @@ TEST(SessionStore, AnEditedFileIsANewVersionAndEverySessionRecordsItsVersion) {
   EXPECT_EQ(versions[0].version, 1);
   EXPECT_EQ(versions[1].version, 2);
   EXPECT_EQ(store.findVersion(edited)->row, versions[1].row);
-  Statement s = store.database().prepare("SELECT experiment FROM sessions WHERE id IN (?1, ?2) ORDER BY id");
+  Statement s = db.prepare("SELECT experiment FROM sessions WHERE id IN (?1, ?2) ORDER BY id");
   s.bind(1, first).bind(2, second);
   ASSERT_TRUE(s.step());
   EXPECT_EQ(s.integer(0), versions[0].row);
@@ -161,18 +168,20 @@ TEST(SessionStore, AnEditedFileIsANewVersionAndEverySessionRecordsItsVersion) {
   EXPECT_EQ(s.integer(0), versions[1].row);
 }
 
-TEST(SessionStore, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
+TEST(SqliteStore, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
   const auto dir = freshDir("store_session_claim");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
   const auto open = store.startSession(p.id, e, "test", "window");  // this process: alive
   EXPECT_THROW(store.startSession(p.id, e, "test", "window"), SessionConflict);
   // The same session as if its process had died (another start time on this host): resumed.
-  Statement dead = store.database().prepare("UPDATE sessions SET process_start = 'not-this-process' WHERE id = ?1");
+  Statement dead = db.prepare("UPDATE sessions SET process_start = 'not-this-process' WHERE id = ?1");
   dead.bind(1, open).run();
   const auto resumed = store.startSession(p.id, e, "test", "window");
-  Statement s = store.database().prepare("SELECT end_reason, resumed_by, ended_at IS NULL FROM sessions WHERE id = ?1");
+  Statement s = db.prepare("SELECT end_reason, resumed_by, ended_at IS NULL FROM sessions WHERE id = ?1");
   s.bind(1, open);
   ASSERT_TRUE(s.step());
   EXPECT_EQ(s.text(0), "interrupted");
@@ -180,26 +189,30 @@ TEST(SessionStore, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
   EXPECT_EQ(s.integer(2), 1);  // when it really ended is unknown: left empty
 }
 
-TEST(SessionStore, OnsetsAreCommittedAndCountShowings) {
+TEST(SqliteStore, OnsetsAreCommittedAndCountShowings) {
   const auto dir = freshDir("store_onsets");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
   const auto session = store.startSession(p.id, e, "test", "simulated");
   const auto trial = store.trials(p.id).at(0).id;
   EXPECT_EQ(store.recordOnset(session, trial, 100, R"({"present_ms":1.5})"), 1);
   EXPECT_EQ(store.recordOnset(session, trial, 200, R"({"present_ms":1.5})"), 2);
-  Statement s = store.database().prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
+  Statement s = db.prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
   ASSERT_TRUE(s.step());
   EXPECT_EQ(s.text(0), R"({"present_ms":1.5,"showing":1})");
   ASSERT_TRUE(s.step());
   EXPECT_NE(s.text(0).find("shown again after an interruption"), std::string::npos) << s.text(0);
 }
 
-TEST(SessionStore, OneResponsePerTrial) {
+TEST(SqliteStore, OneResponsePerTrial) {
   const auto dir = freshDir("store_unique");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
-  SessionStore store((dir / "s.db").string());
+  const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
   const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
   const auto session = store.startSession(p.id, e, "test", "simulated");
   ResponseRecord r;
@@ -209,18 +222,20 @@ TEST(SessionStore, OneResponsePerTrial) {
   store.recordResponse(r);
   EXPECT_THROW(store.recordResponse(r), StoreError);
   EXPECT_TRUE(store.trials(p.id).at(0).answered);
-  Statement count = store.database().prepare("SELECT count(*) FROM responses");
+  Statement count = db.prepare("SELECT count(*) FROM responses");
   ASSERT_TRUE(count.step());
   EXPECT_EQ(count.integer(0), 1);
 }
 
-TEST(SessionStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
+TEST(SqliteStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
   const auto dir = freshDir("store_hostile");
   const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
   const Design design = makeDesign(e);
   const auto texts = hostileTexts();
   {
-    SessionStore store((dir / "s.db").string());
+    const std::string path = (dir / "s.db").string();
+  SqliteStore store(path);
+  Database db(path, false);
     for (std::size_t i = 0; i < texts.size(); ++i) {
       const std::string id = texts[i] + "#" + std::to_string(i);  // ids must differ
       const auto p = *store.enrol(e, "test", id, int(i), design, {fakeTrial(1)});
@@ -235,9 +250,10 @@ TEST(SessionStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
       store.recordQuestionnaire(p.id, session, "post", 0, {{texts[i], 3}});
     }
   }
-  SessionStore store((dir / "s.db").string(), false);
+  SqliteStore store((dir / "s.db").string(), OpenMode::Read);
+  Database db((dir / "s.db").string(), false);
   for (const char* table : {"experiments", "participants", "responses", "trials"}) {
-    Statement s = store.database().prepare(std::string("SELECT count(*) FROM ") + table);
+    Statement s = db.prepare(std::string("SELECT count(*) FROM ") + table);
     EXPECT_TRUE(s.step()) << table;  // every table survived
   }
   const StoredExperiment stored = storedExperiment(store);
