@@ -9,6 +9,7 @@
 #include "app/scene_options.hpp"
 #include "renderer/gpu/window_context.hpp"
 #include "study/experiment_file.hpp"
+#include "study/simulated_observer.hpp"
 #include "study/trial_runner.hpp"
 #include "study/window_responder.hpp"
 #include "study/open_store.hpp"
@@ -24,6 +25,8 @@ struct RunCommandOptions {
   bool fullscreen = false;
   bool resume = false;
   std::string size = "1024x768";
+  bool autopilot = false;
+  double autopilotPace = 0.05;
 };
 
 // The participant's window; without a display, says how to run the session or pilot it instead.
@@ -56,11 +59,16 @@ void run(const RunCommandOptions& o) {
     std::fflush(stdout);
   });
   study::WindowResponder responder(*window, painter);
+  if (o.autopilotPace < 0) throw std::invalid_argument("--autopilot-pace: must be >= 0");
+  if (o.autopilot)
+    responder.engageAutopilot(std::make_shared<study::SimulatedObserver>(e.observer, e.seed, o.participant), o.autopilotPace);
   const study::SessionResult r = runner.run(run, responder);
   const study::FrameTiming t = responder.timing();
   std::printf("session %s: %d of %d trials answered in this run (%d before), slot %d\n",
-              r.outcome == study::SessionOutcome::Finished ? "finished" : "closed (continue with --resume)", r.answeredNow, r.total,
-              r.answeredBefore, r.slot);
+              r.outcome == study::SessionOutcome::Finished   ? "finished"
+              : r.outcome == study::SessionOutcome::Declined ? "declined (only the decision was stored)"
+                                                             : "closed (continue with --resume)",
+              r.answeredNow, r.total, r.answeredBefore, r.slot);
   std::printf("timing: %d frames, present %.3f ms mean / %.3f ms max; onset-to-swap %.3f ms mean / %.3f ms max over %d stimuli; "
               "steady_clock step %.0f ns; longest event wait %.3f ms\n",
               t.frames, t.presentMeanMs, t.presentMaxMs, t.onsetMeanMs, t.onsetMaxMs, t.onsets, t.clockResolutionNs, t.eventWaitMaxMs);
@@ -77,6 +85,9 @@ void addRunCommand(CLI::App& app) {
   cmd->add_flag("--fullscreen", o->fullscreen, "full screen on the primary monitor");
   cmd->add_flag("--resume", o->resume, "continue an interrupted session at its first unanswered trial");
   cmd->add_option("--size", o->size, "window size WxH")->capture_default_str();
+  cmd->add_flag("--autopilot", o->autopilot,
+                "a simulated observer answers every screen through the real window and input handling (check a whole session)");
+  cmd->add_option("--autopilot-pace", o->autopilotPace, "real seconds per simulated second of response time")->capture_default_str();
   cmd->callback([o] { run(*o); });
 }
 

@@ -9,7 +9,7 @@ packages=(
   libsqlite3-dev sqlite3 libboost-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev libcli11-dev
   libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xdotool chromium
+  xvfb xdotool imagemagick chromium
   clang libclang-rt-14-dev time e2fsprogs
 )
 

@@ -57,7 +57,9 @@ std::vector<std::string> exportCsv(Store& store, const StoredExperiment& stored,
           writeTable(store.exportTable(ExportTable::Sessions, e), dir, "sessions.csv"),
           writeTable(store.exportTable(ExportTable::Questionnaires, e), dir, "questionnaires.csv"),
           writeTable(store.exportTable(ExportTable::Participants, e), dir, "participants.csv"),
-          writeTable(store.exportTable(ExportTable::Events, e), dir, "events.csv")};
+          writeTable(store.exportTable(ExportTable::Events, e), dir, "events.csv"),
+          writeTable(store.exportTable(ExportTable::Info, e), dir, "participant_info.csv"),
+          writeTable(store.exportTable(ExportTable::Consent, e), dir, "consent.csv")};
 }
 
 }  // namespace tlab::study

@@ -44,9 +44,13 @@ std::string designFingerprint(const Experiment& e) {
   for (const auto& t : e.tasks) d["tasks"].push_back(taskJson(t));
   for (const auto& q : e.questionnaires) {
     nlohmann::json items = nlohmann::json::array();
-    for (const auto& i : q.items) items.push_back(i.id);
-    d["questionnaires"].push_back({{"id", q.id}, {"when", q.when}, {"points", q.points}, {"items", items}});
+    for (const auto& i : q.items) items.push_back({i.id, fieldKindName(i.kind), i.points, i.options, i.minimum, i.maximum});
+    d["questionnaires"].push_back({{"id", q.id}, {"when", q.when}, {"items", items}});
   }
+  for (const auto& f : e.info) d["info"].push_back({f.id, fieldKindName(f.kind), f.options, f.minimum, f.maximum});
+  d["consent"] = e.consent.has_value();
+  d["breaks"] = {e.breaks.every, e.breaks.blocks, e.breaks.minSeconds};
+  d["training_feedback"] = e.trainingFeedback;
   return render::sha256Hex(d.dump());
 }
 

@@ -8,6 +8,16 @@ int Factor::levelIndex(const std::string& levelName) const {
   return -1;
 }
 
+const char* fieldKindName(FieldKind kind) {
+  switch (kind) {
+    case FieldKind::Likert: return "likert";
+    case FieldKind::Choice: return "choice";
+    case FieldKind::Number: return "number";
+    case FieldKind::Text: return "text";
+  }
+  return "?";
+}
+
 const char* counterbalancingName(Counterbalancing c) {
   switch (c) {
     case Counterbalancing::Fixed: return "fixed";

@@ -64,18 +64,50 @@ struct TaskSpec {
   Navigation navigation = Navigation::None;
 };
 
-struct LikertItem {
+// One question of a form: a participant-information field or a questionnaire item.
+enum class FieldKind { Likert, Choice, Number, Text };
+const char* fieldKindName(FieldKind kind);
+
+struct FormField {
   std::string id;
   std::string text;
+  FieldKind kind = FieldKind::Likert;
+  int points = 7;                    // Likert: 1..points
+  std::string lowAnchor = "strongly disagree";
+  std::string highAnchor = "strongly agree";
+  std::vector<std::string> options;  // Choice
+  double minimum = 0.0;              // Number
+  double maximum = 1e9;
+  bool integer = false;              // Number: whole numbers only
+  bool required = true;              // Choice/Number/Text: an empty answer is refused
 };
 
 struct Questionnaire {
   std::string id;
   std::string when = "end";  // "start", "end" or "after-block"
-  int points = 7;
-  std::string lowAnchor = "strongly disagree";
-  std::string highAnchor = "strongly agree";
-  std::vector<LikertItem> items;
+  std::string title;         // shown above the items ("" → "Questionnaire")
+  std::vector<FormField> items;
+};
+
+// [consent]: shown before anything else; a decline ends the session and stores only the decline.
+struct ConsentSpec {
+  std::string text;
+  std::string accept = "I agree to take part";
+  std::string decline = "I do not agree";
+};
+
+// [breaks]: a pause screen every N test trials or blocks, at least min_seconds long.
+struct BreakSpec {
+  int every = 0;          // 0: no breaks
+  bool blocks = false;    // count blocks rather than trials
+  double minSeconds = 0.0;
+  std::string text = "Take a short break. Continue when you are ready.";
+};
+
+// [debrief]: the last screen; an optional completion code (Prolific and the like) is shown on it.
+struct DebriefSpec {
+  std::string text = "Thank you. The session is complete.";
+  std::string completionCode;
 };
 
 struct AnalysisSpec {
@@ -115,7 +147,8 @@ struct Experiment {
   std::string path;         // file it was read from
   std::string text;         // the file's text, stored in the database
   std::string id;
-  std::string title;
+  std::string title;             // for the researcher (reports); never shown to participants
+  std::string participantTitle;  // shown on the participant's screens ("" → "Welcome")
   std::uint64_t seed = 1;
   int participants = 1;
   std::vector<Factor> factors;
@@ -124,7 +157,11 @@ struct Experiment {
   Stimulus stimulus;
   std::vector<TaskSpec> tasks;
   std::string welcome;
-  std::string goodbye = "Thank you. The session is complete.";
+  std::optional<ConsentSpec> consent;
+  std::vector<FormField> info;     // [[info]]: participant information (age, vision, ...)
+  bool trainingFeedback = false;   // [training] feedback = true
+  BreakSpec breaks;
+  DebriefSpec debrief;
   std::vector<Questionnaire> questionnaires;
   std::vector<AnalysisSpec> analyses;
   ObserverParams observer;

@@ -10,116 +10,14 @@
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
 #include "study/counterbalancing.hpp"
+#include "study/field_reader.hpp"
+#include "study/session_flow_file.hpp"
 #include "study/scene_catalog.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {
 
 namespace {
-
-// Where a field is: the file, the line of its node, and its dotted name.
-class FieldReader {
- public:
-  explicit FieldReader(std::string path) : path_(std::move(path)) {}
-
-  [[noreturn]] void fail(const toml::node* node, const std::string& field, const std::string& message) const {
-    const auto line = node ? node->source().begin.line : 0u;
-    throw ExperimentFileError(path_ + ":" + std::to_string(line) + ": " + field + ": " + message);
-  }
-
-  void checkKeys(const toml::table& table, const std::string& where, const std::set<std::string>& allowed) const {
-    for (auto&& [key, value] : table) {
-      if (allowed.count(std::string(key.str()))) continue;
-      std::string known;
-      for (const auto& k : allowed) known += (known.empty() ? "" : ", ") + k;
-      fail(&value, where.empty() ? std::string(key.str()) : where + "." + std::string(key.str()),
-           "unknown key (known: " + known + ")");
-    }
-  }
-
-  std::string string(const toml::table& t, const std::string& key, const std::string& where, bool required,
-                     const std::string& fallback = "") const {
-    const toml::node* n = t.get(key);
-    if (!n) {
-      if (required) fail(&t, name(where, key), "missing (a string is required)");
-      return fallback;
-    }
-    if (!n->is_string()) fail(n, name(where, key), "must be a string");
-    return n->as_string()->get();
-  }
-
-  std::int64_t integer(const toml::table& t, const std::string& key, const std::string& where, std::int64_t fallback,
-                       std::int64_t minimum, bool required = false) const {
-    const toml::node* n = t.get(key);
-    if (!n) {
-      if (required) fail(&t, name(where, key), "missing (an integer is required)");
-      return fallback;
-    }
-    if (!n->is_integer()) fail(n, name(where, key), "must be an integer");
-    const std::int64_t v = n->as_integer()->get();
-    if (v < minimum) fail(n, name(where, key), "must be >= " + std::to_string(minimum));
-    return v;
-  }
-
-  double number(const toml::table& t, const std::string& key, const std::string& where, double fallback, double minimum,
-                double maximum) const {
-    const toml::node* n = t.get(key);
-    if (!n) return fallback;
-    double v;
-    if (n->is_integer()) v = double(n->as_integer()->get());
-    else if (n->is_floating_point()) v = n->as_floating_point()->get();
-    else fail(n, name(where, key), "must be a number");
-    if (!(v >= minimum && v <= maximum))
-      fail(n, name(where, key), "must be within [" + fmt(minimum) + ", " + fmt(maximum) + "]");
-    return v;
-  }
-
-  std::vector<std::string> strings(const toml::table& t, const std::string& key, const std::string& where) const {
-    std::vector<std::string> out;
-    const toml::node* n = t.get(key);
-    if (!n) return out;
-    const toml::array* a = n->as_array();
-    if (!a) fail(n, name(where, key), "must be an array of strings");
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const toml::node& e = *a->get(i);
-      if (!e.is_string()) fail(&e, name(where, key) + "[" + std::to_string(i + 1) + "]", "must be a string");
-      out.push_back(e.as_string()->get());
-    }
-    return out;
-  }
-
-  const toml::table* table(const toml::table& t, const std::string& key, const std::string& where) const {
-    const toml::node* n = t.get(key);
-    if (!n) return nullptr;
-    if (!n->is_table()) fail(n, name(where, key), "must be a table");
-    return n->as_table();
-  }
-
-  // An array of tables ([[key]]); empty when absent.
-  std::vector<const toml::table*> tables(const toml::table& t, const std::string& key) const {
-    std::vector<const toml::table*> out;
-    const toml::node* n = t.get(key);
-    if (!n) return out;
-    const toml::array* a = n->as_array();
-    if (!a) fail(n, key, "must be an array of tables ([[" + key + "]])");
-    for (std::size_t i = 0; i < a->size(); ++i) {
-      const toml::node& e = *a->get(i);
-      if (!e.is_table()) fail(&e, key + "[" + std::to_string(i + 1) + "]", "must be a table");
-      out.push_back(e.as_table());
-    }
-    return out;
-  }
-
-  static std::string name(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
-
- private:
-  std::string path_;
-};
 
 std::pair<int, int> parseSizeField(const FieldReader& r, const toml::table& t, const std::string& where, std::pair<int, int> fallback) {
   const toml::node* n = t.get("size");
@@ -245,49 +143,6 @@ std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, c
     specs.push_back(std::move(s));
   }
   return specs;
-}
-
-std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root) {
-  std::vector<Questionnaire> out;
-  const auto tables = r.tables(root, "questionnaires");
-  for (std::size_t i = 0; i < tables.size(); ++i) {
-    const toml::table& t = *tables[i];
-    const std::string where = "questionnaires[" + std::to_string(i + 1) + "]";
-    r.checkKeys(t, where, {"id", "when", "points", "anchors", "items"});
-    Questionnaire q;
-    q.id = r.string(t, "id", where, true);
-    q.when = r.string(t, "when", where, false, "end");
-    if (q.when != "start" && q.when != "end" && q.when != "after-block")
-      r.fail(t.get("when"), where + ".when", "expected start, end or after-block");
-    q.points = int(r.integer(t, "points", where, 7, 2));
-    if (q.points > 11) r.fail(t.get("points"), where + ".points", "at most 11 points");
-    const auto anchors = r.strings(t, "anchors", where);
-    if (!anchors.empty()) {
-      if (anchors.size() != 2) r.fail(t.get("anchors"), where + ".anchors", "expected [\"low\", \"high\"]");
-      q.lowAnchor = anchors[0];
-      q.highAnchor = anchors[1];
-    }
-    const toml::array* items = t.get("items") ? t.get("items")->as_array() : nullptr;
-    if (!items || items->empty()) r.fail(t.get("items") ? t.get("items") : &t, where + ".items", "at least one item is required");
-    for (std::size_t k = 0; k < items->size(); ++k) {
-      const toml::node& n = *items->get(k);
-      const std::string itemWhere = where + ".items[" + std::to_string(k + 1) + "]";
-      LikertItem item;
-      if (n.is_string()) {
-        item.id = "item" + std::to_string(k + 1);
-        item.text = n.as_string()->get();
-      } else if (const toml::table* it = n.as_table()) {
-        r.checkKeys(*it, itemWhere, {"id", "text"});
-        item.id = r.string(*it, "id", itemWhere, true);
-        item.text = r.string(*it, "text", itemWhere, true);
-      } else {
-        r.fail(&n, itemWhere, "an item is a string or { id = ..., text = ... }");
-      }
-      q.items.push_back(std::move(item));
-    }
-    out.push_back(std::move(q));
-  }
-  return out;
 }
 
 const std::set<std::string> kDependentVariables = {"correct", "score", "rt", "error", "partial_credit", "answered"};
@@ -464,8 +319,9 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   } catch (const toml::parse_error& error) {
     throw ExperimentFileError(path + ":" + std::to_string(error.source().begin.line) + ": " + std::string(error.description()));
   }
-  r.checkKeys(root, "", {"id", "title", "seed", "participants", "counterbalancing", "block_tasks", "welcome", "goodbye",
-                         "stimulus", "factors", "tasks", "questionnaires", "analysis", "observer"});
+  r.checkKeys(root, "", {"id", "title", "participant_title", "seed", "participants", "counterbalancing", "block_tasks", "welcome",
+                         "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "stimulus", "factors", "tasks",
+                         "questionnaires", "analysis", "observer"});
   Experiment e;
   e.path = path;
   e.text = text;
@@ -475,7 +331,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.seed = std::uint64_t(r.integer(root, "seed", "", 1, 0));
   e.participants = int(r.integer(root, "participants", "", 1, 1, true));
   e.welcome = r.string(root, "welcome", "", false);
-  e.goodbye = r.string(root, "goodbye", "", false, e.goodbye);
+  readSessionFlow(r, root, e);
   e.stimulus = readStimulus(r, root);
   e.factors = readFactors(r, root);
   e.counterbalancing = parseCounterbalancing(r, root);
@@ -485,6 +341,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   else r.fail(root.get("block_tasks"), "block_tasks", "expected \"all\" or \"by-position\", got '" + blockTasks + "'");
   e.tasks = readTasks(r, root, e.factors);
   e.questionnaires = readQuestionnaires(r, root);
+  checkBreaks(r, root, e);
   e.analyses = readAnalyses(r, root, e);
   e.observer = readObserver(r, root);
   checkDesign(r, root, e);

@@ -10,6 +10,8 @@
 //   onset:N     the N-th stimulus onset of this process is committed, the response is not
 //   commit:N    inside the N-th response transaction, after its inserts, before COMMIT
 //   ack:N       the N-th response of this process is committed and acknowledged
+//   feedback:N  the N-th training feedback screen is on screen (window)
+//   break:N     the N-th break screen is on screen (window)
 #include <string_view>
 
 namespace tlab::study {

@@ -68,6 +68,30 @@ ALTER TABLE sessions ADD COLUMN process_start TEXT;
 CREATE INDEX IF NOT EXISTS events_by_trial ON events(trial, kind);
 )sql";
 
+// Version 4: the participant's session flow — consent decisions, participant information,
+// questionnaire answers of every kind (the text as given, and its number where it has one), the
+// display a session ran on, and the frame timing of every trial.
+constexpr const char* kVersion4 = R"sql(
+CREATE TABLE consent (
+  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), session INTEGER REFERENCES sessions(id),
+  decision TEXT NOT NULL, recorded_at TEXT NOT NULL);
+CREATE TABLE participant_info (
+  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), session INTEGER NOT NULL REFERENCES sessions(id),
+  field TEXT NOT NULL, value TEXT NOT NULL, number REAL, recorded_at TEXT NOT NULL, UNIQUE(participant, field));
+CREATE TABLE questionnaire_answers_v4 (
+  id INTEGER PRIMARY KEY, participant INTEGER NOT NULL REFERENCES participants(id), session INTEGER NOT NULL REFERENCES sessions(id),
+  questionnaire TEXT NOT NULL, block INTEGER NOT NULL, item TEXT NOT NULL, value REAL, answer TEXT NOT NULL, recorded_at TEXT NOT NULL,
+  UNIQUE(participant, questionnaire, block, item));
+INSERT INTO questionnaire_answers_v4 (id, participant, session, questionnaire, block, item, value, answer, recorded_at)
+  SELECT id, participant, session, questionnaire, block, item, value, CAST(value AS TEXT), recorded_at FROM questionnaire_answers;
+DROP TABLE questionnaire_answers;
+ALTER TABLE questionnaire_answers_v4 RENAME TO questionnaire_answers;
+ALTER TABLE sessions ADD COLUMN display_json TEXT;
+ALTER TABLE responses ADD COLUMN onset_frame_ms REAL;
+ALTER TABLE responses ADD COLUMN late_frames INTEGER;
+ALTER TABLE responses ADD COLUMN onset_to_swap_ms REAL;
+)sql";
+
 }  // namespace
 
 const std::vector<SchemaMigration>& schemaMigrations() {
@@ -75,6 +99,7 @@ const std::vector<SchemaMigration>& schemaMigrations() {
       {1, "study tables", kVersion1},
       {2, "sessions.station, per-session indexes, schema_migrations", kVersion2},
       {3, "experiment versions, sessions.experiment/resumed_by/process_start, onset index", kVersion3},
+      {4, "consent, participant_info, questionnaire answers of every kind, display and frame timing", kVersion4},
   };
   return migrations;
 }

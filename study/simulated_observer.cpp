@@ -127,6 +127,7 @@ ObserverDecision SimulatedObserver::decide(const TrialView& view) const {
   const double median = (params_.baseSeconds + params_.slowSeconds * (1.0 - d.visibility)) / std::sqrt(skill_);
   d.seconds = median * std::exp(params_.rtSigma * normal(random));
   const std::string answer = d.knows ? trueAnswer(view.prepared.question, random) : guess(view.prepared.question, random);
+  d.typed = answer;
   if (!d.gaveUp && d.seconds <= view.limitSeconds) d.answer = answer;
   return d;
 }
@@ -146,11 +147,35 @@ std::optional<Response> SimulatedObserver::respond(const TrialView& view) {
   return r;
 }
 
-std::optional<std::vector<int>> SimulatedObserver::answerQuestionnaire(const Questionnaire& questionnaire) {
-  render::SeededRandom random(mixSeed(seed_, "questionnaire:" + questionnaire.id + ":" + std::to_string(questionnaires_++)));
-  std::vector<int> values;
-  for (std::size_t i = 0; i < questionnaire.items.size(); ++i) values.push_back(1 + int(random.below(std::uint32_t(questionnaire.points))));
+std::optional<std::vector<std::string>> SimulatedObserver::fillForm(const std::string& title, const std::vector<FormField>& fields) {
+  render::SeededRandom random(mixSeed(seed_, "form:" + title + ":" + std::to_string(questionnaires_++)));
+  std::vector<std::string> values;
+  for (const auto& f : fields) {
+    switch (f.kind) {
+      case FieldKind::Likert: values.push_back(std::to_string(1 + int(random.below(std::uint32_t(f.points))))); break;
+      case FieldKind::Choice: values.push_back(f.options[random.below(std::uint32_t(f.options.size()))]); break;
+      case FieldKind::Number: {
+        const double v = f.minimum + (std::min(f.maximum, f.minimum + 100.0) - f.minimum) * double(random.uniform());
+        values.push_back(f.integer ? std::to_string(static_cast<long long>(std::floor(v))) : formatNumber(v));
+        break;
+      }
+      case FieldKind::Text: values.push_back("simulated answer " + std::to_string(random.below(1000))); break;
+    }
+  }
   return values;
+}
+
+bool SimulatedObserver::takeBreak(const BreakSpec& spec) {
+  events_.push_back({clockNs_, "break", "{\"min_seconds\":" + formatNumber(spec.minSeconds) + "}"});
+  clockNs_ += std::int64_t(spec.minSeconds * 1e9);
+  events_.push_back({clockNs_, "break-end", "{\"seconds\":" + formatNumber(spec.minSeconds) + "}"});
+  return true;
+}
+
+std::vector<ResponderEvent> SimulatedObserver::takeEvents() {
+  std::vector<ResponderEvent> out;
+  out.swap(events_);
+  return out;
 }
 
 }  // namespace tlab::study

@@ -29,7 +29,8 @@ struct ObserverDecision {
   bool knows = false;
   bool gaveUp = false;
   double seconds = 0.0;
-  std::optional<std::string> answer;
+  std::optional<std::string> answer;  // nullopt: no answer within the limit
+  std::string typed;                  // what the observer would answer given time (the autopilot types it)
 };
 
 class SimulatedObserver final : public Responder {
@@ -38,8 +39,13 @@ class SimulatedObserver final : public Responder {
                     double paceSeconds = 0.0);
   std::string mode() const override { return "simulated"; }
   bool showMessage(const std::string&, const std::string&) override { return true; }
+  // Consents, answers forms with seeded valid values, takes breaks of their minimum length.
+  std::optional<bool> askConsent(const std::string&, const ConsentSpec&) override { return true; }
+  std::optional<std::vector<std::string>> fillForm(const std::string& title, const std::vector<FormField>& fields) override;
   std::optional<Response> respond(const TrialView& view) override;
-  std::optional<std::vector<int>> answerQuestionnaire(const Questionnaire& questionnaire) override;
+  bool showFeedback(const TrialView&, const Feedback&) override { return true; }
+  bool takeBreak(const BreakSpec& spec) override;
+  std::vector<ResponderEvent> takeEvents() override;
 
   double skill() const { return skill_; }
   // The model's decision for one question (pure given the seed).
@@ -53,6 +59,7 @@ class SimulatedObserver final : public Responder {
   double paceSeconds_;  // real seconds slept per simulated second (0: as fast as possible)
   std::int64_t clockNs_ = 0;
   int questionnaires_ = 0;
+  std::vector<ResponderEvent> events_;
 };
 
 }  // namespace tlab::study

@@ -405,10 +405,13 @@ void SqliteStore::recordResponse(const ResponseRecord& r) {
   Transaction t(*db_);
   Statement s = db_->prepare(
       "INSERT INTO responses (trial, session, raw_answer, answered, correct, score, partial_credit, error, rt_seconds, "
-      "onset_ns, response_ns, note, recorded_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13)");
+      "onset_ns, response_ns, note, recorded_at, onset_frame_ms, late_frames, onset_to_swap_ms) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16)");
   s.bind(1, r.trial).bind(2, r.session).bind(3, r.rawAnswer).bind(4, int(r.answered)).bind(5, int(r.correct)).bind(6, r.score);
   s.bind(7, r.partialCredit).bind(8, r.error).bind(9, r.rtSeconds).bind(10, r.onsetNs).bind(11, r.responseNs).bind(12, r.note);
-  s.bind(13, utcTimestamp());
+  s.bind(13, utcTimestamp()).bind(14, r.onsetFrameMs).bind(16, r.onsetToSwapMs);
+  if (r.lateFrames) s.bind(15, *r.lateFrames);
+  else s.bindNull(15);
   try {
     s.run();
   } catch (const StoreError& e) {
@@ -433,16 +436,58 @@ void SqliteStore::recordEvent(std::int64_t session, std::optional<std::int64_t> 
 }
 
 void SqliteStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
-                                       const std::vector<std::pair<std::string, int>>& itemValues) {
+                                      const std::vector<FormAnswer>& answers) {
   Transaction t(*db_);
   Statement s = db_->prepare(
-      "INSERT INTO questionnaire_answers (participant, session, questionnaire, block, item, value, recorded_at) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
-  for (const auto& [item, value] : itemValues) {
-    s.bind(1, participantId).bind(2, session).bind(3, questionnaire).bind(4, block).bind(5, item).bind(6, value);
-    s.bind(7, utcTimestamp()).run();
+      "INSERT INTO questionnaire_answers (participant, session, questionnaire, block, item, value, answer, recorded_at) "
+      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+  for (const auto& a : answers) {
+    s.bind(1, participantId).bind(2, session).bind(3, questionnaire).bind(4, block).bind(5, a.field).bind(6, a.number).bind(7, a.value);
+    s.bind(8, utcTimestamp()).run();
   }
   t.commit();
+}
+
+void SqliteStore::recordDecline(const Experiment& e, const std::string& tlabVersion, const std::string& participant) {
+  Transaction t(*db_);
+  if (findParticipant(e.id, participant)) throw StoreError(path_ + ": participant '" + participant + "' is already known");
+  const ExperimentVersion version = ensureVersion(e, tlabVersion);
+  Statement insert = db_->prepare(
+      "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, -1, 'declined', ?3)");
+  insert.bind(1, version.row).bind(2, participant).bind(3, utcTimestamp()).run();
+  Statement consent = db_->prepare("INSERT INTO consent (participant, session, decision, recorded_at) VALUES (?1, NULL, 'declined', ?2)");
+  consent.bind(1, db_->lastInsertId()).bind(2, utcTimestamp()).run();
+  t.commit();
+}
+
+void SqliteStore::recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) {
+  Statement s = db_->prepare("INSERT INTO consent (participant, session, decision, recorded_at) VALUES (?1, ?2, ?3, ?4)");
+  s.bind(1, participantId).bind(2, session).bind(3, accepted ? "accepted" : "declined").bind(4, utcTimestamp()).run();
+}
+
+bool SqliteStore::hasConsent(std::int64_t participantId) {
+  Statement s = db_->prepare("SELECT 1 FROM consent WHERE participant = ?1 AND decision = 'accepted' LIMIT 1");
+  s.bind(1, participantId);
+  return s.step();
+}
+
+void SqliteStore::recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) {
+  Transaction t(*db_);
+  Statement s = db_->prepare(
+      "INSERT INTO participant_info (participant, session, field, value, number, recorded_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  for (const auto& a : answers) s.bind(1, participantId).bind(2, session).bind(3, a.field).bind(4, a.value).bind(5, a.number).bind(6, utcTimestamp()).run();
+  t.commit();
+}
+
+bool SqliteStore::hasInfo(std::int64_t participantId) {
+  Statement s = db_->prepare("SELECT 1 FROM participant_info WHERE participant = ?1 LIMIT 1");
+  s.bind(1, participantId);
+  return s.step();
+}
+
+void SqliteStore::recordDisplay(std::int64_t session, const std::string& displayJson) {
+  Statement s = db_->prepare("UPDATE sessions SET display_json = ?2 WHERE id = ?1");
+  s.bind(1, session).bind(2, displayJson).run();
 }
 
 bool SqliteStore::hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) {

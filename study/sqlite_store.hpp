@@ -14,7 +14,7 @@ namespace tlab::study {
 
 class SqliteStore : public Store {
  public:
-  static constexpr int kSchemaVersion = 3;  // = latestSchemaVersion() (study/schema_migrations.hpp)
+  static constexpr int kSchemaVersion = 4;  // = latestSchemaVersion() (study/schema_migrations.hpp)
 
   // Create/Write: opens (or creates) the file; refuses a file that is not SQLite, one with other
   // tables, a newer schema and a damaged file (PRAGMA quick_check) before anything is written;
@@ -48,8 +48,14 @@ class SqliteStore : public Store {
   void recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                    const std::string& detail) override;
   void recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
-                           const std::vector<std::pair<std::string, int>>& itemValues) override;
+                           const std::vector<FormAnswer>& answers) override;
   bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) override;
+  void recordDecline(const Experiment& experiment, const std::string& tlabVersion, const std::string& participant) override;
+  void recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) override;
+  bool hasConsent(std::int64_t participantId) override;
+  void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) override;
+  bool hasInfo(std::int64_t participantId) override;
+  void recordDisplay(std::int64_t session, const std::string& displayJson) override;
   DataTable exportTable(ExportTable table, const Experiment& experiment) override;  // study/sqlite_store_tables.cpp
   std::vector<AnalysisRecord> analysisRecords(const std::string& experimentId, const std::string& dependentVariable) override;
 

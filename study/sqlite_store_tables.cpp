@@ -52,14 +52,15 @@ DataTable SqliteStore::trialsTable(const Experiment& e) {
   t.header.insert(t.header.end(), {"task_id", "task", "trial", "question", "answer_kind", "truth", "responded", "raw_answer", "answered",
                                    "correct", "score", "partial_credit", "error", "rt_seconds", "time_limit", "onset_ns",
                                    "response_ns", "note", "stimulus_path", "stimulus_sha256", "probe_seed", "session", "recorded_at",
-                                   "experiment_version", "session_status", "showings"});
+                                   "experiment_version", "session_status", "showings", "onset_frame_ms", "late_frames",
+                                   "onset_to_swap_ms"});
   const auto statuses = sessionStatuses();
   Statement s = db_->prepare(
       std::string("SELECT p.participant, p.slot, p.status, t.sequence, t.phase, t.block, t.condition, t.levels_json, t.task_id, t.task, "
       "t.trial, t.question, t.answer_kind, t.truth_json, r.id IS NOT NULL, r.raw_answer, r.answered, r.correct, r.score, "
       "r.partial_credit, r.error, r.rt_seconds, t.time_limit, r.onset_ns, r.response_ns, r.note, t.stimulus_path, "
       "t.stimulus_sha256, t.probe_seed, r.session, r.recorded_at, x.version, "
-      "(SELECT count(*) FROM events e WHERE e.trial = t.id AND e.kind = 'onset') "
+      "(SELECT count(*) FROM events e WHERE e.trial = t.id AND e.kind = 'onset'), r.onset_frame_ms, r.late_frames, r.onset_to_swap_ms "
       "FROM trials t JOIN participants p ON p.id = t.participant "
       "LEFT JOIN responses r ON r.trial = t.id LEFT JOIN sessions ss ON ss.id = r.session "
       "LEFT JOIN experiments x ON x.id = ss.experiment WHERE p.experiment ") + kOfExperiment +
@@ -80,6 +81,9 @@ DataTable SqliteStore::trialsTable(const Experiment& e) {
     const auto status = statuses.find(cell(s, 29));
     row.push_back(status == statuses.end() ? "" : status->second);
     row.push_back(cell(s, 32));
+    row.push_back(numberCell(s, 33));
+    row.push_back(cell(s, 34));
+    row.push_back(numberCell(s, 35));
     t.rows.push_back(std::move(row));
   }
   return t;
@@ -88,19 +92,19 @@ DataTable SqliteStore::trialsTable(const Experiment& e) {
 DataTable SqliteStore::sessionsTable(const Experiment& e) {
   DataTable t;
   t.header = {"experiment", "participant", "session", "experiment_version", "mode", "station", "started_at", "ended_at",
-              "status", "resumed_by", "responses", "onsets"};
+              "status", "resumed_by", "responses", "onsets", "display"};
   const auto statuses = sessionStatuses();
   Statement s = db_->prepare(
       std::string("SELECT p.participant, s.id, x.version, s.mode, s.station, s.started_at, s.ended_at, s.resumed_by, "
       "(SELECT count(*) FROM responses r WHERE r.session = s.id), "
-      "(SELECT count(*) FROM events e WHERE e.session = s.id AND e.kind = 'onset') "
+      "(SELECT count(*) FROM events e WHERE e.session = s.id AND e.kind = 'onset'), s.display_json "
       "FROM sessions s JOIN participants p ON p.id = s.participant LEFT JOIN experiments x ON x.id = s.experiment "
       "WHERE p.experiment ") + kOfExperiment + " ORDER BY s.id");
   s.bind(1, e.id);
   while (s.step()) {
     const auto status = statuses.find(cell(s, 1));
     t.rows.push_back({e.id, cell(s, 0), cell(s, 1), cell(s, 2), cell(s, 3), cell(s, 4), cell(s, 5), cell(s, 6),
-                      status == statuses.end() ? "" : status->second, cell(s, 7), cell(s, 8), cell(s, 9)});
+                      status == statuses.end() ? "" : status->second, cell(s, 7), cell(s, 8), cell(s, 9), cell(s, 10)});
   }
   return t;
 }
@@ -124,8 +128,8 @@ DataTable SqliteStore::exportTable(ExportTable table, const Experiment& e) {
     case ExportTable::Trials: return trialsTable(e);
     case ExportTable::Sessions: return sessionsTable(e);
     case ExportTable::Questionnaires:
-      return queryTable(e.id, {"experiment", "participant", "questionnaire", "block", "item", "value", "session", "recorded_at"},
-                        "SELECT p.participant, q.questionnaire, q.block, q.item, q.value, q.session, q.recorded_at "
+      return queryTable(e.id, {"experiment", "participant", "questionnaire", "block", "item", "answer", "value", "session", "recorded_at"},
+                        "SELECT p.participant, q.questionnaire, q.block, q.item, q.answer, q.value, q.session, q.recorded_at "
                         "FROM questionnaire_answers q JOIN participants p ON p.id = q.participant WHERE p.experiment " + of +
                             " ORDER BY p.slot, q.id");
     case ExportTable::Participants:
@@ -139,6 +143,14 @@ DataTable SqliteStore::exportTable(ExportTable table, const Experiment& e) {
                         "SELECT p.participant, e.session, t.sequence, e.t_ns, e.kind, e.detail FROM events e "
                         "JOIN sessions s ON s.id = e.session JOIN participants p ON p.id = s.participant "
                         "LEFT JOIN trials t ON t.id = e.trial WHERE p.experiment " + of + " ORDER BY e.id");
+    case ExportTable::Info:
+      return queryTable(e.id, {"experiment", "participant", "field", "value", "number", "session", "recorded_at"},
+                        "SELECT p.participant, i.field, i.value, i.number, i.session, i.recorded_at FROM participant_info i "
+                        "JOIN participants p ON p.id = i.participant WHERE p.experiment " + of + " ORDER BY p.id, i.id");
+    case ExportTable::Consent:
+      return queryTable(e.id, {"experiment", "participant", "decision", "session", "recorded_at"},
+                        "SELECT p.participant, c.decision, c.session, c.recorded_at FROM consent c "
+                        "JOIN participants p ON p.id = c.participant WHERE p.experiment " + of + " ORDER BY c.id");
   }
   throw StoreError("unknown export table");
 }

@@ -71,6 +71,19 @@ struct ResponseRecord {
   std::int64_t onsetNs = 0;     // monotonic clock at the stimulus onset (buffer swap)
   std::int64_t responseNs = 0;  // monotonic clock at the response
   std::string note;
+  // Frame timing (window sessions): the swap-to-swap interval of the onset frame, the frames of
+  // the trial whose interval exceeded 1.5 refresh intervals, and stimulus request to swap.
+  std::optional<double> onsetFrameMs;
+  std::optional<int> lateFrames;
+  std::optional<double> onsetToSwapMs;
+};
+
+// One answer of a form (participant information or a questionnaire): the text as given and its
+// number where it has one (study/form_field.hpp).
+struct FormAnswer {
+  std::string field;
+  std::string value;
+  std::optional<double> number;
 };
 
 // One version of an experiment file in the database: the same experiment id with another text
@@ -98,7 +111,7 @@ struct DataTable {
 };
 
 // The tidy tables a store exports (study/csv_export.hpp documents each).
-enum class ExportTable { Trials, Sessions, Questionnaires, Participants, Events };
+enum class ExportTable { Trials, Sessions, Questionnaires, Participants, Events, Info, Consent };
 
 // One answered-or-missing test record for the analysis table of one dependent variable.
 struct AnalysisRecord {
@@ -160,8 +173,19 @@ class Store {
                            const std::string& detail) = 0;
   // All items of one questionnaire screen in one transaction.
   virtual void recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
-                                   const std::vector<std::pair<std::string, int>>& itemValues) = 0;
+                                   const std::vector<FormAnswer>& answers) = 0;
   virtual bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) = 0;
+
+  // A newcomer who declined consent: only that is stored (the version, the participant with
+  // status "declined", no slot, and the decision). Later runs of that id are refused.
+  virtual void recordDecline(const Experiment& experiment, const std::string& tlabVersion, const std::string& participant) = 0;
+  virtual void recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) = 0;
+  virtual bool hasConsent(std::int64_t participantId) = 0;
+  // Participant information, all fields in one transaction.
+  virtual void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) = 0;
+  virtual bool hasInfo(std::int64_t participantId) = 0;
+  // The display a session runs on (GL renderer, sizes, refresh rate, swap interval), as JSON.
+  virtual void recordDisplay(std::int64_t session, const std::string& displayJson) = 0;
 
   // The rows of one export table for every version of `experiment`'s id (one column per factor
   // of `experiment` in the trials table).

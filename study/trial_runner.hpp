@@ -15,6 +15,7 @@
 #include "study/responder.hpp"
 #include "study/session_plan.hpp"
 #include "study/store.hpp"
+#include "tasks/task.hpp"
 #include "study/stimulus_library.hpp"
 
 namespace tlab::study {
@@ -36,7 +37,7 @@ struct TrialProgress {
   std::optional<double> rtSeconds;
 };
 
-enum class SessionOutcome { Finished, Closed };
+enum class SessionOutcome { Finished, Closed, Declined };
 
 struct SessionResult {
   SessionOutcome outcome = SessionOutcome::Finished;
@@ -58,14 +59,26 @@ class TrialRunner {
  private:
   struct Session;
   bool runTrial(Session& s, std::size_t index);
+  ResponseRecord scoreResponse(const Session& s, const TrialRecord& record, const PreparedTrial& prepared, const Response& response,
+                               double limit, tasks::Score& score) const;
+  std::string participantTitle() const;
+  std::optional<SessionOutcome> greetNewcomer(const RunOptions& options, Responder& responder);
+  std::optional<SessionOutcome> openSession(Session& s, bool newcomer);
+  bool betweenTrials(Session& s, std::size_t done);
   bool runQuestionnaires(Session& s, const std::string& when, int block);
   void storeEvents(Session& s, std::optional<std::int64_t> trial);
   // Ends the session as far as the store still allows and throws a StoreError naming the trial
   // that was not stored and how many acknowledged responses are safe.
   [[noreturn]] void stopAfterStorageError(Session& s, const SessionResult& result, std::size_t index, const StoreError& e);
 
+  struct Newcomer {
+    int slot = 0;
+    SessionPlan plan;
+    std::vector<TrialRecord> records;
+  };
   std::vector<TrialRecord> preparePlan(const SessionPlan& plan);
-  ParticipantRecord enrolNewcomer(const RunOptions& options, SessionPlan& plan);
+  Newcomer prepareNewcomer();
+  ParticipantRecord enrolNewcomer(const RunOptions& options, Newcomer& newcomer);
 
   const Experiment& experiment_;
   Store& store_;

@@ -1,6 +1,7 @@
 #include "study/window_responder.hpp"
 
 #include "study/live_view.hpp"
+#include "study/simulated_observer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,18 +13,13 @@
 #include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
+#include "study/window_style.hpp"
 #include "tasks/answer_parser.hpp"
+#include "tasks/letter_patterns.hpp"
 
 namespace tlab::study {
 
 namespace {
-
-constexpr Rgba kInk{20, 20, 20, 255};
-constexpr Rgba kMuted{110, 110, 110, 255};
-constexpr Rgba kPaper{245, 245, 242, 255};
-constexpr Rgba kBand{228, 228, 224, 255};
-constexpr Rgba kAccent{30, 90, 200, 255};
-constexpr Rgba kWarn{190, 30, 30, 255};
 
 WindowResponder* self(GLFWwindow* w) { return static_cast<WindowResponder*>(glfwGetWindowUserPointer(w)); }
 
@@ -79,15 +75,6 @@ std::string hint(tasks::AnswerKind kind) {
     case AnswerKind::FloorPoint: return "Click the place on the floor plan (right), or type x,z and press Enter.";
   }
   return "";
-}
-
-void drawButton(Canvas& c, TextPainter& p, const Button& b, bool selected) {
-  c.fillRect(b.rect, selected ? kAccent : Rgba{255, 255, 255, 255});
-  c.strokeRect(b.rect, kInk, 2);
-  const float size = float(b.rect.height) * 0.5f;
-  const int w = p.lineWidth(b.label, size);
-  p.drawLine(c, b.label, b.rect.x + (b.rect.width - w) / 2, b.rect.y + (b.rect.height - p.lineHeight(size)) / 2 + 2, size,
-             selected ? Rgba{255, 255, 255, 255} : kInk);
 }
 
 std::string formatCountdown(double seconds) {
@@ -164,9 +151,34 @@ std::int64_t WindowResponder::present(const Canvas& canvas) {
   return after;
 }
 
+void WindowResponder::engageAutopilot(std::shared_ptr<SimulatedObserver> observer, double pace) {
+  autopilot_ = std::move(observer);
+  autopilotPace_ = pace;
+}
+
+void WindowResponder::script(std::vector<Input> inputs, double afterSeconds) {
+  if (!autopilot_) return;
+  const std::int64_t due = monotonicNs() + std::int64_t(afterSeconds * 1e9);
+  for (auto& in : inputs) script_.push_back({due, in});
+}
+
+void WindowResponder::scriptText(const std::string& text, bool enter, double afterSeconds) {
+  std::vector<Input> inputs;
+  for (const unsigned char c : text) inputs.push_back({Input::Kind::Char, 0, char32_t(c), 0, 0, 0});
+  if (enter) inputs.push_back({Input::Kind::Key, GLFW_KEY_ENTER, 0, 0, 0, 0});
+  script(inputs, afterSeconds);
+}
+
 void WindowResponder::waitForInput(double seconds, bool inTrial) {
   const std::int64_t before = monotonicNs();
+  if (!script_.empty()) seconds = std::min(seconds, std::max(0.0, (script_.front().first - before) / 1e9));
   glfwWaitEventsTimeout(std::max(seconds, 0.0));
+  while (!script_.empty() && script_.front().first <= monotonicNs()) {  // the autopilot's keys, stamped when given
+    Input in = script_.front().second;
+    in.tNs = monotonicNs();
+    inputs_.push_back(in);
+    script_.pop_front();
+  }
   if (inTrial) eventWaitMaxMs_ = std::max(eventWaitMaxMs_, (monotonicNs() - before) / 1e6);
 }
 
@@ -211,6 +223,7 @@ bool WindowResponder::showMessage(const std::string& title, const std::string& t
   painter_.drawLine(c, "Press Space or click to continue.", 40, c.height() - 60, 20.0f, kMuted);
   present(c);
   inputs_.clear();
+  script({{Input::Kind::Key, GLFW_KEY_SPACE, 0, 0, 0, 0}}, 0.2);
   while (!closed_) {
     waitForInput(0.1);
     while (!inputs_.empty()) {
@@ -263,7 +276,11 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
     layoutJson["labels"][p.label] = {screenPoints.back().x, screenPoints.back().y};
   }
   std::vector<Button> buttons;
-  if (q.answerKind == tasks::AnswerKind::Letter) buttons = buttonRow(layout.answer, {"C", "K", "R", "X", "Y"});
+  if (q.answerKind == tasks::AnswerKind::Letter) {
+    std::vector<std::string> letters;
+    for (const char l : tasks::patternLetters()) letters.push_back(std::string(1, l));
+    buttons = buttonRow(layout.answer, letters);
+  }
   for (const auto& b : buttons) layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
   if (floorAnswer) layoutJson["plan"] = {layout.plan->x, layout.plan->y, layout.plan->width, layout.plan->height};
 
@@ -296,10 +313,36 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   };
 
   inputs_.clear();
+  // Frames are presented at the refresh rate throughout the trial (PsychoPy's frame record): the
+  // interval of every swap is known, and frames over 1.5 refresh intervals count as late.
+  const double refreshMs = 1000.0 / (refreshHz() > 0 ? refreshHz() : 60);
+  std::optional<double> onsetFrameMs;
+  int lateFrames = 0;
+  std::int64_t lastSwapNs = 0;
+  Canvas current = frame();
+  auto show = [&](const Canvas& c) {
+    const std::int64_t swap = present(c);
+    const double interval = (swap - lastSwapNs) / 1e6;
+    if (lastSwapNs == onsetNs && !onsetFrameMs) onsetFrameMs = interval;
+    if (interval > 1.5 * refreshMs) ++lateFrames;
+    lastSwapNs = swap;
+  };
+  auto timed = [&](Response r) {
+    r.onsetFrameMs = onsetFrameMs;
+    r.lateFrames = lateFrames;
+    r.onsetToSwapMs = lastPresentOnsetMs_;
+    return r;
+  };
   {
-    const Canvas first = frame();
+    const Canvas& first = current;
     const std::int64_t before = monotonicNs();
     onsetNs = present(first);
+    lastSwapNs = onsetNs;
+    lastPresentOnsetMs_ = (onsetNs - before) / 1e6;
+    if (autopilot_) {
+      const ObserverDecision d = autopilot_->decide(view);
+      scriptText(d.typed, q.answerKind != tasks::AnswerKind::Letter, std::min(d.seconds * autopilotPace_, view.limitSeconds / 2));
+    }
     ++onsets_;
     const double onsetMs = (onsetNs - before) / 1e6;
     onsetSumMs_ += onsetMs;
@@ -334,7 +377,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
       r.responseNs = monotonicNs();
       r.note = "time limit";
       event(r.responseNs, "timeout", "");
-      return r;
+      return timed(r);
     }
     waitForInput(std::min(0.005, left), true);
     while (!inputs_.empty()) {
@@ -381,7 +424,8 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
         }
       } else if (in.kind == Input::Kind::Char) {
         const std::string ch = encodeUtf8(in.codepoint);
-        if (q.answerKind == tasks::AnswerKind::Letter && (ch.size() == 1 && std::string("CKRXYckrxy").find(ch) != std::string::npos))
+        if (q.answerKind == tasks::AnswerKind::Letter && ch.size() == 1 &&
+            tasks::patternLetters().find(char(std::toupper(ch[0]))) != std::string::npos)
           answer = submit(std::string(1, char(std::toupper(ch[0]))), in.tNs);
         else if (typed.size() < 256) {
           typed += ch;
@@ -409,59 +453,17 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
       }
       if (answer) {
         answer->rtSeconds = std::max(0.0, *answer->rtSeconds);
-        return answer;
+        return timed(*answer);
       }
     }
     const int second = int(std::ceil(view.limitSeconds - elapsed(monotonicNs())));
     if (dirty || second != shownSecond) {
-      present(frame());
+      current = frame();
       shownSecond = second;
       dirty = false;
     }
+    if ((monotonicNs() - lastSwapNs) / 1e6 >= refreshMs) show(current);
   }
-}
-
-std::optional<std::vector<int>> WindowResponder::answerQuestionnaire(const Questionnaire& questionnaire) {
-  std::vector<int> values;
-  for (const auto& item : questionnaire.items) {
-    if (closed_) return std::nullopt;
-    Canvas c = blank();
-    const Rect band{0, c.height() / 2, c.width(), c.height() / 4};
-    std::vector<std::string> labels;
-    for (int k = 1; k <= questionnaire.points; ++k) labels.push_back(std::to_string(k));
-    const auto buttons = buttonRow(band, labels, 56, 10);
-    painter_.drawLine(c, "Questionnaire", 40, 30, 28.0f, kInk);
-    painter_.drawParagraph(c, item.text, 40, 90, c.width() - 80, 24.0f, kInk);
-    painter_.drawLine(c, "1 = " + questionnaire.lowAnchor, 40, band.y + band.height + 10, 18.0f, kMuted);
-    const std::string high = std::to_string(questionnaire.points) + " = " + questionnaire.highAnchor;
-    painter_.drawLine(c, high, c.width() - 40 - painter_.lineWidth(high, 18.0f), band.y + band.height + 10, 18.0f, kMuted);
-    nlohmann::json layoutJson;
-    for (const auto& b : buttons) {
-      drawButton(c, painter_, b, false);
-      layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
-    }
-    event(present(c), "questionnaire", nlohmann::json({{"questionnaire", questionnaire.id}, {"item", item.id}, {"layout", layoutJson}}).dump());
-    inputs_.clear();
-    int value = 0;
-    while (value == 0) {
-      if (closed_) return std::nullopt;
-      waitForInput(0.1);
-      while (!inputs_.empty() && value == 0) {
-        const Input in = inputs_.front();
-        inputs_.pop_front();
-        if (in.kind == Input::Kind::Close) closed_ = true;
-        if (in.kind == Input::Kind::Char && in.codepoint >= U'1' && in.codepoint <= U'9' && int(in.codepoint - U'0') <= questionnaire.points)
-          value = int(in.codepoint - U'0');
-        if (in.kind == Input::Kind::Click)
-          for (const auto& b : buttons)
-            if (b.rect.contains(in.x, in.y)) value = std::stoi(b.label);
-        if (in.kind == Input::Kind::Key && in.key == GLFW_KEY_ESCAPE && !pause()) return std::nullopt;
-      }
-      if (value == 0) present(c);
-    }
-    values.push_back(value);
-  }
-  return values;
 }
 
 FrameTiming WindowResponder::timing() const {

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdint>
 #include <deque>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -35,16 +36,26 @@ struct FrameTiming {
   double eventWaitMaxMs = 0.0;       // longest wait in the event loop while a trial ran (bounds RT resolution when idle)
 };
 
+class SimulatedObserver;
+
 class WindowResponder final : public Responder {
  public:
   WindowResponder(gpu::WindowContext& window, TextPainter& painter);
+  // Autopilot (jsPsych's "visual" simulation): every screen is shown and answered through the
+  // real input handling, with the keys and clicks a simulated observer would give; `pace` scales
+  // its response times to real time.
+  void engageAutopilot(std::shared_ptr<SimulatedObserver> observer, double pace);
   ~WindowResponder() override;
 
-  std::string mode() const override { return "window"; }
+  std::string mode() const override { return autopilot_ ? "autopilot" : "window"; }
   bool showMessage(const std::string& title, const std::string& text) override;
+  std::optional<bool> askConsent(const std::string& title, const ConsentSpec& consent) override;      // window_screens.cpp
+  std::optional<std::vector<std::string>> fillForm(const std::string& title, const std::vector<FormField>& fields) override;
   std::optional<Response> respond(const TrialView& view) override;
-  std::optional<std::vector<int>> answerQuestionnaire(const Questionnaire& questionnaire) override;
+  bool showFeedback(const TrialView& view, const Feedback& feedback) override;
+  bool takeBreak(const BreakSpec& spec) override;
   std::vector<ResponderEvent> takeEvents() override;
+  std::optional<DisplayInfo> display() const override;
 
   FrameTiming timing() const;
 
@@ -65,6 +76,12 @@ class WindowResponder final : public Responder {
 
  private:
   enum class Wait { Continue, Closed };
+  std::optional<Input> nextInput(const Canvas& screen);
+  std::optional<std::string> askField(const std::string& title, const FormField& field, int index, int count);
+  int refreshHz() const;
+  // Autopilot: inputs due at a time, released by waitForInput as if the participant gave them.
+  void script(std::vector<Input> inputs, double afterSeconds);
+  void scriptText(const std::string& text, bool enter, double afterSeconds);
   std::int64_t present(const Canvas& canvas);  // returns the monotonic time after the swap
   bool pause();
   void waitForInput(double seconds, bool inTrial = false);
@@ -74,6 +91,10 @@ class WindowResponder final : public Responder {
   gpu::WindowContext& window_;
   TextPainter& painter_;
   std::deque<Input> inputs_;
+  std::shared_ptr<SimulatedObserver> autopilot_;
+  double autopilotPace_ = 0.05;
+  std::deque<std::pair<std::int64_t, Input>> script_;
+  int feedbacks_ = 0, breaks_ = 0;  // fault points
   std::vector<ResponderEvent> events_;
   bool closed_ = false;
   std::optional<glm::dvec2> dragFrom_;
@@ -83,6 +104,7 @@ class WindowResponder final : public Responder {
   int onsets_ = 0;
   double onsetSumMs_ = 0.0, onsetMaxMs_ = 0.0;
   double lastPresentMs_ = 0.0;
+  double lastPresentOnsetMs_ = 0.0;  // the current trial's stimulus request → swap
   double eventWaitMaxMs_ = 0.0;
 };
 

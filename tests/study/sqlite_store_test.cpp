@@ -247,7 +247,7 @@ TEST(SqliteStore, HostileIdsAndAnswersAreStoredAndExportedIntact) {
       r.answered = true;
       r.rtSeconds = 1.5;
       store.recordResponse(r);
-      store.recordQuestionnaire(p.id, session, "post", 0, {{texts[i], 3}});
+      store.recordQuestionnaire(p.id, session, "post", 0, {{texts[i], "3", 3.0}});
     }
   }
   SqliteStore store((dir / "s.db").string(), OpenMode::Read);

@@ -206,8 +206,10 @@ TEST(StorageFaults, SchemaOneDatabaseIsMigratedAndKeepsItsResponses) {
     d.execute("INSERT INTO experiments SELECT id, experiment_id, file_path, file_text, sha256, tlab_version, created_at FROM src.experiments;"
               "INSERT INTO participants SELECT * FROM src.participants; INSERT INTO assignments SELECT * FROM src.assignments;"
               "INSERT INTO sessions SELECT id, participant, mode, started_at, ended_at, end_reason FROM src.sessions;"
-              "INSERT INTO trials SELECT * FROM src.trials; INSERT INTO responses SELECT * FROM src.responses;"
-              "INSERT INTO events SELECT * FROM src.events; INSERT INTO questionnaire_answers SELECT * FROM src.questionnaire_answers;"
+              "INSERT INTO trials SELECT * FROM src.trials; INSERT INTO responses SELECT id, trial, session, raw_answer, answered, correct,"
+              " score, partial_credit, error, rt_seconds, onset_ns, response_ns, note, recorded_at FROM src.responses;"
+              "INSERT INTO events SELECT * FROM src.events; INSERT INTO questionnaire_answers SELECT id, participant, session,"
+              " questionnaire, block, item, value, recorded_at FROM src.questionnaire_answers;"
               "DETACH src");
   }
   // A reader migrates a copy in memory and leaves the old file as it was.
@@ -219,7 +221,7 @@ TEST(StorageFaults, SchemaOneDatabaseIsMigratedAndKeepsItsResponses) {
   EXPECT_EQ(d.userVersion(), tlab::study::latestSchemaVersion());
   auto migrations = d.prepare("SELECT group_concat(version) FROM schema_migrations");
   ASSERT_TRUE(migrations.step());
-  EXPECT_EQ(migrations.text(0), "2,3");
+  EXPECT_EQ(migrations.text(0), "2,3,4");
   auto stations = d.prepare("SELECT count(*), count(station) FROM sessions");
   ASSERT_TRUE(stations.step());
   EXPECT_EQ(stations.integer(0), 2);

@@ -136,7 +136,9 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   pause(400);
   xdo("key --window " + window + " 4");  // questionnaire
   pause(400);
-  xdo("key --window " + window + " space");  // goodbye
+  xdo("key --window " + window + " Return");  // confirm the answers
+  pause(400);
+  xdo("key --window " + window + " space");  // debrief
   const int code = session.finish();
   const std::string out = session.out();
   ASSERT_EQ(code, 0) << out << session.err();
