@@ -84,11 +84,18 @@ void run(StatcheckCommandOptions& o) {
     std::cout << (all.size() == 1 ? all[0] : all).dump(2) << "\n";
     return;
   }
+  std::size_t results = 0, errors = 0, decisions = 0;
   for (std::size_t i = 0; i < reports.size(); ++i) {
     if (i > 0) std::cout << "\n";
     if (o.allPValues) printPValues(reports[i]);
     else printText(reports[i]);
+    results += reports[i].verdicts.size();
+    errors += reports[i].inconsistencies();
+    decisions += reports[i].decisionErrors();
   }
+  if (reports.size() > 1 && !o.allPValues)
+    std::cout << "\nTotal: " << reports.size() << " files, " << results << " APA results, " << errors
+              << " inconsistent, " << decisions << " decision errors\n";
 }
 
 }  // namespace

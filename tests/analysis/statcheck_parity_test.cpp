@@ -1,5 +1,5 @@
 // statcheck's own extraction, p-value and error cases (statcheck 1.6.0, tests/testthat:
-// test-extract-*.R, test-compute-pvalues.R, test-error.R, test-APAfactor.R) as GoogleTest cases.
+// test-extract-*.R, test-compute-pvalues.R, test-error.R, test-APAfactor.R, test-S3-methods.R) as GoogleTest cases.
 // Each test name or comment states the convention; expected p-values are R 4.2.2's
 // (2*pt(-2.2, 28) etc., printed with %.17g). Where tlab deliberately differs the case says so
 // (README.md, "statcheck: deliberate differences").
@@ -130,6 +130,7 @@ TEST(StatcheckParity, QTestVariants) {
 }
 
 TEST(StatcheckParity, WhatIsNotAResult) {
+  EXPECT_EQ(statcheck("", "empty").verdicts.size(), 0u);  // no input: no results, no error
   for (const char* text : {
            "t(28) = 2.20; p = .03",       // statcheck requires a comma after the statistic
            "t[28] = 2.20, p = .03",       // brackets are not df
@@ -271,6 +272,26 @@ TEST(StatcheckParity, ApaFactor) {
   const auto none = statcheck("This text has 0% of its stats in APA style: p < .05.", "3");
   EXPECT_EQ(none.verdicts.size(), 0u);
   EXPECT_EQ(none.apaFactor(), 0.0);
+}
+
+// statcheck's summary() (test-S3-methods.R): per-source and total counts of p-values with a
+// result, errors and decision errors.
+TEST(StatcheckParity, SummaryCounts) {
+  const std::vector<std::string> texts = {"t(28) = 2.20, p = .06", "F(2, 28) = 2.20, p = .15", "r(28) = .22, p = .26",
+                                          "chi2(28) = 22.20, p = .77", " z = 2.20, p = .04", "Q(28) = 22.20, p = .03"};
+  std::string all;
+  for (const auto& t : texts) all += t + " ";
+  const StatcheckReport one = statcheck(all, "01");
+  EXPECT_EQ(one.verdicts.size(), 6u);
+  EXPECT_EQ(one.inconsistencies(), 5u);
+  EXPECT_EQ(one.decisionErrors(), 2u);
+  const std::size_t errors[] = {1, 1, 1, 0, 1, 1}, decisions[] = {1, 0, 0, 0, 0, 1};
+  for (std::size_t i = 0; i < texts.size(); ++i) {
+    const StatcheckReport r = statcheck(texts[i], std::to_string(i + 1));
+    EXPECT_EQ(r.verdicts.size(), 1u) << texts[i];
+    EXPECT_EQ(r.inconsistencies(), errors[i]) << texts[i];
+    EXPECT_EQ(r.decisionErrors(), decisions[i]) << texts[i];
+  }
 }
 
 }  // namespace
