@@ -204,10 +204,11 @@ StatcheckVerdict checkApaResult(const ApaResult& result, bool oneTailedInText, c
 StatcheckReport statcheck(std::string_view text, const std::string& source, const StatcheckOptions& options) {
   StatcheckReport report;
   report.source = source;
-  report.oneTailedInText = mentionsOneTailed(normalizeForStatcheck(text).text);
-  for (const auto& r : extractApaResults(text))
+  const NormalizedText norm = normalizeForStatcheck(text);
+  report.oneTailedInText = mentionsOneTailed(norm.text);
+  for (const auto& r : extractApaResults(norm))
     report.verdicts.push_back(checkApaResult(r, report.oneTailedInText, options));
-  report.pValues = extractPValues(text);
+  report.pValues = extractPValues(norm);
   return report;
 }
 

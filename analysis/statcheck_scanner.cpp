@@ -2,6 +2,7 @@
 
 #include <re2/re2.h>
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -39,26 +40,30 @@ NormalizedText normalizeForStatcheck(std::string_view in) {
   };
   NormalizedText out;
   out.text.reserve(in.size());
-  out.line.reserve(in.size());
-  std::size_t line = 1;
+  out.lineStarts.push_back(0);
   for (std::size_t i = 0; i < in.size();) {
+    const auto c = static_cast<unsigned char>(in[i]);
+    if (c < 0x80 && c != '&' && c != '\\' && c >= ' ') {  // no replacement starts with it
+      out.text.push_back(in[i++]);
+      continue;
+    }
     bool replaced = false;
     for (const auto& r : replacements) {
       if (in.substr(i, r.from.size()) == r.from) {
         out.text += r.to;
-        out.line.insert(out.line.end(), r.to.size(), line);
-        if (r.from == "\n") ++line;
+        if (r.from == "\n") out.lineStarts.push_back(out.text.size());
         i += r.from.size();
         replaced = true;
         break;
       }
     }
-    if (replaced) continue;
-    out.text.push_back(in[i]);
-    out.line.push_back(line);
-    ++i;
+    if (!replaced) out.text.push_back(in[i++]);
   }
   return out;
+}
+
+std::size_t NormalizedText::lineAt(std::size_t offset) const {
+  return static_cast<std::size_t>(std::upper_bound(lineStarts.begin(), lineStarts.end(), offset) - lineStarts.begin());
 }
 
 namespace {
@@ -178,8 +183,9 @@ bool plausible(const ApaResult& r) {
 
 }  // namespace
 
-std::vector<ApaResult> extractApaResults(std::string_view text) {
-  const NormalizedText norm = normalizeForStatcheck(text);
+std::vector<ApaResult> extractApaResults(std::string_view text) { return extractApaResults(normalizeForStatcheck(text)); }
+
+std::vector<ApaResult> extractApaResults(const NormalizedText& norm) {
   std::vector<ApaResult> results;
   forEachMatch<GroupCount>(apa(), norm.text, [&](const auto& m, std::size_t start) {
     ApaResult r;
@@ -201,18 +207,19 @@ std::vector<ApaResult> extractApaResults(std::string_view text) {
     }
     if (!plausible(r)) return;
     r.text = str(m[0]);
-    r.line = norm.line[start];
+    r.line = norm.lineAt(start);
     results.push_back(r);
   });
   return results;
 }
 
-std::vector<ReportedP> extractPValues(std::string_view text) {
-  const NormalizedText norm = normalizeForStatcheck(text);
+std::vector<ReportedP> extractPValues(std::string_view text) { return extractPValues(normalizeForStatcheck(text)); }
+
+std::vector<ReportedP> extractPValues(const NormalizedText& norm) {
   std::vector<ReportedP> values;
   forEachMatch<3>(pValuePattern(), norm.text, [&](const auto& m, std::size_t start) {
     ReportedP p;
-    p.line = norm.line[start];
+    p.line = norm.lineAt(start);
     if (!m[3].empty()) {
       p.relation = PRelation::NotSignificant;
     } else {
