@@ -186,7 +186,7 @@ TEST(Cli, StatcheckFolderJsonCsvAndOptions) {
   const RunResult csv = runTlab("statcheck " + dir.string() + " --csv");
   EXPECT_EQ(csv.exitCode, 0);
   EXPECT_EQ(csv.output.rfind("source,test_type,df1,df2,test_comp,test_value,p_comp,reported_p,computed_p,raw,error,", 0), 0u);
-  EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 1 + 4 + 3 + 1);
+  EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 1 + 4 + 4 + 1);
   const RunResult pvalues = runTlab("statcheck " + (dir / "sub" / "one.txt").string() + " --csv --all-p-values");
   EXPECT_NE(pvalues.output.find(",\"=\",0.2,1,"), std::string::npos) << pvalues.output;
   const RunResult missing = runTlab("statcheck " + (dir / "nothing.txt").string(), true);

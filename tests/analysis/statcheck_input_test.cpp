@@ -1,7 +1,7 @@
 // statcheck's inputs: PDF through poppler with statcheck's typesetting fixes, HTML through
 // libxml2, folders searched recursively. The PDF fixture is written by
-// tests/data/analysis/statcheck_sample_pdf.py (one page, Helvetica); expected results are read off
-// the fixture texts.
+// tests/data/analysis/statcheck_sample_pdf.py (two pages, the second in two columns; Helvetica);
+// expected results are read off the fixture texts.
 #include <filesystem>
 #include <fstream>
 
@@ -44,12 +44,17 @@ TEST(StatcheckInput, PdfThroughPoppler) {
   EXPECT_NE(text.find("t(28) = 2.20, p = .04"), std::string::npos) << text;
   EXPECT_NE(text.find("p < .001"), std::string::npos) << text;  // "p b .001" fixed
   const StatcheckReport r = statcheckFile(data("statcheck_sample.pdf"));
-  ASSERT_EQ(r.verdicts.size(), 3u);
+  ASSERT_EQ(r.verdicts.size(), 4u);
   EXPECT_TRUE(r.verdicts[0].consistent);   // t(28) = 2.20: p = .036 (R), reported .04
   EXPECT_EQ(r.verdicts[1].result.kind, StatisticKind::F);
   EXPECT_TRUE(r.verdicts[1].consistent);
   EXPECT_TRUE(r.verdicts[2].decisionError);  // t(28) = 1.20 gives p = .24
   EXPECT_EQ(r.verdicts[2].result.line, 4u);
+  // Page 2 has two columns; in reading order the left column's "t(40) =" / "3.10, p = .004" stay
+  // together (physical layout would put the right column's words between them).
+  // R: 2*pt(-3.1, 40) = 0.003537, range over [3.095, 3.105] = [0.003489, 0.003585] meets [.0035, .0045].
+  EXPECT_EQ(r.verdicts[3].result.text, "t(40) = 3.10, p = .004");
+  EXPECT_TRUE(r.verdicts[3].consistent);
 }
 
 TEST(StatcheckInput, BrokenPdfIsAOneLineError) {
