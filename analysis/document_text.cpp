@@ -56,6 +56,7 @@ std::vector<std::string> collectDocuments(const std::vector<std::string>& paths)
       for (fs::recursive_directory_iterator it(path, ec), end; !ec && it != end; it.increment(ec))
         if (it->is_regular_file(ec) && isDocument(it->path())) found.push_back(it->path().string());
       if (ec) throw AnalysisError(path + ": cannot list folder (" + ec.message() + ")");
+      if (found.empty()) throw AnalysisError(path + ": no .txt, .pdf, .htm or .html file in this folder");
       std::sort(found.begin(), found.end());
       out.insert(out.end(), found.begin(), found.end());
     } else if (fs::exists(path, ec)) {

@@ -25,7 +25,7 @@ std::string htmlText(std::string_view html, const std::string& source);
 std::string fixPdfTypesetting(std::string_view text);
 
 // Files given and, for folders, every .txt/.pdf/.htm/.html below them, each folder's in sorted
-// order. Throws AnalysisError for a path that does not exist.
+// order. Throws AnalysisError for a path that does not exist or a folder without documents.
 std::vector<std::string> collectDocuments(const std::vector<std::string>& paths);
 
 }  // namespace tlab::analysis

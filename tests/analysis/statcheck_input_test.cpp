@@ -94,6 +94,8 @@ TEST(StatcheckInput, FoldersAreSearchedRecursivelyInSortedOrder) {
   EXPECT_EQ(fs::path(files[1]).filename(), "z.txt");  // "b/deeper/z.txt" sorts before "b/paper.pdf"
   EXPECT_EQ(fs::path(files[2]).filename(), "paper.pdf");
   EXPECT_TRUE(testing::throwsWithMessage([&] { collectDocuments({(dir / "missing").string()}); }, {"missing", "no such"}));
+  fs::create_directories(dir / "empty");
+  EXPECT_TRUE(testing::throwsWithMessage([&] { collectDocuments({(dir / "empty").string()}); }, {"empty", "no .txt"}));
   fs::remove_all(dir);
 }
 
