@@ -1,9 +1,11 @@
 #include "analysis/statcheck.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
 
+#include "analysis/analysis_error.hpp"
 #include "analysis/distributions.hpp"
 #include "analysis/document_text.hpp"
 #include "analysis/statcheck_scanner.hpp"
@@ -41,6 +43,23 @@ std::string_view statisticName(StatisticKind kind) {
     case StatisticKind::Qb: return "Qb";
   }
   return "t";
+}
+
+std::string_view statSelectionName(StatisticKind kind) {
+  switch (kind) {
+    case StatisticKind::R: return "cor";
+    case StatisticKind::ChiSquared: return "chisq";
+    case StatisticKind::Qw:
+    case StatisticKind::Qb: return "Q";
+    default: return statisticName(kind);
+  }
+}
+
+void validateTestSelection(const std::vector<std::string>& tests) {
+  static constexpr std::string_view names[] = {"t", "F", "cor", "chisq", "Z", "Q"};
+  for (const auto& t : tests)
+    if (std::find(std::begin(names), std::end(names), t) == std::end(names))
+      throw AnalysisError("statcheck: unknown test type '" + t + "' (use t, F, cor, chisq, Z, Q)");
 }
 
 bool reportedPConsistent(const Interval& computed, PRelation relation, const ReportedValue& p, double alpha) {
@@ -206,8 +225,13 @@ StatcheckReport statcheck(std::string_view text, const std::string& source, cons
   report.source = source;
   const NormalizedText norm = normalizeForStatcheck(text);
   report.oneTailedInText = mentionsOneTailed(norm.text);
-  for (const auto& r : extractApaResults(norm))
+  validateTestSelection(options.tests);
+  for (const auto& r : extractApaResults(norm)) {
+    const auto name = statSelectionName(r.kind);
+    if (!options.tests.empty() && std::find(options.tests.begin(), options.tests.end(), name) == options.tests.end())
+      continue;
     report.verdicts.push_back(checkApaResult(r, report.oneTailedInText, options));
+  }
   report.pValues = extractPValues(norm);
   return report;
 }

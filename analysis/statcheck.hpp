@@ -75,7 +75,15 @@ struct StatcheckOptions {
   bool pZeroError = true;              // "p = .000" is an error
   bool oneTailedTests = false;         // treat every t, r, z as one-tailed
   bool oneTailedText = false;          // statcheck's OneTailedTxt: one-tailed wording detection
+  // statcheck's `stat`: the test types to report, by statcheck's names "t", "F", "cor", "chisq",
+  // "Z", "Q" (Q includes Qw and Qb); empty: all.
+  std::vector<std::string> tests;
 };
+
+// statcheck's `stat` name of a test type ("cor" for r, "chisq" for χ², "Q" for Q, Qw and Qb).
+std::string_view statSelectionName(StatisticKind kind);
+// Throws AnalysisError for a name that is none of the above.
+void validateTestSelection(const std::vector<std::string>& tests);
 
 struct StatcheckVerdict {
   ApaResult result;

@@ -116,6 +116,9 @@ void addStatcheckCommand(CLI::App& app) {
   cmd->add_flag("--one-tailed-text", o->check.oneTailedText,
                 "Re-check errors one-tailed in texts that say one-sided/one-tailed/directional (statcheck's "
                 "OneTailedTxt)");
+  cmd->add_option("--stat", o->check.tests,
+                  "Report only these test types: t, F, cor, chisq, Z, Q (statcheck's stat; default all)")
+      ->delimiter(',');
   cmd->add_flag("--all-p-values", o->allPValues, "List every p-value instead of the results (statcheck's AllPValues)");
   auto* json = cmd->add_flag("--json", o->json, "Print JSON (statcheck's fields and tlab's)");
   cmd->add_flag("--csv", o->csv, "Print CSV for R (statcheck's columns first)")->excludes(json);

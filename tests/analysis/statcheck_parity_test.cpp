@@ -294,5 +294,19 @@ TEST(StatcheckParity, SummaryCounts) {
   }
 }
 
+// statcheck's `stat` argument: which test types to report (the APA factor counts only those).
+TEST(StatcheckParity, TestTypeSelection) {
+  const std::string text = "t(28) = 2.20, p = .03; r(28) = .22, p = .26; chi2(28) = 22.20, p = .79; Qb(2) = 2.2, p = .33.";
+  StatcheckOptions o;
+  o.tests = {"cor", "Q"};
+  const StatcheckReport r = statcheck(text, "txt", o);
+  ASSERT_EQ(r.verdicts.size(), 2u);
+  EXPECT_EQ(r.verdicts[0].result.kind, StatisticKind::R);
+  EXPECT_EQ(r.verdicts[1].result.kind, StatisticKind::Qb);
+  EXPECT_EQ(r.apaFactor(), 0.5);
+  o.tests = {"chi2"};
+  EXPECT_TRUE(testing::throwsWithMessage([&] { statcheck(text, "txt", o); }, {"chi2", "chisq"}));
+}
+
 }  // namespace
 }  // namespace tlab::analysis
