@@ -1,7 +1,6 @@
 #include "analysis/reproduce_carnecky.hpp"
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 #include "analysis/distributions.hpp"
@@ -26,77 +25,23 @@ std::vector<CarneckyComparison> carneckyTable1() {
   };
 }
 
+PrintedTTest printedTTest(const CarneckyComparison& c) {
+  PrintedTTest p;
+  p.mean1 = c.mean1;
+  p.mean2 = c.mean2;
+  p.variance1 = c.variance1.value;
+  p.variance2 = c.variance2.value;
+  p.variance1Range = c.variance1.interval();
+  p.variance2Range = c.variance2.interval();
+  p.n1 = p.n2 = static_cast<double>(c.n);
+  p.df = c.df;
+  p.t = c.t;
+  p.p = c.pOneSided;
+  p.pTails = 1;
+  return p;
+}
+
 namespace {
-
-// One-sided p = P(T_df < -|t|); decreasing in |t|, and for a fixed negative t increasing as df
-// falls (heavier tails), so the corners below enclose p over the whole box.
-Interval oneSidedPRange(Interval absT, Interval df) {
-  return {studentTLowerTail(-absT.hi, df.hi), studentTLowerTail(-absT.lo, df.lo)};
-}
-
-// Welch df for equal n: (n-1)(v1+v2)²/(v1²+v2²) = (n-1)·g(ρ), ρ = v2/v1, g(ρ) = (1+ρ)²/(1+ρ²),
-// which rises on [0, 1] to its maximum 2 and falls after: its exact range over the box follows
-// from the range of ρ (no interval-dependency overestimate).
-Interval welchDfRangeEqualN(Interval v1, Interval v2, double n) {
-  const auto g = [](double rho) { return (1 + rho) * (1 + rho) / (1 + rho * rho); };
-  const Interval rho = v2 / v1;
-  double lo = std::min(g(rho.lo), g(rho.hi));
-  double hi = rho.contains(1.0) ? 2.0 : std::max(g(rho.lo), g(rho.hi));
-  return {(n - 1) * lo, (n - 1) * hi};
-}
-
-CarneckyHypothesisCheck checkTwoSample(const CarneckyComparison& c, TTestKind kind) {
-  const double n = static_cast<double>(c.n);
-  const SampleSummary x{c.n, c.mean1.value, c.variance1.value};
-  const SampleSummary y{c.n, c.mean2.value, c.variance2.value};
-  const TTestResult r = kind == TTestKind::Welch
-                            ? welchTTestFromSummaries(x, y, Alternative::Less)
-                            : studentTTestFromSummaries(x, y, Alternative::Less);
-  CarneckyHypothesisCheck check;
-  check.kind = kind;
-  check.t = r.t;
-  check.df = r.df;
-  check.pOneSided = studentTLowerTail(-std::fabs(r.t), r.df);
-  // With n1 = n2 the Student and Welch t coincide: |d̄| / √((v1 + v2)/n).
-  const Interval diff = abs(c.mean1.interval() - c.mean2.interval());
-  const Interval varianceSum = c.variance1.interval() + c.variance2.interval();
-  check.absTRange = diff / sqrt(varianceSum / Interval::point(n));
-  check.dfRange = kind == TTestKind::Welch
-                      ? welchDfRangeEqualN(c.variance1.interval(), c.variance2.interval(), n)
-                      : Interval::point(2 * n - 2);
-  check.pRange = oneSidedPRange(check.absTRange, check.dfRange);
-  check.dfConsistent = check.dfRange.intersects(c.df.interval());
-  check.tConsistent = check.absTRange.intersects(abs(c.t.interval()));
-  check.pConsistent = check.pRange.intersects(c.pOneSided.interval());
-  return check;
-}
-
-// Paired: df = n - 1 whatever the data; t = d̄/√((s1² + s2² - 2 r s1 s2)/n) depends on the
-// correlation r, which the paper does not report, so only df can decide; we also give the r the
-// printed t would require.
-CarneckyHypothesisCheck checkPaired(const CarneckyComparison& c) {
-  const double n = static_cast<double>(c.n);
-  CarneckyHypothesisCheck check;
-  check.kind = TTestKind::Paired;
-  check.t = std::nan("");
-  check.df = n - 1;
-  check.dfRange = Interval::point(n - 1);
-  check.absTRange = {0.0, std::numeric_limits<double>::infinity()};  // any |t|, for some r
-  check.pRange = {0.0, 0.5};
-  check.pOneSided = std::nan("");
-  check.dfConsistent = check.dfRange.intersects(c.df.interval());
-  check.tConsistent = true;
-  check.pConsistent = true;
-  const double d = c.mean1.value - c.mean2.value;
-  const double t = c.t.value;
-  check.impliedCorrelation = (c.variance1.value + c.variance2.value - n * d * d / (t * t)) /
-                             (2 * std::sqrt(c.variance1.value * c.variance2.value));
-  const Interval d2 = square(c.mean1.interval() - c.mean2.interval());
-  const Interval t2 = square(c.t.interval());
-  const Interval numerator = c.variance1.interval() + c.variance2.interval() - Interval::point(n) * d2 / t2;
-  check.impliedCorrelationRange = numerator / (Interval::point(2.0) * sqrt(c.variance1.interval() * c.variance2.interval()));
-  return check;
-}
 
 std::string fmt(double x, int precision = 3) {
   std::ostringstream out;
@@ -116,9 +61,10 @@ CarneckyReproduction reproduceCarnecky() {
   for (const auto& c : carneckyTable1()) {
     CarneckyRow row;
     row.published = c;
-    row.checks.push_back(checkTwoSample(c, TTestKind::Welch));
-    row.checks.push_back(checkTwoSample(c, TTestKind::Student));
-    row.checks.push_back(checkPaired(c));
+    const PrintedTTest printed = printedTTest(c);
+    row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Welch));
+    row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Student));
+    row.checks.push_back(checkPairedHypothesis(printed));
     welchAll = welchAll && row.checks[0].consistent();
     studentAny = studentAny || row.checks[1].consistent();
     pairedAny = pairedAny || row.checks[2].consistent();

@@ -9,6 +9,7 @@
 
 #include "analysis/interval.hpp"
 #include "analysis/ttest.hpp"
+#include "analysis/ttest_reproduction.hpp"
 
 namespace tlab::analysis {
 
@@ -21,24 +22,8 @@ struct CarneckyComparison {
   std::size_t n = 36;              // participants, every one in every condition (Sec. 8.2)
 };
 
-// What one test hypothesis predicts for one comparison.
-struct CarneckyHypothesisCheck {
-  TTestKind kind = TTestKind::Welch;
-  double t = 0.0;              // at the printed values (paired: not determined, NaN)
-  double df = 0.0;
-  double pOneSided = 0.0;      // P(T < -|t|)
-  Interval absTRange;          // |t| over the rounding box of the inputs
-  Interval dfRange;
-  Interval pRange;             // enclosure of the one-sided p
-  bool dfConsistent = false;   // range meets the printed df's rounding interval
-  bool tConsistent = false;    // |t| range meets the printed |t|'s interval
-  bool pConsistent = false;
-  bool consistent() const { return dfConsistent && tConsistent && pConsistent; }
-  // Paired only: the correlation between the two conditions that the printed |t| would need
-  // (r = (s1² + s2² - n·d̄²/t²)/(2 s1 s2)), with its range over the rounding box.
-  double impliedCorrelation = 0.0;
-  Interval impliedCorrelationRange;
-};
+// What one test hypothesis predicts for one comparison (analysis/ttest_reproduction.hpp).
+using CarneckyHypothesisCheck = TTestHypothesisCheck;
 
 struct CarneckyRow {
   CarneckyComparison published;
@@ -56,6 +41,8 @@ struct CarneckyReproduction {
 
 // The values of Table 1 as printed (typed in from seed 000, lines ~1255-1300).
 std::vector<CarneckyComparison> carneckyTable1();
+// A comparison as the generic reproduction reads it (the printed p is one-sided).
+PrintedTTest printedTTest(const CarneckyComparison& c);
 CarneckyReproduction reproduceCarnecky();
 
 }  // namespace tlab::analysis

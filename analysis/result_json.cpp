@@ -74,29 +74,54 @@ nlohmann::json toJson(const Descriptives& d) {
           {"median", number(d.median)}, {"q3", number(d.q3)}, {"max", number(d.max)}};
 }
 
+nlohmann::json toJson(const TTestHypothesisCheck& h) {
+  nlohmann::json j = {{"test", std::string(tTestKindName(h.kind))},
+                      {"t", number(h.t)},
+                      {"df", number(h.df)},
+                      {"p_one_sided", number(h.pOneSided)},
+                      {"abs_t_range", interval(h.absTRange)},
+                      {"df_range", interval(h.dfRange)},
+                      {"p_range", interval(h.pRange)},
+                      {"df_consistent", h.dfConsistent},
+                      {"t_consistent", h.tConsistent},
+                      {"p_consistent", h.pConsistent},
+                      {"consistent", h.consistent()}};
+  if (h.kind == TTestKind::Paired) {
+    j["implied_r"] = number(h.impliedCorrelation);
+    j["implied_r_range"] = interval(h.impliedCorrelationRange);
+  }
+  return j;
+}
+
+nlohmann::json toJson(const std::vector<TableComparison>& rows) {
+  nlohmann::json out = nlohmann::json::array();
+  const auto printed = [](const std::optional<ReportedValue>& v) { return v ? nlohmann::json(v->text) : nlohmann::json(nullptr); };
+  for (const auto& row : rows) {
+    const PrintedTTest& p = row.printed;
+    nlohmann::json checks = nlohmann::json::array();
+    std::vector<std::string> consistentWith;
+    for (const auto& h : row.checks) {
+      checks.push_back(toJson(h));
+      if (h.consistent()) consistentWith.emplace_back(tTestKindName(h.kind));
+    }
+    out.push_back({{"comparison", row.first + " vs " + row.second},
+                   {"where", row.where},
+                   {"published",
+                    {{"mean1", p.mean1.text}, {"mean2", p.mean2.text}, {"var1", number(p.variance1)},
+                     {"var2", number(p.variance2)}, {"n1", p.n1}, {"n2", p.n2}, {"df", printed(p.df)},
+                     {"t", printed(p.t)}, {"p", printed(p.p)}, {"p_tails", p.pTails}}},
+                   {"checks", checks},
+                   {"consistent_with", consistentWith}});
+  }
+  return {{"rows", out}};
+}
+
 nlohmann::json toJson(const CarneckyReproduction& r) {
   nlohmann::json rows = nlohmann::json::array();
   for (const auto& row : r.rows) {
     const auto& c = row.published;
     nlohmann::json checks = nlohmann::json::array();
-    for (const auto& h : row.checks) {
-      nlohmann::json j = {{"test", std::string(tTestKindName(h.kind))},
-                          {"t", number(h.t)},
-                          {"df", number(h.df)},
-                          {"p_one_sided", number(h.pOneSided)},
-                          {"abs_t_range", interval(h.absTRange)},
-                          {"df_range", interval(h.dfRange)},
-                          {"p_range", interval(h.pRange)},
-                          {"df_consistent", h.dfConsistent},
-                          {"t_consistent", h.tConsistent},
-                          {"p_consistent", h.pConsistent},
-                          {"consistent", h.consistent()}};
-      if (h.kind == TTestKind::Paired) {
-        j["implied_r"] = number(h.impliedCorrelation);
-        j["implied_r_range"] = interval(h.impliedCorrelationRange);
-      }
-      checks.push_back(j);
-    }
+    for (const auto& h : row.checks) checks.push_back(toJson(h));
     rows.push_back({{"comparison", c.first + " vs " + c.second},
                     {"published",
                      {{"mean1", reported(c.mean1)},
@@ -147,33 +172,50 @@ nlohmann::json toJson(const ElmqvistReproduction& r) {
 }
 
 nlohmann::json toJson(const StatcheckReport& r) {
+  // statcheck's fields (R/constants.R) under its names, then tlab's.
   nlohmann::json results = nlohmann::json::array();
   for (const auto& v : r.verdicts) {
     const auto& a = v.result;
-    nlohmann::json j = {{"line", a.line},
-                        {"text", a.text},
-                        {"statistic", std::string(statisticName(a.kind))},
-                        {"df1", number(a.df1)},
-                        {"value", number(a.statistic.value)},
-                        {"p_relation", std::string(pRelationSymbol(a.pRelation))},
-                        {"p_computed", number(v.pComputed)},
-                        {"p_range", interval(v.pRange)},
-                        {"consistent", v.consistent},
-                        {"decision_error", v.decisionError},
-                        {"consistent_if_one_tailed", v.consistentIfOneTailed},
-                        {"note", v.note}};
-    if (a.kind == StatisticKind::F) j["df2"] = number(a.df2);
-    if (a.pRelation != PRelation::NotSignificant) j["p_reported"] = number(a.p.value);
-    results.push_back(j);
+    const bool ns = a.pRelation == PRelation::NotSignificant;
+    results.push_back({{"raw", a.text},
+                       {"test_type", std::string(statisticName(a.kind))},
+                       {"df1", number(a.df1)},
+                       {"df2", number(a.df2)},
+                       {"test_comp", std::string(comparisonSymbol(a.testComparison))},
+                       {"test_value", number(a.statistic.value)},
+                       {"test_decimals", a.statistic.decimals},
+                       {"p_comp", std::string(pRelationSymbol(a.pRelation))},
+                       {"reported_p", ns ? nlohmann::json(nullptr) : number(a.p.value)},
+                       {"p_decimals", ns ? nlohmann::json(nullptr) : nlohmann::json(a.p.decimals)},
+                       {"computed_p", number(v.pComputed)},
+                       {"computed_p_range", interval(v.pRange)},
+                       {"one_tailed", v.oneTailed},
+                       {"error", !v.consistent},
+                       {"decision_error", v.decisionError},
+                       {"consistent_if_one_tailed", v.consistentIfOneTailed},
+                       {"line", a.line},
+                       {"note", v.note}});
   }
-  return {{"file", r.source},
+  nlohmann::json pValues = nlohmann::json::array();
+  for (const auto& p : r.pValues) {
+    const bool ns = p.relation == PRelation::NotSignificant;
+    pValues.push_back({{"p_comp", std::string(pRelationSymbol(p.relation))},
+                       {"reported_p", ns ? nlohmann::json(nullptr) : number(p.p.value)},
+                       {"p_decimals", ns ? nlohmann::json(nullptr) : nlohmann::json(p.p.decimals)},
+                       {"line", p.line}});
+  }
+  const double apa = r.apaFactor();
+  return {{"source", r.source},
           {"results", results},
+          {"p_values", pValues},
           {"summary",
            {{"results", r.verdicts.size()},
-            {"inconsistencies", r.inconsistencies()},
+            {"errors", r.inconsistencies()},
             {"decision_errors", r.decisionErrors()},
-            {"p_values_without_statistic", r.pValuesWithoutStatistic},
-            {"one_tailed_in_text", r.oneTailedInText}}}};
+            {"p_values", r.pValues.size()},
+            {"p_values_without_statistic", r.pValuesWithoutStatistic()},
+            {"apa_factor", std::isfinite(apa) ? nlohmann::json(std::round(apa * 100.0) / 100.0) : nlohmann::json(nullptr)},
+            {"one_tailed_in_txt", r.oneTailedInText}}}};
 }
 
 }  // namespace tlab::analysis

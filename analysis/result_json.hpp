@@ -9,6 +9,7 @@
 #include "analysis/rank_tests.hpp"
 #include "analysis/reproduce_carnecky.hpp"
 #include "analysis/reproduce_elmqvist.hpp"
+#include "analysis/reproduce_table.hpp"
 #include "analysis/statcheck.hpp"
 #include "analysis/ttest.hpp"
 
@@ -25,7 +26,10 @@ nlohmann::json toJson(const FriedmanResult& r);             // {"chisq","df","p"
 nlohmann::json toJson(const WilcoxonSignedRankResult& r);   // {"V","p"} plus "exact","n","zeros"
 nlohmann::json toJson(const MannWhitneyResult& r);          // {"W","p"} plus "exact"
 nlohmann::json toJson(const Descriptives& d);
+nlohmann::json toJson(const TTestHypothesisCheck& h);
 nlohmann::json toJson(const CarneckyReproduction& r);
+// {"rows":[{"comparison","where","published","checks","consistent_with"}]}
+nlohmann::json toJson(const std::vector<TableComparison>& rows);
 nlohmann::json toJson(const ElmqvistReproduction& r);
 nlohmann::json toJson(const StatcheckReport& r);
 

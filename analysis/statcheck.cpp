@@ -1,13 +1,14 @@
 #include "analysis/statcheck.hpp"
 
+#include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <regex>
+#include <limits>
 #include <sstream>
-#include <stdexcept>
 
 #include "analysis/analysis_error.hpp"
 #include "analysis/distributions.hpp"
+#include "analysis/document_text.hpp"
+#include "analysis/statcheck_scanner.hpp"
 
 namespace tlab::analysis {
 
@@ -21,13 +22,44 @@ std::string_view pRelationSymbol(PRelation relation) {
   return "=";
 }
 
+std::string_view comparisonSymbol(TestComparison comparison) {
+  switch (comparison) {
+    case TestComparison::Less: return "<";
+    case TestComparison::Equal: return "=";
+    case TestComparison::Greater: return ">";
+  }
+  return "=";
+}
+
 std::string_view statisticName(StatisticKind kind) {
   switch (kind) {
     case StatisticKind::T: return "t";
     case StatisticKind::F: return "F";
-    case StatisticKind::ChiSquared: return "chi2";
+    case StatisticKind::R: return "r";
+    case StatisticKind::Z: return "Z";
+    case StatisticKind::ChiSquared: return "Chi2";
+    case StatisticKind::Q: return "Q";
+    case StatisticKind::Qw: return "Qw";
+    case StatisticKind::Qb: return "Qb";
   }
   return "t";
+}
+
+std::string_view statSelectionName(StatisticKind kind) {
+  switch (kind) {
+    case StatisticKind::R: return "cor";
+    case StatisticKind::ChiSquared: return "chisq";
+    case StatisticKind::Qw:
+    case StatisticKind::Qb: return "Q";
+    default: return statisticName(kind);
+  }
+}
+
+void validateTestSelection(const std::vector<std::string>& tests) {
+  static constexpr std::string_view names[] = {"t", "F", "cor", "chisq", "Z", "Q"};
+  for (const auto& t : tests)
+    if (std::find(std::begin(names), std::end(names), t) == std::end(names))
+      throw AnalysisError("statcheck: unknown test type '" + t + "' (use t, F, cor, chisq, Z, Q)");
 }
 
 bool reportedPConsistent(const Interval& computed, PRelation relation, const ReportedValue& p, double alpha) {
@@ -52,113 +84,95 @@ std::size_t StatcheckReport::decisionErrors() const {
   return n;
 }
 
+std::size_t StatcheckReport::pValuesWithoutStatistic() const {
+  return pValues.size() >= verdicts.size() ? pValues.size() - verdicts.size() : 0;
+}
+
+double StatcheckReport::apaFactor() const {
+  if (pValues.empty()) return std::nan("");
+  return static_cast<double>(verdicts.size()) / static_cast<double>(pValues.size());
+}
+
 namespace {
 
-// Text with PDF-extraction variants mapped to ASCII, and the source line of every character.
-struct NormalizedText {
-  std::string text;
-  std::vector<std::size_t> line;
-};
-
-NormalizedText normalize(std::string_view in) {
-  struct Replacement {
-    std::string_view from;
-    std::string_view to;
-  };
-  // Longest first where one is a prefix of another.
-  static constexpr Replacement replacements[] = {
-      {"\xE2\x88\x92", "-"},      // U+2212 minus sign
-      {"\xE2\x80\x93", "-"},      // U+2013 en dash
-      {"\xE2\x80\x94", "-"},      // U+2014 em dash
-      {"\xE2\x80\x90", "-"},      // U+2010 hyphen
-      {"\xCF\x87", "chi"},        // U+03C7 χ
-      {"\xCE\xA7", "chi"},        // U+03A7 Χ
-      {"\xC2\xB2", "2"},          // U+00B2 ²
-      {"\xC2\xA0", " "},          // no-break space
-      {"\xE2\x80\x89", " "},      // thin space
-      {"\xE2\x80\xAF", " "},      // narrow no-break space
-      {"\xE2\x89\xA4", "<"},      // ≤ (statcheck treats ≤ as <)
-      {"\xE2\x89\xA5", ">"},      // ≥
-      {"&lt;", "<"},
-      {"&gt;", ">"},
-      {"\\chi", "chi"},
-      {"\n", " "},
-      {"\r", " "},
-      {"\t", " "},
-  };
-  NormalizedText out;
-  std::size_t line = 1;
-  for (std::size_t i = 0; i < in.size();) {
-    bool replaced = false;
-    for (const auto& r : replacements) {
-      if (in.substr(i, r.from.size()) == r.from) {
-        out.text += r.to;
-        out.line.insert(out.line.end(), r.to.size(), line);
-        if (r.from == "\n") ++line;
-        i += r.from.size();
-        replaced = true;
-        break;
-      }
-    }
-    if (replaced) continue;
-    out.text.push_back(in[i]);
-    out.line.push_back(line);
-    ++i;
-  }
-  return out;
+bool symmetricTest(StatisticKind kind) {
+  return kind == StatisticKind::T || kind == StatisticKind::R || kind == StatisticKind::Z;
 }
 
-// Numbers are matched unambiguously as `\d+(\.\d+)?|\.\d+` and optional separators between
-// blanks as `\s*(?:[,;]\s*)?`: the looser `\d*\.?\d+` and `\s*[,;]?\s*` let std::regex's
-// backtracking split a long run of digits or blanks every possible way (a 619-byte text of digits
-// and blanks took over 10 s — found by the statcheck fuzzer).
-const std::regex& apaPattern() {
-  // (1) t(df)  (2,3) F(df1, df2)  (4) χ²(df[, N = n])  then "= value" then "[,;] p <op> value" or "ns".
-  static const std::regex pattern(
-      R"((?:\bt\s*\(\s*(\d+(?:\.\d+)?)\s*\))"
-      R"(|\bF\s*\(\s*(\d+(?:\.\d+)?)\s*,\s*(\d+(?:\.\d+)?)\s*\))"
-      R"(|(?:\bchi\s*(?:\^\s*)?(?:\{\s*)?2\s*\}?|\bchi-squared?|\bchi-square|\b[Xx]\s*(?:\^\s*)?2)\s*\(\s*(\d+(?:\.\d+)?)\s*(?:,\s*[Nn]\s*=\s*\d+\s*)?\)))"
-      R"(\s*=\s*(-?\s*(?:\d+(?:\.\d+)?|\.\d+))\s*(?:[,;]\s*)?(?:\b[pP]\s*([<>=])\s*((?:\d+(?:\.\d+)?|\.\d+)(?:[eE]-?\d+)?)|\b(ns|n\.s\.)))");
-  return pattern;
-}
-
-const std::regex& bareP() {
-  static const std::regex pattern(R"(\b[pP]\s*[<>=]\s*(?:\d+(?:\.\d+)?|\.\d+))");
-  return pattern;
-}
-
-const std::regex& oneTailedWording() {
-  // statcheck matches a bare "directional"; in graphics papers that is mostly "directional light",
-  // so it is only taken together with the word it qualifies.
-  static const std::regex pattern(R"(one[- ]?tailed|one[- ]?sided|directional\s+(?:test|hypothes|predict))",
-                                  std::regex::icase);
-  return pattern;
-}
-
-Interval pRangeOf(const ApaResult& r) {
-  const Interval s = r.statistic.interval();
+// p of |statistic| (R/compute_p.R): t, r and z two-tailed unless `oneTailed`; F, χ², Q upper tail.
+double pAt(const ApaResult& r, double value, bool oneTailed) {
+  const double tails = oneTailed ? 1.0 : 2.0;
+  const double a = std::fabs(value);
   switch (r.kind) {
-    case StatisticKind::T: {
-      const Interval a = abs(s);
-      return mapDecreasing(a, [&](double t) { return studentTPValue(t, r.df1, Alternative::TwoSided); });
+    case StatisticKind::T: return tails * studentTUpperTail(a, r.df2);
+    case StatisticKind::R: {
+      if (a >= 1.0) return 0.0;
+      const double t = a / std::sqrt((1.0 - a * a) / r.df2);  // statcheck's r2t
+      return tails * studentTUpperTail(t, r.df2);
     }
-    case StatisticKind::F:
-      return mapDecreasing(Interval{std::max(0.0, s.lo), s.hi},
-                           [&](double f) { return fisherFUpperTail(f, r.df1, r.df2); });
+    case StatisticKind::Z: return tails * normalUpperTail(a);
+    case StatisticKind::F: return value <= 0.0 ? 1.0 : fisherFUpperTail(value, r.df1, r.df2);
     case StatisticKind::ChiSquared:
-      return mapDecreasing(Interval{std::max(0.0, s.lo), s.hi},
-                           [&](double x) { return chiSquaredUpperTail(x, r.df1); });
-  }
-  return {};
-}
-
-double pAt(const ApaResult& r, double value) {
-  switch (r.kind) {
-    case StatisticKind::T: return studentTPValue(value, r.df1, Alternative::TwoSided);
-    case StatisticKind::F: return fisherFUpperTail(value, r.df1, r.df2);
-    case StatisticKind::ChiSquared: return chiSquaredUpperTail(value, r.df1);
+    case StatisticKind::Q:
+    case StatisticKind::Qw:
+    case StatisticKind::Qb: return value <= 0.0 ? 1.0 : chiSquaredUpperTail(value, r.df1);
   }
   return std::nan("");
+}
+
+// p over the statistic's rounding interval; p falls as |statistic| grows.
+Interval pRangeOf(const ApaResult& r, bool oneTailed) {
+  Interval s = r.statistic.interval();
+  if (symmetricTest(r.kind)) s = abs(s);
+  return mapDecreasing(s, [&](double x) { return pAt(r, x, oneTailed); });
+}
+
+// statcheck's error_test.R with the rounding interval of the reported p (see statcheck.hpp).
+bool isError(const ApaResult& r, const Interval& p, const StatcheckOptions& o) {
+  if (r.pRelation != PRelation::NotSignificant && o.pZeroError && r.p.value <= 0.0) return true;
+  const PRelation relation = r.pRelation == PRelation::NotSignificant ? PRelation::Greater : r.pRelation;
+  ReportedValue reported = r.p;
+  if (r.pRelation == PRelation::NotSignificant) reported = ReportedValue{o.alpha, 17, ""};
+  switch (r.testComparison) {
+    case TestComparison::Equal: return !reportedPConsistent(p, relation, reported, o.alpha);
+    case TestComparison::Less:  // the statistic is below its value: p ≥ p.hi
+      if (relation == PRelation::Equal) return reported.interval().hi < p.hi;
+      if (relation == PRelation::Less) return reported.value < p.hi;
+      return false;
+    case TestComparison::Greater:  // p ≤ p.lo
+      if (relation == PRelation::Equal) return reported.interval().lo > p.lo;
+      if (relation == PRelation::Greater) return reported.value > p.lo;
+      return false;
+  }
+  return false;
+}
+
+// statcheck's decision_error_test.R, on the point p computed from the printed statistic.
+bool isDecisionError(const ApaResult& r, double computed, const StatcheckOptions& o) {
+  const double a = o.alpha;
+  const bool ns = r.pRelation == PRelation::NotSignificant;
+  const double reported = ns ? a : r.p.value;
+  const PRelation relation = ns ? PRelation::Greater : r.pRelation;
+  const bool sigAtAlpha = o.pEqualAlphaSignificant;
+  // "Reported significant" / "computed not significant" and the reverse, with p = α on the side
+  // the option puts it.
+  const bool repSig = sigAtAlpha ? reported <= a : reported < a;
+  const bool compNonSig = sigAtAlpha ? computed > a : computed >= a;
+  switch (r.testComparison) {
+    case TestComparison::Equal:
+      if (relation == PRelation::Equal) return (repSig && compNonSig) || (!repSig && !compNonSig);
+      if (relation == PRelation::Less) return reported <= a && compNonSig;
+      return reported >= a && !compNonSig;
+    case TestComparison::Less:
+      if (relation == PRelation::Greater) return false;
+      if (relation == PRelation::Less) return reported <= a && computed >= a;
+      return repSig && computed >= a;
+    case TestComparison::Greater:
+      if (relation == PRelation::Less) return false;
+      if (relation == PRelation::Greater) return reported >= a && computed <= a;
+      return !repSig && computed <= a;
+  }
+  return false;
 }
 
 std::string fmt(double x) {
@@ -168,117 +182,62 @@ std::string fmt(double x) {
   return out.str();
 }
 
-}  // namespace
-
-std::vector<ApaResult> extractApaResults(std::string_view text) {
-  const NormalizedText norm = normalize(text);
-  std::vector<ApaResult> results;
-  for (auto it = std::sregex_iterator(norm.text.begin(), norm.text.end(), apaPattern());
-       it != std::sregex_iterator(); ++it) {
-    const std::smatch& m = *it;
-    ApaResult r;
-    // A match whose numbers cannot stand for a test (df <= 0, a value beyond double's range) is
-    // not a test result: it is skipped, like any other text (found by fuzz/statcheck_fuzzer).
-    try {
-      if (m[1].matched) {
-        r.kind = StatisticKind::T;
-        r.df1 = std::stod(m[1].str());
-      } else if (m[2].matched) {
-        r.kind = StatisticKind::F;
-        r.df1 = std::stod(m[2].str());
-        r.df2 = std::stod(m[3].str());
-      } else {
-        r.kind = StatisticKind::ChiSquared;
-        r.df1 = std::stod(m[4].str());
-      }
-      r.statistic = ReportedValue::parse(m[5].str());
-      if (m[8].matched) {
-        r.pRelation = PRelation::NotSignificant;
-      } else {
-        const char op = m[6].str()[0];
-        r.pRelation = op == '<' ? PRelation::Less : (op == '>' ? PRelation::Greater : PRelation::Equal);
-        r.p = ReportedValue::parse(m[7].str());
-      }
-    } catch (const std::logic_error&) {  // std::out_of_range, std::invalid_argument from std::stod
-      continue;
-    }
-    const bool dfValid = r.df1 > 0.0 && std::isfinite(r.df1) && (r.kind != StatisticKind::F || (r.df2 > 0.0 && std::isfinite(r.df2)));
-    if (!dfValid || !std::isfinite(r.statistic.value)) continue;
-    r.text = m[0].str();
-    r.line = norm.line[static_cast<std::size_t>(m.position(0))];
-    results.push_back(r);
-  }
-  return results;
+void evaluate(StatcheckVerdict& v, bool oneTailed, const StatcheckOptions& o) {
+  v.oneTailed = oneTailed;
+  v.pComputed = pAt(v.result, v.result.statistic.value, oneTailed);
+  v.pRange = pRangeOf(v.result, oneTailed);
+  v.consistent = !isError(v.result, v.pRange, o);
+  v.decisionError = !v.consistent && isDecisionError(v.result, v.pComputed, o);
 }
 
-StatcheckVerdict checkApaResult(const ApaResult& result, bool oneTailedInText, double alpha) {
+}  // namespace
+
+StatcheckVerdict checkApaResult(const ApaResult& result, bool oneTailedInText, const StatcheckOptions& options) {
   StatcheckVerdict v;
   v.result = result;
-  v.pComputed = pAt(result, result.statistic.value);
-  v.pRange = pRangeOf(result);
-  if (result.pRelation == PRelation::Equal && result.p.value == 0.0) {
-    v.consistent = false;
-    v.note = "a p-value cannot be 0 (report p < .001)";
-  } else {
-    v.consistent = reportedPConsistent(v.pRange, result.pRelation, result.p, alpha);
-  }
-  if (!v.consistent && result.kind == StatisticKind::T && result.p.value > 0.0) {
-    const Interval half{v.pRange.lo / 2, v.pRange.hi / 2};
-    v.consistentIfOneTailed = reportedPConsistent(half, result.pRelation, result.p, alpha);
-    if (v.consistentIfOneTailed) {
-      if (oneTailedInText) {
-        v.consistent = true;
-        v.note = "consistent as a one-tailed test (the text mentions one-tailed/one-sided testing)";
-      } else {
-        v.note = "would be consistent if one-tailed, but the text never says one-tailed";
-      }
+  evaluate(v, options.oneTailedTests, options);
+  if (!v.consistent && !options.oneTailedTests && symmetricTest(result.kind)) {
+    StatcheckVerdict one = v;
+    evaluate(one, true, options);
+    v.consistentIfOneTailed = one.consistent;
+    if (one.consistent && options.oneTailedText && oneTailedInText) {
+      v = one;
+      v.consistentIfOneTailed = true;
+      v.note = "consistent as a one-tailed test (the text mentions one-tailed/one-sided/directional testing)";
+    } else if (one.consistent) {
+      v.note = oneTailedInText ? "consistent if one-tailed (the text mentions one-tailed testing; --one-tailed-text)"
+                               : "would be consistent if one-tailed, but the text never says one-tailed";
     }
   }
   if (!v.consistent) {
-    bool reportedSignificant = false;
-    bool reportedNotSignificant = false;
-    switch (result.pRelation) {
-      case PRelation::Equal:
-        reportedSignificant = result.p.value <= alpha;
-        reportedNotSignificant = !reportedSignificant;
-        break;
-      case PRelation::Less: reportedSignificant = result.p.value <= alpha; break;
-      case PRelation::Greater: reportedNotSignificant = result.p.value >= alpha; break;
-      case PRelation::NotSignificant: reportedNotSignificant = true; break;
-    }
-    const bool computedSignificant = v.pRange.hi < alpha;
-    const bool computedNotSignificant = v.pRange.lo >= alpha;
-    v.decisionError = (reportedSignificant && computedNotSignificant) ||
-                      (reportedNotSignificant && computedSignificant);
-    if (v.note.empty())
+    if (result.pRelation != PRelation::NotSignificant && result.p.value <= 0.0 && options.pZeroError)
+      v.note = "a p-value cannot be 0 (report p < .001)";
+    else if (v.note.empty())
       v.note = "recomputed p = " + fmt(v.pComputed) + " (range " + fmt(v.pRange.lo) + " to " + fmt(v.pRange.hi) +
                " over the rounding of the statistic)";
-    if (v.decisionError) v.note += "; decision error at alpha = " + fmt(alpha);
+    if (v.decisionError) v.note += "; decision error at alpha = " + fmt(options.alpha);
   }
   return v;
 }
 
-StatcheckReport statcheck(std::string_view text, const std::string& source, double alpha) {
+StatcheckReport statcheck(std::string_view text, const std::string& source, const StatcheckOptions& options) {
   StatcheckReport report;
   report.source = source;
-  const NormalizedText norm = normalize(text);
-  report.oneTailedInText = std::regex_search(norm.text, oneTailedWording());
-  const std::vector<ApaResult> results = extractApaResults(text);
-  for (const auto& r : results) report.verdicts.push_back(checkApaResult(r, report.oneTailedInText, alpha));
-  const auto bare = static_cast<std::size_t>(
-      std::distance(std::sregex_iterator(norm.text.begin(), norm.text.end(), bareP()), std::sregex_iterator()));
-  std::size_t inResults = 0;
-  for (const auto& r : results) inResults += r.pRelation == PRelation::NotSignificant ? 0 : 1;
-  report.pValuesWithoutStatistic = bare >= inResults ? bare - inResults : 0;
+  const NormalizedText norm = normalizeForStatcheck(text);
+  report.oneTailedInText = mentionsOneTailed(norm.text);
+  validateTestSelection(options.tests);
+  for (const auto& r : extractApaResults(norm)) {
+    const auto name = statSelectionName(r.kind);
+    if (!options.tests.empty() && std::find(options.tests.begin(), options.tests.end(), name) == options.tests.end())
+      continue;
+    report.verdicts.push_back(checkApaResult(r, report.oneTailedInText, options));
+  }
+  report.pValues = extractPValues(norm);
   return report;
 }
 
-StatcheckReport statcheckFile(const std::string& path, double alpha) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw AnalysisError(path + ": cannot open file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return statcheck(buffer.str(), path, alpha);
+StatcheckReport statcheckFile(const std::string& path, const StatcheckOptions& options) {
+  return statcheck(readDocumentText(path), path, options);
 }
 
 }  // namespace tlab::analysis

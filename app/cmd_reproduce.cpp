@@ -1,11 +1,15 @@
 // tlab reproduce carnecky|elmqvist [--json]: recompute the seeds' published statistics from the
 // numbers they print and say what the printed numbers are consistent with.
+// tlab reproduce --table FILE.csv [--json]: the same question as `carnecky` (Welch, Student or
+// paired?) for any paper's two-group comparisons (format in analysis/reproduce_table.hpp).
+#include <cmath>
 #include <iostream>
 #include <memory>
 
 #include "analysis/number_format.hpp"
 #include "analysis/reproduce_carnecky.hpp"
 #include "analysis/reproduce_elmqvist.hpp"
+#include "analysis/reproduce_table.hpp"
 #include "analysis/result_json.hpp"
 #include "analysis/text_table.hpp"
 #include "app/commands.hpp"
@@ -77,12 +81,57 @@ void printElmqvist(const an::ElmqvistReproduction& r) {
   printFindings(r.findings);
 }
 
+std::string printedOrDash(const std::optional<an::ReportedValue>& v) { return v ? v->text : "-"; }
+
+void printTable(const std::vector<an::TableComparison>& rows) {
+  for (const auto& row : rows) {
+    const an::PrintedTTest& p = row.printed;
+    an::TextTable t;
+    t.caption = row.where + ": " + row.first + " (" + p.mean1.text + ", var " + an::formatNumber(p.variance1) +
+                ", n " + an::formatNumber(p.n1) + ") vs " + row.second + " (" + p.mean2.text + ", var " +
+                an::formatNumber(p.variance2) + ", n " + an::formatNumber(p.n2) + "); printed: df " +
+                printedOrDash(p.df) + ", t " + printedOrDash(p.t) + ", p " + printedOrDash(p.p) +
+                (p.pTails == 1 ? " (one-sided)" : " (two-sided)");
+    t.header = {"test", "t", "df", "|t| range", "df range", "p range", "df ok", "t ok", "p ok", "consistent"};
+    std::string consistentWith;
+    for (const auto& h : row.checks) {
+      const bool paired = h.kind == an::TTestKind::Paired;
+      t.rows.push_back({std::string(an::tTestKindName(h.kind)), paired ? "depends on r" : an::formatNumber(h.t),
+                        an::formatNumber(h.df), paired ? "any" : range(h.absTRange), range(h.dfRange),
+                        paired ? "-" : range(h.pRange), yesNo(h.dfConsistent), paired ? "-" : yesNo(h.tConsistent),
+                        paired ? "-" : yesNo(h.pConsistent), yesNo(h.consistent())});
+      if (h.consistent()) consistentWith += (consistentWith.empty() ? "" : ", ") + std::string(an::tTestKindName(h.kind));
+    }
+    std::cout << an::renderPlainText(t);
+    if (row.checks.size() == 3 && std::isfinite(row.checks[2].impliedCorrelation))
+      std::cout << "  paired reading: the printed t needs r = " << an::formatNumber(row.checks[2].impliedCorrelation, 3)
+                << " between the two conditions\n";
+    std::cout << "  consistent with: " << (consistentWith.empty() ? "no tested hypothesis" : consistentWith) << "\n\n";
+  }
+}
+
 }  // namespace
 
 void addReproduceCommand(CLI::App& app) {
-  auto* cmd = app.add_subcommand("reproduce", "Recompute the seed papers' published statistics");
-  cmd->require_subcommand(1);
+  auto* cmd = app.add_subcommand("reproduce", "Recompute published statistics: the seed papers, or any table (--table)");
+  cmd->require_subcommand(0, 1);
   const auto json = std::make_shared<bool>(false);
+  const auto table = std::make_shared<std::string>();
+  cmd->add_option("--table", *table,
+                  "CSV of printed two-group comparisons (mean1,var1|sd1,n1,mean2,var2|sd2,n2[,df,t,p,p_tails]): "
+                  "which t-test (Welch, Student, paired) reproduces them")
+      ->check(CLI::ExistingFile);
+  cmd->add_flag("--json", *json, "Print JSON");
+  cmd->callback([cmd, json, table] {
+    if (table->empty()) {
+      if (cmd->get_subcommands().empty()) throw CLI::RequiredError("reproduce needs carnecky, elmqvist or --table FILE.csv");
+      return;
+    }
+    if (!cmd->get_subcommands().empty()) throw CLI::ValidationError("--table", "give either --table or a paper, not both");
+    const std::vector<an::TableComparison> rows = an::reproduceTable(*table);
+    if (*json) std::cout << an::toJson(rows).dump(2) << "\n";
+    else printTable(rows);
+  });
   auto* carnecky = cmd->add_subcommand("carnecky", "Carnecky et al. 2013, Table 1: Welch, Student or paired?");
   carnecky->add_flag("--json", *json, "Print JSON");
   carnecky->callback([json] {

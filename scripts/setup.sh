@@ -8,6 +8,7 @@ packages=(
   libglfw3-dev libglm-dev libtinygltf-dev libosmesa6-dev libgl-dev libegl-dev
   libsqlite3-dev sqlite3 libboost-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev libcli11-dev
   libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
+  libre2-dev libpoppler-cpp-dev libxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool imagemagick chromium
   clang libclang-rt-14-dev time e2fsprogs

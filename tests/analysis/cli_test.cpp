@@ -4,6 +4,7 @@
 // column, lost precision) show up here.
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -157,7 +158,54 @@ TEST(Cli, ReproduceAndStatcheck) {
   if (!std::filesystem::exists(seed)) GTEST_SKIP() << "seed papers not found";
   const auto check = runJson("statcheck " + seed + " --json");
   EXPECT_EQ(check["summary"]["results"], 5);
-  EXPECT_EQ(check["summary"]["inconsistencies"], 0);
+  EXPECT_EQ(check["summary"]["errors"], 0);
+}
+
+// statcheck end to end: a folder with text, HTML and PDF, every output form and statcheck's options.
+TEST(Cli, StatcheckFolderJsonCsvAndOptions) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "tlab_cli_statcheck";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir / "sub");
+  std::ofstream(dir / "sub" / "one.txt") << "A one-tailed test: t(28) = 2.20, p = .018; and p = .2 alone.";
+  std::filesystem::copy_file(data("statcheck_sample.html"), dir / "paper.html");
+  std::filesystem::copy_file(data("statcheck_sample.pdf"), dir / "paper.pdf");
+  const auto all = runJson("statcheck " + dir.string() + " --json");
+  ASSERT_EQ(all.size(), 3u);  // paper.html, paper.pdf, sub/one.txt
+  EXPECT_EQ(all[0]["summary"]["results"], 4);
+  EXPECT_EQ(all[1]["summary"]["decision_errors"], 1);
+  const auto& one = all[2];
+  EXPECT_EQ(one["results"][0]["test_type"], "t");
+  EXPECT_TRUE(one["results"][0]["df1"].is_null());
+  EXPECT_EQ(one["results"][0]["df2"], 28.0);
+  EXPECT_EQ(one["results"][0]["error"], true);  // two-tailed p = .036 by default, as statcheck
+  EXPECT_EQ(one["summary"]["apa_factor"], 0.5);
+  EXPECT_EQ(one["summary"]["one_tailed_in_txt"], true);
+  const auto detected = runJson("statcheck " + (dir / "sub" / "one.txt").string() + " --json --one-tailed-text");
+  EXPECT_EQ(detected["results"][0]["error"], false);
+  EXPECT_EQ(detected["results"][0]["one_tailed"], true);
+  const RunResult csv = runTlab("statcheck " + dir.string() + " --csv");
+  EXPECT_EQ(csv.exitCode, 0);
+  EXPECT_EQ(csv.output.rfind("source,test_type,df1,df2,test_comp,test_value,p_comp,reported_p,computed_p,raw,error,", 0), 0u);
+  EXPECT_EQ(std::count(csv.output.begin(), csv.output.end(), '\n'), 1 + 4 + 4 + 1);
+  const RunResult pvalues = runTlab("statcheck " + (dir / "sub" / "one.txt").string() + " --csv --all-p-values");
+  EXPECT_NE(pvalues.output.find(",\"=\",0.2,1,"), std::string::npos) << pvalues.output;
+  const RunResult missing = runTlab("statcheck " + (dir / "nothing.txt").string(), true);
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.output.find("nothing.txt: no such file or folder"), std::string::npos) << missing.output;
+  std::filesystem::remove_all(dir);
+}
+
+// reproduce --table: Carnecky's Table 1 as CSV gives the conclusion of `reproduce carnecky`.
+TEST(Cli, ReproduceTableGeneralisesCarnecky) {
+  const auto rows = runJson("reproduce --table " + data("carnecky_table1.csv") + " --json")["rows"];
+  ASSERT_EQ(rows.size(), 3u);
+  for (const auto& row : rows) EXPECT_EQ(row["consistent_with"], nlohmann::json::array({"welch"}));
+  const std::filesystem::path bad = std::filesystem::temp_directory_path() / "tlab_cli_bad_table.csv";
+  std::ofstream(bad) << "mean1,sd1,n1,mean2,sd2,n2,t\n1.5,0.5,20,1.2,0.4,20,2.1\n1.5,abc,20,1.2,0.4,20,2.1\n";
+  const RunResult r = runTlab("reproduce --table " + bad.string(), true);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.output.find("tlab_cli_bad_table.csv:3: column 'sd1'"), std::string::npos) << r.output;
+  std::filesystem::remove(bad);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 // statcheck: extraction of APA results from text (including the seeds' extraction artefacts) and
 // the consistency rules. Expected p-values: R's pt/pf/pchisq.
 #include "analysis/statcheck.hpp"
+#include "analysis/statcheck_scanner.hpp"
 
 #include <fstream>
 #include <iterator>
@@ -18,7 +19,7 @@ TEST(Statcheck, ExtractsTheVariantsOfApaResults) {
   const std::vector<ApaResult> r = extractApaResults(text);
   ASSERT_EQ(r.size(), 6u);  // the F(2, 27) split by a line break is found too
   EXPECT_EQ(r[0].kind, StatisticKind::T);
-  EXPECT_EQ(r[0].df1, 35.0);
+  EXPECT_EQ(r[0].df2, 35.0);  // statcheck puts a t-test's df in df2
   EXPECT_DOUBLE_EQ(r[0].statistic.value, -2.66);
   EXPECT_EQ(r[0].statistic.decimals, 2);
   EXPECT_EQ(r[1].kind, StatisticKind::F);
@@ -34,7 +35,7 @@ TEST(Statcheck, ExtractsTheVariantsOfApaResults) {
   EXPECT_EQ(r[5].line, 3u);
   const StatcheckReport report = statcheck(text, "mem.txt");
   ASSERT_EQ(report.verdicts.size(), 6u);
-  EXPECT_EQ(report.pValuesWithoutStatistic, 1u);
+  EXPECT_EQ(report.pValuesWithoutStatistic(), 1u);
 }
 
 // Found by fuzz/statcheck_fuzzer (crash-5bcd121e…): "chi2(0) = 0.9" made statcheck() throw from
@@ -77,7 +78,9 @@ TEST(Statcheck, ConsistencyRules) {
   const auto verdict = [](const std::string& text, bool oneTailed = false) {
     const auto r = extractApaResults(text);
     EXPECT_EQ(r.size(), 1u) << text;
-    return checkApaResult(r.at(0), oneTailed);
+    StatcheckOptions options;
+    options.oneTailedText = true;  // statcheck's OneTailedTxt
+    return checkApaResult(r.at(0), oneTailed, options);
   };
   EXPECT_TRUE(verdict("t(35) = 2.66, p = .012").consistent);
   const StatcheckVerdict oneSided = verdict("t(35) = 2.66, p = .006");
@@ -115,7 +118,7 @@ TEST(Statcheck, SeedPapers) {
   EXPECT_DOUBLE_EQ(elmqvist.verdicts[4].result.statistic.value, 0.068);
   const StatcheckReport carnecky = statcheckFile(seeds + "000_30b23ea88644c383.txt");
   EXPECT_EQ(carnecky.verdicts.size(), 0u);
-  EXPECT_EQ(carnecky.pValuesWithoutStatistic, 3u);
+  EXPECT_EQ(carnecky.pValuesWithoutStatistic(), 3u);
 }
 
 // Found by fuzz/statcheck_fuzzer (timeout-6312012…, tests/data/analysis/statcheck_digit_run_hang.txt):
