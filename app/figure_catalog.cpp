@@ -39,8 +39,8 @@ std::vector<FigureSpec> iris() {
   const std::string paper = "Hummel et al. 2010, IRIS (seed 003)";
   return {
       {"iris-fig1-opaque-stripes", paper, "Fig. 1 (left)",
-       "opaque, front yellow/back blue, adaptive s-stripes (pathlines), silhouettes", "builtin:toroid", "iris",
-       {"opacity=constant", "alpha=1", "stripes=s", "silhouettes=on"}},
+       "opaque, front and back in two colours, adaptive s-stripes (pathlines) that darken only, silhouettes",
+       "builtin:toroid", "iris", {"opacity=constant", "alpha=1", "stripe_strength=0", "stripe_darken=0.5"}},
       {"iris-fig1-transparent-stripes", paper, "Fig. 1 (right)",
        "transparent (normal variation) with denser stripes, hatching-like, silhouettes", "builtin:toroid", "iris",
        {"stripe_period=8"}},

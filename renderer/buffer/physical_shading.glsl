@@ -14,7 +14,7 @@ const float kPbrPi = 3.14159265358979;
 const float kPbrRoughness = 0.5;
 const vec3 kPbrKeyDirection = vec3(-0.4, 0.8, 0.6);  // normalised where used
 const float kPbrKeyIntensity = 2.2;
-const vec3 kSkyZenith = vec3(0.32, 0.46, 0.75), kSkyHorizon = vec3(0.85, 0.88, 0.92), kSkyGround = vec3(0.30, 0.26, 0.22);
+const vec3 kSkyZenith = vec3(0.32, 0.46, 0.75), kSkyHorizon = vec3(0.85, 0.88, 0.92), kSkyGround = vec3(0.36, 0.27, 0.18);
 
 // The environment: radiance from direction d (view space, y up).
 vec3 skyRadiance(vec3 d) {
