@@ -103,6 +103,15 @@ TEST(BucketedKBufferGl, BucketNeighboursEqualBruteForceOnRandomQuadStacks) {
 
 namespace {
 
+// On the z axis at `distance` looking at the origin, with the given clip planes.
+Camera onTheZAxis(float distance, float nearPlane, float farPlane) {
+  Camera camera;
+  camera.eye = {0, 0, distance};
+  camera.nearPlane = nearPlane;
+  camera.farPlane = farPlane;
+  return camera;
+}
+
 // Mean |κ| over the fragments with all four neighbours, for a sphere of radius r seen from a
 // fixed camera (so a larger sphere bends less). Two tiny quads out of view at (±3, ±3, ±3) keep
 // the scene's bounding radius — κ's length unit — the same for every r.
@@ -111,11 +120,7 @@ double meanInteriorCurvature(float radius) {
   for (float c : {-3.0f, 3.0f}) scene.objects.push_back({"marker", makeQuad({c, c, c}, {0.01f, 0, 0}, {0, 0.01f, 0})});
   Renderer renderer(scene);
   RenderRequest r = curvatureRequest(96, {{"k", "4"}, {"mode", "shading"}, {"scale", "0.05"}});
-  Camera camera;
-  camera.eye = {0, 0, 6};
-  camera.nearPlane = 1;
-  camera.farPlane = 11;
-  r.camera = camera;
+  r.camera = onTheZAxis(6, 1, 11);
   renderer.render(r);
   double sum = 0;
   std::size_t n = 0;
@@ -147,11 +152,7 @@ TEST(BucketedKBufferGl, CurvatureAtTheSphereCentreIsTanhTwoSAtEverySize) {
   Renderer renderer(scene);
   for (int size : {48, 96}) {
     RenderRequest r = curvatureRequest(size, {{"k", "4"}, {"mode", "shading"}, {"scale", "0.25"}});
-    Camera camera;
-    camera.eye = {0, 0, 4};
-    camera.nearPlane = 1;
-    camera.farPlane = 8;
-    r.camera = camera;
+    r.camera = onTheZAxis(4, 1, 8);
     renderer.render(r);
     const auto kappa = renderer.kBuffer()->curvatureValues();
     double sum = 0;
