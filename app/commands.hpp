@@ -13,6 +13,7 @@ void addPeelBench(CLI::App& bench);      // cmd_bench_peel.cpp (tlab bench peel)
 void addDynamicBench(CLI::App& bench);   // cmd_bench_dynamic.cpp (tlab bench dynamic)
 void addBucketBench(CLI::App& bench);    // cmd_bench_buckets.cpp (tlab bench buckets)
 void addGalleryCommand(CLI::App& app);   // cmd_gallery.cpp
+void addFiguresCommand(CLI::App& app);   // cmd_figures.cpp
 void addStatsCommand(CLI::App& app);     // cmd_stats.cpp
 void addReproduceCommand(CLI::App& app); // cmd_reproduce.cpp
 void addStatcheckCommand(CLI::App& app); // cmd_statcheck.cpp

@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   tlab::app::addInspectCommand(app);
   tlab::app::addBenchCommand(app);
   tlab::app::addGalleryCommand(app);
+  tlab::app::addFiguresCommand(app);
   tlab::app::addStatsCommand(app);
   tlab::app::addReproduceCommand(app);
   tlab::app::addStatcheckCommand(app);

@@ -16,6 +16,8 @@ FragmentLayout::FragmentLayout(FragmentProperties p) : properties(p) {
   take(FragmentProperty::DepthGradient, 2, depthGradientOffset);
   take(FragmentProperty::Ids, 1, idsOffset);
   take(FragmentProperty::SurfaceParams, 2, stOffset);
+  take(FragmentProperty::NormalZGradient, 2, nzGradientOffset);
+  take(FragmentProperty::StGradient, 4, stGradientOffset);
 }
 
 gpu::ShaderDefines FragmentLayout::defines() const {
@@ -30,6 +32,8 @@ gpu::ShaderDefines FragmentLayout::defines() const {
   add(FragmentProperty::DepthGradient, "DEPTH_GRADIENT", depthGradientOffset);
   add(FragmentProperty::Ids, "IDS", idsOffset);
   add(FragmentProperty::SurfaceParams, "ST", stOffset);
+  add(FragmentProperty::NormalZGradient, "NZ_GRADIENT", nzGradientOffset);
+  add(FragmentProperty::StGradient, "ST_GRADIENT", stGradientOffset);
   return d;
 }
 
@@ -40,6 +44,8 @@ std::vector<std::string> FragmentLayout::propertyNames() const {
   if (properties.has(FragmentProperty::DepthGradient)) names.push_back("depth_gradient");
   if (properties.has(FragmentProperty::Ids)) names.push_back("ids");
   if (properties.has(FragmentProperty::SurfaceParams)) names.push_back("st");
+  if (properties.has(FragmentProperty::NormalZGradient)) names.push_back("nz_gradient");
+  if (properties.has(FragmentProperty::StGradient)) names.push_back("st_gradient");
   return names;
 }
 

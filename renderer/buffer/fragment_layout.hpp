@@ -17,6 +17,10 @@ enum class FragmentProperty : std::uint32_t {
   DepthGradient = 1u << 2,  // (dz/dx, dz/dy) of eye-space depth (2 words)
   Ids = 1u << 3,            // object id | component id | front-facing flag (1 word)
   SurfaceParams = 1u << 4,  // (s, t) (2 words)
+  // Screen-space derivatives of the shading attributes, taken by the rasterizer (dFdx/dFdy) as
+  // depth peeling takes them, so both renderers of the IRIS styles share one definition:
+  NormalZGradient = 1u << 5,  // (∂n_z/∂x, ∂n_z/∂y) of the unit view normal (2 words)
+  StGradient = 1u << 6,       // (∂s/∂x, ∂s/∂y, ∂t/∂x, ∂t/∂y) (4 words)
 };
 
 struct FragmentProperties {
@@ -32,6 +36,7 @@ struct FragmentLayout {
   FragmentProperties properties;
   std::uint32_t stride = 2;  // words per fragment
   std::uint32_t colorOffset = 0, normalOffset = 0, depthGradientOffset = 0, idsOffset = 0, stOffset = 0;
+  std::uint32_t nzGradientOffset = 0, stGradientOffset = 0;
   // TLAB_STRIDE, TLAB_HAS_*, TLAB_OFF_* for the shaders.
   gpu::ShaderDefines defines() const;
   std::vector<std::string> propertyNames() const;

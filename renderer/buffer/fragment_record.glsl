@@ -9,10 +9,16 @@ flat in uint vComponent;
 uniform uint uPrimitiveBase;
 
 // Screen-space derivatives must be taken in uniform control flow: call this first in main().
+// The n_z and (s, t) derivatives are taken exactly as peel/peel_layer.frag takes them.
 vec2 gDepthGradient;
+vec2 gNzGradient;
+vec4 gStGradient;
 void captureDerivatives() {
   float depth = -vViewPosition.z;
   gDepthGradient = vec2(dFdx(depth), dFdy(depth));
+  float nz = normalize(vViewNormal).z;
+  gNzGradient = vec2(dFdx(nz), dFdy(nz));
+  gStGradient = vec4(dFdx(vST.x), dFdy(vST.x), dFdx(vST.y), dFdy(vST.y));
 }
 
 void writeFragmentRecord(uint frag) {
@@ -38,5 +44,12 @@ void writeFragmentRecord(uint frag) {
 #ifdef TLAB_HAS_ST
   frags[fragWord(frag, TLAB_OFF_ST) + 0u] = floatBitsToUint(vST.x);
   frags[fragWord(frag, TLAB_OFF_ST) + 1u] = floatBitsToUint(vST.y);
+#endif
+#ifdef TLAB_HAS_NZ_GRADIENT
+  frags[fragWord(frag, TLAB_OFF_NZ_GRADIENT) + 0u] = floatBitsToUint(gNzGradient.x);
+  frags[fragWord(frag, TLAB_OFF_NZ_GRADIENT) + 1u] = floatBitsToUint(gNzGradient.y);
+#endif
+#ifdef TLAB_HAS_ST_GRADIENT
+  for (uint k = 0u; k < 4u; ++k) frags[fragWord(frag, TLAB_OFF_ST_GRADIENT) + k] = floatBitsToUint(gStGradient[k]);
 #endif
 }

@@ -10,7 +10,7 @@ constexpr GLuint kBindOutput = 9, kBindCoverTarget = 10, kBindCoverDepth = 11, k
                  kBindMaskDepth = 14;
 
 // Per pixel (GL order): 1 + the farthest drawn target's object id (0: none) and its depth.
-TargetCoverage coverTargets(FrameContext& frame, const DynamicSettings& settings) {
+TargetCoverage coverTargets(FrameContext& frame, int maxLayers, bool allAreTargets, int maskSize) {
   FragmentBuffer& buffer = *frame.buffer;
   const auto& program = frame.shaders.compute("compose/dynamic_coverage.comp", buffer.layout().defines());
   gpu::Buffer target(buffer.pixels() * sizeof(std::uint32_t)), depth(buffer.pixels() * sizeof(float));
@@ -19,15 +19,15 @@ TargetCoverage coverTargets(FrameContext& frame, const DynamicSettings& settings
   program.use();
   glUniform1i(program.uniform("uWidth"), buffer.width());
   glUniform1i(program.uniform("uHeight"), buffer.height());
-  glUniform1i(program.uniform("uMaxLayers"), settings.maxLayers);
-  glUniform1i(program.uniform("uAllAreTargets"), settings.allAreTargets ? 1 : 0);
+  glUniform1i(program.uniform("uMaxLayers"), maxLayers);
+  glUniform1i(program.uniform("uAllAreTargets"), allAreTargets ? 1 : 0);
   gpu::dispatchLinear(buffer.pixels());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<std::uint32_t> targets(buffer.pixels());
   std::vector<float> depths(buffer.pixels());
   target.download(targets.data(), targets.size() * sizeof(std::uint32_t));
   depth.download(depths.data(), depths.size() * sizeof(float));
-  return TargetCoverage::fromPixels(buffer.width(), buffer.height(), targets, depths, settings.mask.size);
+  return TargetCoverage::fromPixels(buffer.width(), buffer.height(), targets, depths, maskSize);
 }
 }  // namespace
 
@@ -42,7 +42,10 @@ gpu::Buffer bindSurfaceInputs(FrameContext& frame, const std::vector<std::uint32
 
 AlphaMask buildDynamicMask(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const DynamicSettings& settings) {
   const gpu::Buffer ranks = bindSurfaceInputs(frame, drawRanks);
-  return buildAlphaMask(coverTargets(frame, settings), settings.mask, float(frame.width) / float(frame.height));
+  const AlphaMaskSettings mask =
+      settings.mask.size > 0 ? settings.mask : AlphaMaskSettings::atImageResolution(settings.mask, frame.width, frame.height);
+  return buildAlphaMask(coverTargets(frame, settings.maxLayers, settings.allAreTargets(frame.scene), mask.size), mask,
+                        float(frame.width) / float(frame.height));
 }
 
 void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const AlphaMask& mask,
@@ -65,7 +68,7 @@ void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawR
   glUniform1f(program.uniform("uAlphaTarget"), settings.mask.alphaTarget);
   glUniform1i(program.uniform("uSharedStacking"), settings.sharedStacking ? 1 : 0);
   glUniform1i(program.uniform("uMaxLayers"), settings.maxLayers);
-  glUniform1i(program.uniform("uAllAreTargets"), settings.allAreTargets ? 1 : 0);
+  glUniform1i(program.uniform("uAllAreTargets"), settings.allAreTargets(frame.scene) ? 1 : 0);
   // The lens in GL pixels (row 0 = bottom); the settings count from the top left.
   const glm::vec4 lens(settings.lensCentre.x * float(buffer.width()), (1.0f - settings.lensCentre.y) * float(buffer.height()),
                        settings.lensRadius * float(buffer.height()), settings.active ? 1.0f : 0.0f);

@@ -18,8 +18,12 @@ struct DynamicSettings {
   glm::vec2 lensCentre{0.5f};   // fractions of the image width and height, (0, 0) = top left
   float lensRadius = 0.2f;      // fraction of the image height
   int maxLayers = 0;            // Sec. III.6 layer control; 0: unlimited
-  bool sharedStacking = true;   // see compose/dynamic_compose.comp
-  bool allAreTargets = false;   // targets: Role::Target, or every object not a distractor/impenetrable
+  bool sharedStacking = false;  // see compose/dynamic_compose.comp; false: the paper's (1 − α_T)^k
+  enum class Targets { Scene, Role, All } targets = Targets::Scene;
+  // Role::Target only, or every object not a distractor/impenetrable (Targets::Scene: as the scene says).
+  bool allAreTargets(const Scene& scene) const {
+    return targets == Targets::All || (targets == Targets::Scene && scene.revealAllObjects);
+  }
 };
 
 // The alpha mask of this frame (seed 004, Alg. 2): which pixels targets are drawn on

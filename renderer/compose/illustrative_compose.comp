@@ -3,21 +3,17 @@
 // shaded by styles/illustrative_shading.glsl, faded to the silhouette colour by a Sobel filter on
 // its own layer (the same layer index in the 3x3 neighbour pixels, as depth peeling sees it,
 // IRIS Sec. 5.1), and blended front to back with float accumulation. Screen-space derivatives of
-// n_z and (s, t) (IRIS Eqs. 2-4) are differences along the geodesic neighbour links of the
-// connect pass (TLAB_HAS_LINKS), central where both neighbours exist.
+// n_z and (s, t) (IRIS Eqs. 2-4) are the rasterizer's dFdx/dFdy stored at fill time — the one
+// definition depth peeling (peel/peel_layer.frag) uses too, so the two renderers agree.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/compute_index.glsl"
 #include "buffer/surface_shading.glsl"
-#include "ops/field_bindings.glsl"
 #include "styles/illustrative_shading.glsl"
 #include "ops/sobel_silhouette.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
 layout(std430, binding = BIND_OUTPUT) writeonly buffer Output { vec4 outColor[]; };
-#ifdef TLAB_HAS_LINKS
-layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
-#endif
 uniform int uWidth;
 uniform int uHeight;
 uniform vec4 uBackground;
@@ -38,30 +34,15 @@ vec3 viewPositionAt(vec2 xy, float z) {
   return vec3(ndc / uProjectionScale * z, -z);
 }
 
-// One difference along an axis from the values at the minus/plus neighbours (when present).
-float axisDifference(float center, float minus, float plus, bool hasMinus, bool hasPlus) {
-  if (hasMinus && hasPlus) return 0.5 * (plus - minus);
-  if (hasPlus) return plus - center;
-  if (hasMinus) return center - minus;
-  return 0.0;
-}
-
+// The screen-space derivatives the fill pass stored (dFdx/dFdy, as depth peeling takes them).
 void screenDerivatives(uint f, inout SurfaceSample s) {
-#ifdef TLAB_HAS_LINKS
-  uvec4 l = links[f];  // (−x, +x, −y, +y)
-  bool has[4] = bool[4](l.x != NO_NEIGHBOR, l.y != NO_NEIGHBOR, l.z != NO_NEIGHBOR, l.w != NO_NEIGHBOR);
-  float nz[4];
-  for (int k = 0; k < 4; ++k) nz[k] = has[k] ? normalOf(l[k]).z : 0.0;
-  float c = normalize(s.normal).z;
-  s.nzGradient = vec2(axisDifference(c, nz[0], nz[1], has[0], has[1]), axisDifference(c, nz[2], nz[3], has[2], has[3]));
-#ifdef TLAB_HAS_ST
-  vec2 st[4];
-  for (int k = 0; k < 4; ++k) st[k] = has[k] ? stOf(l[k]) : vec2(0.0);
-  s.stGradient = vec4(axisDifference(s.st.x, st[0].x, st[1].x, has[0], has[1]),
-                      axisDifference(s.st.x, st[2].x, st[3].x, has[2], has[3]),
-                      axisDifference(s.st.y, st[0].y, st[1].y, has[0], has[1]),
-                      axisDifference(s.st.y, st[2].y, st[3].y, has[2], has[3]));
+#ifdef TLAB_HAS_NZ_GRADIENT
+  uint o = fragWord(f, TLAB_OFF_NZ_GRADIENT);
+  s.nzGradient = vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
 #endif
+#ifdef TLAB_HAS_ST_GRADIENT
+  uint g = fragWord(f, TLAB_OFF_ST_GRADIENT);
+  for (uint k = 0u; k < 4u; ++k) s.stGradient[k] = uintBitsToFloat(sorted[g + k]);
 #endif
 }
 

@@ -8,21 +8,19 @@ namespace tlab::render {
 
 namespace {
 constexpr GLuint kBindOutput = 9;  // BIND_OUTPUT in buffer/fragment_layout.glsl
-constexpr GLuint kBindLinks = 10;  // BIND_LINKS in ops/field_bindings.glsl
 }  // namespace
 
-void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings, const gpu::Buffer* links) {
+void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings) {
   FragmentBuffer& buffer = *frame.buffer;
-  if (settings.needsScreenDerivatives() && !links)
-    throw std::logic_error("normal variation and stripes need the neighbour links of the connect pass");
-  gpu::ShaderDefines defines = buffer.layout().defines();
-  if (links) defines.emplace_back("TLAB_HAS_LINKS", "1");
-  const auto& program = frame.shaders.compute("compose/illustrative_compose.comp", defines);
+  const FragmentProperties stored = buffer.layout().properties;
+  if ((settings.opacity == IllustrativeSettings::Opacity::NormalVariation && !stored.has(FragmentProperty::NormalZGradient)) ||
+      (settings.stripes != 0 && !stored.has(FragmentProperty::StGradient)))
+    throw std::logic_error("normal variation and stripes need the screen-space derivatives stored at fill time");
+  const auto& program = frame.shaders.compute("compose/illustrative_compose.comp", buffer.layout().defines());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
   buffer.bindSorted();
   frame.gpuScene.bindObjectTable();
   output.bindBase(GL_SHADER_STORAGE_BUFFER, kBindOutput);
-  if (links) links->bindBase(GL_SHADER_STORAGE_BUFFER, kBindLinks);
   program.use();
   glUniform1i(program.uniform("uWidth"), buffer.width());
   glUniform1i(program.uniform("uHeight"), buffer.height());

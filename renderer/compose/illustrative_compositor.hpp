@@ -8,8 +8,7 @@
 
 namespace tlab::render {
 
-// `links` holds the connect pass's neighbour links (uvec4 per fragment) when the settings need
-// screen-space derivatives; null otherwise.
-void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings, const gpu::Buffer* links);
+// Normal variation needs FragmentProperty::NormalZGradient in the buffer, stripes StGradient.
+void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings);
 
 }  // namespace tlab::render

@@ -8,8 +8,9 @@
 //    boundaries (Sec. 6.1), already at the first transparent back face;
 //  - transparency falls off towards the edges: F1's α is interpolated from the per-vertex α of
 //    Eq. 2 (ops/view_dependent_alpha.comp).
-// Blending as in Sec. 7: c = α_T·c_T + α_dst·c_dst (GL_SRC_ALPHA, GL_DST_ALPHA), c_dst the first
-// opaque surface behind F1 with the user's α_opaque, else the background with α_background.
+// Blending as in Sec. 7: c = α_T·c_T + w·c_dst (GL_SRC_ALPHA, GL_DST_ALPHA), c_dst the first
+// opaque surface behind F1 with the user's w = α_opaque, else the background with α_background;
+// by default both weights are divided by α_T + w where that exceeds 1 (no wash-out).
 // An opaque surface in front of every transparent one is drawn as it is.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/compute_index.glsl"
@@ -22,7 +23,9 @@ layout(std430, binding = BIND_OUTPUT) writeonly buffer Output { vec4 outColor[];
 layout(std430, binding = 10) readonly buffer Positions { vec4 positions[]; };
 layout(std430, binding = 11) readonly buffer Triangles { uint triangles[]; };
 layout(std430, binding = 12) readonly buffer VertexAlpha { float vertexAlpha[]; };
-layout(std430, binding = 13) writeonly buffer VisibleDepth { float visibleDepth[]; };
+// Per pixel: the hiding depth, and the depth limit for transparent objects' lines (F1's depth:
+// a transparent object's lines behind its own front face are not drawn, as in Fig. 5).
+layout(std430, binding = 13) writeonly buffer VisibleDepth { vec2 visibleDepth[]; };
 uniform int uWidth;
 uniform int uHeight;
 uniform vec4 uBackground;
@@ -31,6 +34,7 @@ uniform mat4 uView;
 uniform int uExplicitBoundaries;
 uniform float uAlphaOpaque;
 uniform float uAlphaBackground;
+uniform int uAdditiveBlend;
 
 const uint kRoleOpaque = 2u;  // Role::Opaque
 
@@ -83,6 +87,7 @@ void main() {
   vec3 ray = rayThrough(vec2(pixel % uint(uWidth), pixel / uint(uWidth)) + 0.5);
   int front = -1;   // F1: the nearest transparent front face
   int opaque = -1;  // the opaque surface that is drawn
+  float hiding = 1e30;  // everything behind this depth is hidden (the rules); lines too
   for (uint i = 0u; i < n; ++i) {
     uint f = base + i;
     uint ids = sorted[fragWord(f, TLAB_OFF_IDS)];
@@ -90,26 +95,30 @@ void main() {
     bool frontFacing = (ids & 0x80000000u) != 0u;
     if (isOpaque) {
       opaque = int(f);
+      hiding = depthOf(f);
       break;
     }
     if (frontFacing) {
-      if (front >= 0) break;  // a second transparent front face hides everything behind it
+      if (front >= 0) {       // a second transparent front face hides everything behind it
+        hiding = depthOf(f);
+        break;
+      }
       front = int(f);
     } else if (uExplicitBoundaries == 0 && front >= 0) {
-      break;                  // Sec. 6.1: nothing behind the nearest transparent back face
+      hiding = depthOf(f);    // Sec. 6.1: nothing behind the nearest transparent back face
+      break;
     }
   }
   vec3 c = uBackground.rgb;
-  float depth = 1e30;
   if (front >= 0) {
     float alphaT = interpolatedAlpha(uint(front), ray);
-    vec3 dst = opaque >= 0 ? uAlphaOpaque * shade(uint(opaque), ray) : uAlphaBackground * uBackground.rgb;
-    c = clamp(alphaT * shade(uint(front), ray) + dst, 0.0, 1.0);
-    depth = opaque >= 0 ? depthOf(uint(opaque)) : depthOf(uint(front));
+    float w = opaque >= 0 ? uAlphaOpaque : uAlphaBackground;
+    float norm = uAdditiveBlend == 0 ? max(1.0, alphaT + w) : 1.0;
+    vec3 dst = w * (opaque >= 0 ? shade(uint(opaque), ray) : uBackground.rgb);
+    c = clamp((alphaT * shade(uint(front), ray) + dst) / norm, 0.0, 1.0);
   } else if (opaque >= 0) {
     c = shade(uint(opaque), ray);
-    depth = depthOf(uint(opaque));
   }
   outColor[pixel] = vec4(c, 1.0);
-  visibleDepth[pixel] = depth;
+  visibleDepth[pixel] = vec2(hiding, front >= 0 ? depthOf(uint(front)) : hiding);
 }

@@ -10,7 +10,10 @@ constexpr GLuint kBindOutput = 9, kBindPositions = 10, kBindTriangles = 11, kBin
 
 // Rasterizes the silhouette segments as 1-pixel lines into the output buffer, with no attachment
 // (the fragment shader writes the buffer).
-void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segments, glm::vec3 color) {
+// Transparent objects' lines (the first `transparentCount`) are tested against the depth of F1,
+// the others against the hiding depth (compose/view_dependent_compose.comp).
+void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segments, std::size_t transparentCount,
+               glm::vec3 color) {
   if (segments.empty()) return;
   const gpu::Buffer vertices(segments.size() * sizeof(SilhouetteSegment), segments.data());
   const gpu::VertexArray vao = gpu::makeVertexArray();
@@ -33,7 +36,10 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
   glUniform3fv(program.uniform("uLineColor"), 1, &color[0]);
   glUniform1f(program.uniform("uDepthTolerance"), 0.005f);
   glBindVertexArray(vao.id());
-  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(segments.size() * 2));
+  glUniform1i(program.uniform("uLimit"), 1);
+  glDrawArrays(GL_LINES, 0, static_cast<GLsizei>(transparentCount * 2));
+  glUniform1i(program.uniform("uLimit"), 0);
+  glDrawArrays(GL_LINES, static_cast<GLint>(transparentCount * 2), static_cast<GLsizei>((segments.size() - transparentCount) * 2));
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
@@ -43,7 +49,7 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
 void composeViewDependent(FrameContext& frame, const ViewDependentAlpha& alpha, const ViewDependentSettings& settings) {
   FragmentBuffer& buffer = *frame.buffer;
   const auto& program = frame.shaders.compute("compose/view_dependent_compose.comp", buffer.layout().defines());
-  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4)), visibleDepth(buffer.pixels() * sizeof(float));
+  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4)), visibleDepth(buffer.pixels() * 2 * sizeof(float));
   buffer.bindSorted();
   frame.gpuScene.bindObjectTable();
   output.bindBase(GL_SHADER_STORAGE_BUFFER, kBindOutput);
@@ -60,10 +66,11 @@ void composeViewDependent(FrameContext& frame, const ViewDependentAlpha& alpha, 
   glUniform1i(program.uniform("uExplicitBoundaries"), settings.explicitBoundaries ? 1 : 0);
   glUniform1f(program.uniform("uAlphaOpaque"), settings.alphaOpaque);
   glUniform1f(program.uniform("uAlphaBackground"), settings.alphaBackground);
+  glUniform1i(program.uniform("uAdditiveBlend"), settings.additiveBlend ? 1 : 0);
   settings.shading.setUniforms(program, buffer.width(), buffer.height());
   gpu::dispatchLinear(buffer.pixels());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (settings.lines) drawLines(frame, alpha.silhouettes(), settings.lineColor);
+  if (settings.lines) drawLines(frame, alpha.silhouettes(), alpha.transparentCount(), settings.lineColor);
   readOutputBuffer(output, frame.image);
   gpu::checkGl("compose/view_dependent_compose.comp");
 }

@@ -37,6 +37,13 @@ TargetCoverage TargetCoverage::fromPixels(int width, int height, const std::vect
   return c;
 }
 
+AlphaMaskSettings AlphaMaskSettings::atImageResolution(AlphaMaskSettings paper, int width, int height) {
+  constexpr int kPaperCells = 128;  // seed 004 Sec. V.4
+  paper.size = std::max(width, height);
+  paper.border = int(std::lround(double(paper.border) * double(paper.size) / kPaperCells));
+  return paper;
+}
+
 float borderAlpha(int layer, int border, float alpha0) {
   if (layer < 1 || layer > border) return 1.0f;
   return alpha0 + (1.0f - alpha0) * float(layer - 1) / float(border);  // seed 004, Alg. 2 line 8
@@ -44,41 +51,42 @@ float borderAlpha(int layer, int border, float alpha0) {
 
 namespace {
 
-// The silhouette at α_T, then n passes of Alg. 3: a cell still at α = 1 with any of its eight
-// neighbours below 1 joins the border with α_B of this pass (ping-pong between two grids).
+// The silhouette at α_T, then the n passes of Alg. 3: a cell still at α = 1 with any of its eight
+// neighbours below 1 joins the border with α_B of this pass and the farthest depth among those
+// neighbours. Pass i reaches exactly the cells at Chebyshev distance i from the silhouette, so a
+// breadth-first search over the 8-neighbour grid gives the same mask in one sweep, O(cells)
+// instead of O(n · cells) (the mask may have the image's resolution).
 AlphaMask outlineMask(const TargetCoverage& c, const AlphaMaskSettings& s) {
   const int n = c.size;
   AlphaMask m{n, std::vector<float>(c.target.size(), 1.0f), std::vector<float>(c.target.size(), 0.0f)};
+  std::vector<int> layer(c.target.size(), -1);
+  std::vector<std::size_t> queue;
   for (std::size_t i = 0; i < c.target.size(); ++i)
     if (c.target[i] != 0u) {
       m.alpha[i] = s.alphaTarget;  // Alg. 2 line 2
       m.depth[i] = c.depth[i];
+      layer[i] = 0;
+      queue.push_back(i);
     }
-  for (int layer = 1; layer <= s.border; ++layer) {
-    AlphaMask next = m;
-    const float alphaB = borderAlpha(layer, s.border, s.alpha0);
-    for (int y = 0; y < n; ++y)
-      for (int x = 0; x < n; ++x) {
-        const std::size_t p = std::size_t(y) * std::size_t(n) + std::size_t(x);
-        if (m.alpha[p] != 1.0f) continue;  // Alg. 3 line 4: only cells with F(P).α = 1
-        bool border = false;
-        float depth = 0.0f;
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = x + dx, ny = y + dy;
-            if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= n || ny >= n) continue;
-            const std::size_t q = std::size_t(ny) * std::size_t(n) + std::size_t(nx);
-            if (m.alpha[q] != 1.0f) {  // Alg. 3 line 3
-              border = true;
-              depth = std::max(depth, m.depth[q]);
-            }
-          }
-        if (border) {
-          next.alpha[p] = alphaB;  // Alg. 3 line 5
-          next.depth[p] = depth;
+  for (std::size_t head = 0; head < queue.size(); ++head) {
+    const std::size_t p = queue[head];
+    const int next = layer[p] + 1;
+    if (next > s.border) continue;
+    const int x = int(p % std::size_t(n)), y = int(p / std::size_t(n));
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int nx = x + dx, ny = y + dy;
+        if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= n || ny >= n) continue;
+        const std::size_t q = std::size_t(ny) * std::size_t(n) + std::size_t(nx);
+        if (layer[q] == -1) {  // Alg. 3 lines 3-5: joins border layer `next`
+          layer[q] = next;
+          m.alpha[q] = borderAlpha(next, s.border, s.alpha0);
+          m.depth[q] = m.depth[p];
+          queue.push_back(q);
+        } else if (layer[q] == next) {
+          m.depth[q] = std::max(m.depth[q], m.depth[p]);
         }
       }
-    m = std::move(next);
   }
   return m;
 }

@@ -22,6 +22,10 @@ MaskShape parseMaskShape(const std::string& word);  // outline | circle | ellips
 struct AlphaMaskSettings {
   int size = 128;             // cells per side (seed 004 Sec. V.4: 128 × 128)
   int border = 4;             // n: width of the gradient border in cells
+  // The mask at the image's resolution: size = max(W, H) and the border n·size/128 cells wide, so
+  // it covers the same share of the image as n cells of the paper's 128² grid, without the
+  // grid's blocks (mask_size=0, the default; see atImageResolution).
+  static AlphaMaskSettings atImageResolution(AlphaMaskSettings paper, int width, int height);
   float alphaTarget = 0.35f;  // α_T: opacity of surfaces in front of a target
   float alpha0 = 0.15f;       // α_0: opacity at the inner edge of the border gradient
   MaskShape shape = MaskShape::Outline;

@@ -1,8 +1,12 @@
 #version 450 core
-// Screen-space curvature (seed 002, Sec. 5.1, after Vergne et al.): for each fragment with all
-// four neighbours (left, right, down, up), κ1 + κ2 ≈ −s·(∂nx/∂x + ∂ny/∂y) from the neighbours'
-// view-facing normals by central differences, mapped as κ = tanh(κ1 + κ2) ∈ (−1, 1), −1 convex;
-// κ = −1 when a neighbour is missing (object boundaries and creases).
+// Screen-space curvature (seed 002, Sec. 5.1, after Vergne et al. 2009): the principal curvatures
+// are the eigenvalues of the screen-space shape operator, the derivatives of the view-space normal
+// across the image, so κ1 + κ2 = its trace = −(∂nx/∂X + ∂ny/∂Y) (negative: convex), X and Y the
+// view-space lengths one pixel covers at the fragment's depth z (P11·H / 2z pixels per unit).
+// The normal derivatives are central differences between the four neighbours (left, right,
+// down, up). Lengths are measured in units of s·r (r the scene's bounding radius, s the style's
+// `scale`), so κ does not change with the image size or the scene's units; κ = tanh(κ1 + κ2)
+// ∈ (−1, 1); κ = −1 when a neighbour is missing (object boundaries and creases).
 #include "buffer/fragment_layout.glsl"
 #include "kbuffer/kbuffer_layout.glsl"
 #include "buffer/compute_index.glsl"
@@ -12,7 +16,10 @@ layout(std430, binding = BIND_KB_LINKS) readonly buffer Links { uint links[]; };
 layout(std430, binding = BIND_KB_CURVATURE) writeonly buffer Curvature { float kappa[]; };
 uniform uint uPixels;
 uniform int uWidth;
-uniform float uScale;  // s: pixels per unit of the normal's change
+uniform float uScale;          // s·r: the length unit of κ1 + κ2
+uniform float uPixelsPerUnit;  // P11·H / 2: pixels per view-space unit at eye depth 1
+uniform float uNear;
+uniform float uFar;
 
 void main() {
   uint pixel = linearInvocation();
@@ -36,7 +43,9 @@ void main() {
       continue;
     }
     vec3 left = n[0], right = n[1], down = n[2], up = n[3];
-    float divergence = 0.5 * (right.x - left.x) + 0.5 * (up.y - down.y);
-    kappa[f] = tanh(-uScale * divergence);  // κ = tanh(κ1 + κ2)
+    float divergence = 0.5 * (right.x - left.x) + 0.5 * (up.y - down.y);  // per pixel
+    float depth = uNear + depthOfShapeFirst(z[f]) * (uFar - uNear);
+    float pixelsPerLength = uScale * uPixelsPerUnit / max(depth, 1e-6);
+    kappa[f] = tanh(-pixelsPerLength * divergence);  // κ = tanh(κ1 + κ2)
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <unordered_map>
 
 namespace tlab::render {
@@ -61,6 +62,7 @@ EdgeAdjacency::EdgeAdjacency(const TriangleMesh& mesh, float relativeTolerance) 
   weldedIndex_ = weld(mesh.positions, std::max(diagonal * relativeTolerance, 1e-12f), positions_);
   const auto& map = weldedIndex_;
   std::unordered_map<std::uint64_t, std::uint32_t> edgeIndex;
+  std::vector<std::array<std::uint32_t, 3>> faces;
   edgeIndex.reserve(mesh.triangles.size() * 2);
   for (const auto& t : mesh.triangles) {
     const std::array<std::uint32_t, 3> w = {map[t[0]], map[t[1]], map[t[2]]};
@@ -70,6 +72,7 @@ EdgeAdjacency::EdgeAdjacency(const TriangleMesh& mesh, float relativeTolerance) 
     if (length == 0.0f) continue;
     const auto face = static_cast<std::uint32_t>(faceNormals_.size());
     faceNormals_.push_back(n / length);
+    faces.push_back(w);
     for (int k = 0; k < 3; ++k) {
       const std::uint32_t a = std::min(w[k], w[(k + 1) % 3]), b = std::max(w[k], w[(k + 1) % 3]);
       const std::uint64_t id = (std::uint64_t(a) << 32) | b;
@@ -79,11 +82,80 @@ EdgeAdjacency::EdgeAdjacency(const TriangleMesh& mesh, float relativeTolerance) 
       // A third face on one edge (non-manifold) adds nothing: the first two decide.
     }
   }
+  faces_ = std::move(faces);
+  findBuriedEdges();
 }
+
+namespace {
+
+// Union-find root with path halving.
+std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t f) {
+  while (parent[f] != f) f = parent[f] = parent[parent[f]];
+  return f;
+}
+
+// Möller-Trumbore: does the ray o + t·d (t > 0) cross triangle (a, b, c)?
+bool rayCrosses(glm::vec3 o, glm::vec3 d, glm::vec3 a, glm::vec3 b, glm::vec3 c) {
+  const glm::vec3 e1 = b - a, e2 = c - a, h = glm::cross(d, e2);
+  const float det = glm::dot(e1, h);
+  if (std::abs(det) < 1e-12f) return false;
+  const glm::vec3 s = o - a;
+  const float u = glm::dot(s, h) / det, v = glm::dot(d, glm::cross(s, e1)) / det;
+  return u >= 0.0f && v >= 0.0f && u + v <= 1.0f && glm::dot(e2, glm::cross(s, e1)) / det > 0.0f;
+}
+
+}  // namespace
+
+// Parts = face components joined by shared edges; a closed part has no boundary edge. An edge
+// is buried when its midpoint is inside another closed part (odd number of crossings of a ray in
+// a direction no mesh is aligned with).
+void EdgeAdjacency::findBuriedEdges() {
+  const auto faceCount = static_cast<std::uint32_t>(faces_.size());
+  std::vector<std::uint32_t> parent(faceCount);
+  for (std::uint32_t f = 0; f < faceCount; ++f) parent[f] = f;
+  for (const auto& e : edges_)
+    if (e.face1 != kNoFace) parent[root(parent, e.face0)] = root(parent, e.face1);
+  struct Part {
+    bool closed = true;
+    glm::vec3 lo{INFINITY}, hi{-INFINITY};
+  };
+  std::map<std::uint32_t, Part> parts;
+  for (std::uint32_t f = 0; f < faceCount; ++f) {
+    Part& p = parts[root(parent, f)];
+    for (std::uint32_t v : faces_[f]) {
+      p.lo = glm::min(p.lo, positions_[v]);
+      p.hi = glm::max(p.hi, positions_[v]);
+    }
+  }
+  for (const auto& e : edges_)
+    if (e.face1 == kNoFace) parts[root(parent, e.face0)].closed = false;
+  buried_.assign(edges_.size(), false);
+  if (parts.size() < 2) return;
+  const glm::vec3 direction = glm::normalize(glm::vec3(0.5773f, 0.6137f, 0.5383f));
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    const std::uint32_t own = root(parent, edges_[i].face0);
+    const glm::vec3 m = 0.5f * (positions_[edges_[i].a] + positions_[edges_[i].b]);
+    std::map<std::uint32_t, int> crossings;
+    const auto around = [&](const Part& p) { return glm::all(glm::lessThan(p.lo, m)) && glm::all(glm::lessThan(m, p.hi)); };
+    bool any = false;
+    for (const auto& [id, p] : parts) any = any || (id != own && p.closed && around(p));
+    if (!any) continue;
+    for (std::uint32_t f = 0; f < faceCount; ++f) {
+      const std::uint32_t part = root(parent, f);
+      if (part == own || !parts[part].closed || !around(parts[part])) continue;
+      const auto& t = faces_[f];
+      if (rayCrosses(m, direction, positions_[t[0]], positions_[t[1]], positions_[t[2]])) ++crossings[part];
+    }
+    for (const auto& [part, n] : crossings) buried_[i] = buried_[i] || (n % 2 == 1);
+  }
+}
+
 
 std::vector<SilhouetteSegment> EdgeAdjacency::silhouettes(glm::vec3 eye) const {
   std::vector<SilhouetteSegment> out;
-  for (const auto& e : edges_) {
+  for (std::size_t i = 0; i < edges_.size(); ++i) {
+    if (buried_[i]) continue;
+    const MeshEdge& e = edges_[i];
     const glm::vec3 p = positions_[e.a], q = positions_[e.b];
     bool silhouette = e.face1 == kNoFace;
     if (!silhouette) {

@@ -36,10 +36,16 @@ class EdgeAdjacency {
   const std::vector<glm::vec3>& faceNormals() const { return faceNormals_; }  // unit, from the winding
 
   // Diepstraten Eq. 1: (n1·(p − o))·(n2·(p − o)) < 0 for a point p on the edge and the eye o;
-  // boundary edges always count.
+  // boundary edges always count. Buried edges never do.
   std::vector<SilhouetteSegment> silhouettes(glm::vec3 eye) const;
+  // Edges whose midpoint lies inside another closed part of the same mesh (a shaft's end inside
+  // a crank web): they outline nothing that can be seen, so they are no silhouettes.
+  const std::vector<bool>& buried() const { return buried_; }
 
  private:
+  void findBuriedEdges();
+  std::vector<bool> buried_;
+  std::vector<std::array<std::uint32_t, 3>> faces_;  // welded triangles, one per face normal
   std::vector<glm::vec3> positions_;
   std::vector<std::uint32_t> weldedIndex_;
   std::vector<MeshEdge> edges_;

@@ -60,11 +60,18 @@ ViewDependentAlpha::ViewDependentAlpha(const Scene& scene) {
 
 void ViewDependentAlpha::update(glm::vec3 eye, float k) {
   segments_.clear();
+  transparentCount_ = 0;
   std::size_t base = 0;
   for (const auto& object : objects_) {
     const auto& welded = object.adjacency.weldedIndex();
     auto segments = object.adjacency.silhouettes(eye);  // Eq. 1
-    segments_.insert(segments_.end(), segments.begin(), segments.end());
+    // Transparent objects' lines first, then the opaque ones' (drawn against different depths).
+    if (object.transparent) {
+      segments_.insert(segments_.begin() + std::ptrdiff_t(transparentCount_), segments.begin(), segments.end());
+      transparentCount_ += segments.size();
+    } else {
+      segments_.insert(segments_.end(), segments.begin(), segments.end());
+    }
     if (object.transparent) {
       // d_min per welded vertex (seams and poles once), then Eq. 2 for every copy.
       const SegmentBvh nearest(std::move(segments));

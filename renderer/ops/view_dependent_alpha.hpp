@@ -25,8 +25,10 @@ class ViewDependentAlpha {
   // uploaded for the compositor.
   void update(glm::vec3 eye, float k);
 
-  // The silhouette edges of the last update(), all objects, world space.
+  // The silhouette edges of the last update(), all objects, world space; and which of them
+  // belong to transparent objects (segments_[i] for i in [0, transparentCount()) are those).
   const std::vector<SilhouetteSegment>& silhouettes() const { return segments_; }
+  std::size_t transparentCount() const { return transparentCount_; }
   // Per merged vertex α (1 for opaque objects); vertex positions (vec4, world) and triangles (3
   // indices each) of the merged mesh.
   const gpu::Buffer& vertexAlpha() const { return vertexAlpha_; }
@@ -42,6 +44,7 @@ class ViewDependentAlpha {
   };
   std::vector<ObjectEdges> objects_;
   std::vector<SilhouetteSegment> segments_;
+  std::size_t transparentCount_ = 0;
   std::vector<float> alpha_;
   gpu::Buffer positions_, triangles_, vertexAlpha_;
 };

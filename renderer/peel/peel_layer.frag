@@ -2,7 +2,8 @@
 // Peel stage of the depth-peeling loop (IRIS Sec. 5.1, after Bavoil and Myers): keeps only
 // fragments behind the previous layer's depth; the depth test then selects the nearest of them.
 // The layer's fragment is fully shaded here (styles/illustrative_shading.glsl) with dFdx/dFdy for
-// the derivatives of IRIS Eqs. 2-4; its view normal and eye depth go to a second target for the
+// the derivatives of IRIS Eqs. 2-4 (the illustration buffer stores the same dFdx/dFdy at fill
+// time); its view normal and eye depth go to a second target for the
 // Sobel silhouettes of the blend stage.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/surface_shading.glsl"
@@ -20,6 +21,7 @@ uniform int uLayer;
 
 void main() {
   // Derivatives first, in uniform control flow.
+  // The same definition as buffer/fragment_record.glsl (captureDerivatives).
   vec3 n = normalize(vViewNormal);
   vec2 nzGradient = vec2(dFdx(n.z), dFdy(n.z));
   vec4 stGradient = vec4(dFdx(vST.x), dFdy(vST.x), dFdx(vST.y), dFdy(vST.y));

@@ -22,7 +22,7 @@ Image PeelingRenderer::render(const RenderRequest& request, PeelStats* stats) {
   RasterUniforms raster;
   raster.view = camera.view();
   raster.projection = camera.projection(float(request.width) / float(request.height));
-  raster.lighting = params.is("lighting", "none") ? 0 : 1;
+  raster.lighting = lightingModel(params);
   if (!peeler_ || peeler_->width() != request.width || peeler_->height() != request.height)
     peeler_ = std::make_unique<DepthPeeler>(shaders_, request.width, request.height);
   PassTimer timer(request.timePasses);

@@ -33,7 +33,7 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   RasterUniforms raster;
   raster.view = camera.view();
   raster.projection = camera.projection(float(request.width) / float(request.height));
-  raster.lighting = params.is("lighting", "none") ? 0 : 1;
+  raster.lighting = lightingModel(params);
 
   Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);

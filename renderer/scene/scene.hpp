@@ -39,6 +39,10 @@ struct Scene {
   std::vector<SceneObject> objects;
   glm::vec4 background{1.0f, 1.0f, 1.0f, 1.0f};
   std::optional<Camera> camera;            // the authored camera (glTF camera, built-in default)
+  // Dynamic transparency's targets when the style says `targets=scene`: false: objects with
+  // Role::Target; true: every object not flagged distractor or impenetrable (Elmqvist's
+  // WALKTHROUGH, seed 004 Sec. VI: "all objects are made visible through the walls").
+  bool revealAllObjects = false;
 
   std::size_t triangleCount() const;
   BoundingSphere boundingSphere() const;

@@ -28,7 +28,10 @@ class CurvaturePass final : public RenderPass {
  public:
   explicit CurvaturePass(float scale) : scale_(scale) {}
   std::string name() const override { return "curvature"; }
-  void run(FrameContext& frame) override { computeScreenSpaceCurvature(*frame.kbuffer, frame.shaders, scale_); }
+  void run(FrameContext& frame) override {
+    computeScreenSpaceCurvature(*frame.kbuffer, frame.shaders, scale_, frame.scene.boundingSphere().radius,
+                                frame.raster.projection[1][1]);
+  }
 
  private:
   float scale_;
@@ -55,6 +58,7 @@ class CurvatureComposePass final : public RenderPass {
 
 std::vector<ParamSpec> CurvatureStyle::params() const {
   return {
+      lightingParam("pbr"),  // Sec. 4.2: Disney BRDF and image-based lighting
       ParamSpec::number("k", 16, 1, 32, "fragments kept per pixel (the k of the k-buffer, Sec. 4.1)"),
       ParamSpec::choice("mode", "transparency", {"plain", "shading", "transparency"},
                         "plain k-buffer blending with constant alpha (Fig. 9a), mean-curvature shading (Fig. 6), "
@@ -63,7 +67,9 @@ std::vector<ParamSpec> CurvatureStyle::params() const {
                         "neighbour search: the same-shape bucket of the adjacent pixel, or all its fragments (Sec. 6)"),
       ParamSpec::choice("shape_id", "object", {"object", "component"},
                         "what a shape is: the scene object, or the connected component of its mesh"),
-      ParamSpec::number("scale", 16, 0, 1e6, "s in kappa = tanh(-s (dnx/dx + dny/dy)), normal change per pixel"),
+      ParamSpec::number("scale", 0.25, 0, 1e6,
+                        "s: kappa1 + kappa2 in units of 1/(s r), r the scene's bounding radius (a sphere of radius "
+                        "r has kappa = tanh(2 s)); independent of the image size"),
       ParamSpec::number("alpha", 0.6, 0, 1, "opacity of every fragment in modes plain and shading"),
       ParamSpec::text("shading_tf", "fig6a",
                       "1-D shading transfer function of kappa: fig6a, fig6b, points:k=v,k=v,... or a PNG file"),

@@ -24,7 +24,9 @@ DynamicSettings settingsFrom(const StyleParams& p) {
   s.lensRadius = float(p.number("lens_radius"));
   s.maxLayers = int(p.number("max_layers"));
   s.sharedStacking = p.is("stacking", "shared");
-  s.allAreTargets = p.is("targets", "all");
+  s.targets = p.is("targets", "all")    ? DynamicSettings::Targets::All
+              : p.is("targets", "role") ? DynamicSettings::Targets::Role
+                                        : DynamicSettings::Targets::Scene;
   return s;
 }
 
@@ -84,18 +86,24 @@ std::vector<ParamSpec> DynamicStyle::params() const {
       ParamSpec::choice("mode", "passive", {"passive", "active"},
                         "passive: uncover every target; active: only inside the lens (Sec. III.5)"),
       ParamSpec::choice("mask", "outline", {"outline", "circle", "ellipse"}, "alpha mask shape (Fig. 2)"),
-      ParamSpec::number("mask_size", 128, 8, 2048, "alpha mask resolution, cells per side (Sec. V.4: 128)"),
-      ParamSpec::number("border", 4, 0, 64, "n: width of the gradient border in mask cells (Algs. 2-3)"),
+      ParamSpec::number("mask_size", 0, 0, 4096,
+                        "alpha mask cells per side; 0: the image's resolution with the border scaled to n/128 of "
+                        "the image (no grid blocks); 128: the paper's grid (Sec. V.4)"),
+      ParamSpec::number("border", 4, 0, 64,
+                        "n: width of the gradient border in mask cells (Algs. 2-3); mask_size=0: in cells of the "
+                        "paper's 128-cell grid"),
       ParamSpec::number("alpha_target", 0.35, 0, 1, "alpha_T: opacity of surfaces in front of a target"),
       ParamSpec::number("alpha_0", 0.15, 0, 1, "alpha_0: opacity where the border gradient starts (rises to 1)"),
       ParamSpec::number("lens_x", 0.5, 0, 1, "active mode: lens centre, fraction of the width from the left"),
       ParamSpec::number("lens_y", 0.5, 0, 1, "active mode: lens centre, fraction of the height from the top"),
       ParamSpec::number("lens_radius", 0.2, 0.001, 2, "active mode: lens radius, fraction of the image height"),
       ParamSpec::number("max_layers", 0, 0, 64, "layer control: most layers uncovered in front of a target (0: unlimited)"),
-      ParamSpec::choice("stacking", "shared", {"shared", "multiply"},
-                        "occluders of a target share alpha_T (weight 1-alpha_T at any depth) or each get it (paper)"),
-      ParamSpec::choice("targets", "role", {"role", "all"},
-                        "targets: objects with the target role, or all objects not flagged distractor or impenetrable"),
+      ParamSpec::choice("stacking", "multiply", {"multiply", "shared"},
+                        "each occluder of a target gets alpha_T, (1-alpha_T)^k behind k (paper), or they share it "
+                        "(weight 1-alpha_T at any depth)"),
+      ParamSpec::choice("targets", "scene", {"scene", "role", "all"},
+                        "targets: as the scene says (walkthrough: all objects), objects with the target role, or all "
+                        "objects not flagged distractor or impenetrable"),
   };
 }
 
@@ -108,6 +116,10 @@ FragmentProperties DynamicStyle::properties(const StyleParams&, const SceneFacts
 
 void DynamicStyle::validate(const StyleParams& params) const {
   for (const char* key : {"mask_size", "border", "max_layers"}) requireInteger(params, key);
+  const double size = params.number("mask_size");
+  if (size > 0 && size < 8)
+    throw std::invalid_argument("style 'dynamic': mask_size must be 0 (the image's resolution) or at least 8, got " +
+                                params.values().at("mask_size"));
 }
 
 std::vector<std::unique_ptr<RenderPass>> DynamicStyle::passes(const StyleParams& params) const {

@@ -19,7 +19,9 @@ std::vector<ParamSpec> IllustrativeSettings::params() {
       ParamSpec::number("window_radius", 0.25, 0, 2, "window radius, fraction of the height"),
       ParamSpec::number("window_falloff", 0.1, 0, 2, "smooth fall-off width beyond the radius, fraction of the height"),
       ParamSpec::number("window_opacity", 0.1, 0, 1, "opacity factor inside the window"),
-      ParamSpec::choice("stripes", "off", {"off", "s", "t", "both"}, "adaptive stripe pattern along s, t or both (IRIS Sec. 4.1)"),
+      ParamSpec::choice("stripes", "off", {"off", "s", "t", "both", "lic"},
+                        "adaptive pattern (IRIS Sec. 4.1): stripes along s, t, both (grid, Fig. 10b) or lic: noise "
+                        "blurred along t (Fig. 10c)"),
       ParamSpec::number("stripe_period", 16, 1, 4096, "image-space stripe period in pixels (Eqs. 3-5 keep it within a factor 2)"),
       ParamSpec::number("stripe_width", 0.5, 0, 1, "stripe fraction of one period"),
       ParamSpec::number("stripe_strength", 0.8, 0, 1, "how much the pattern modulates opacity (α_tex)"),
@@ -43,10 +45,7 @@ IllustrativeSettings IllustrativeSettings::from(const StyleParams& p, Opacity op
   if (has("alpha_min")) s.alphaMin = num("alpha_min");
   if (has("alpha_max")) s.alphaMax = num("alpha_max");
   if (has("gamma")) s.gamma = num("gamma");
-  const bool lit = !p.is("lighting", "none");
-  s.shading = p.is("shading", "phong") ? Shading::Phong
-              : p.is("shading", "gooch") ? Shading::Gooch
-              : lit ? Shading::Headlight : Shading::Flat;
+  s.shading = p.is("shading", "phong") ? Shading::Phong : p.is("shading", "gooch") ? Shading::Gooch : lightingShading(p);
   s.twoSided = p.is("two_sided", "on");
   s.specular = num("specular");
   s.shininess = num("shininess");
@@ -56,7 +55,8 @@ IllustrativeSettings IllustrativeSettings::from(const StyleParams& p, Opacity op
   s.windowFalloff = num("window_falloff");
   s.windowOpacity = num("window_opacity");
   const std::string& stripes = p.choice("stripes");
-  s.stripes = stripes == "s" ? StripeS : stripes == "t" ? StripeT : stripes == "both" ? (StripeS | StripeT) : 0u;
+  s.stripes = stripes == "s" ? StripeS : stripes == "t" ? StripeT : stripes == "both" ? (StripeS | StripeT)
+              : stripes == "lic" ? StripeNoise : 0u;
   s.stripePeriod = num("stripe_period");
   s.stripeWidth = num("stripe_width");
   s.stripeStrength = num("stripe_strength");
@@ -72,11 +72,16 @@ IllustrativeSettings IllustrativeSettings::from(const StyleParams& p, Opacity op
   return s;
 }
 
-IllustrativeSettings IllustrativeSettings::constant(float alpha, bool lighting) {
+IllustrativeSettings::Shading IllustrativeSettings::lightingShading(const StyleParams& p) {
+  if (p.is("lighting", "none")) return Shading::Flat;
+  return p.is("lighting", "pbr") ? Shading::Physical : Shading::Headlight;
+}
+
+IllustrativeSettings IllustrativeSettings::constant(float alpha, Shading shading) {
   IllustrativeSettings s;
   s.opacity = Opacity::Constant;
   s.alpha = alpha;
-  s.shading = lighting ? Shading::Headlight : Shading::Flat;
+  s.shading = shading;
   return s;
 }
 

@@ -17,8 +17,8 @@ namespace tlab::render {
 
 struct IllustrativeSettings {
   enum class Opacity { Constant, Angle, NormalVariation };
-  enum class Shading { Flat, Headlight, Phong, Gooch };
-  enum StripeAxis : std::uint32_t { StripeS = 1u, StripeT = 2u };
+  enum class Shading { Flat, Headlight, Phong, Gooch, Physical };
+  enum StripeAxis : std::uint32_t { StripeS = 1u, StripeT = 2u, StripeNoise = 4u };  // noise: IRIS Fig. 10c
 
   Opacity opacity = Opacity::Constant;
   float alpha = 0.25f;                    // Constant
@@ -36,7 +36,7 @@ struct IllustrativeSettings {
   float windowFalloff = 0.1f;          // fraction of the image height
   float windowOpacity = 0.1f;          // opacity factor at the centre
 
-  std::uint32_t stripes = 0;  // StripeAxis bits
+  std::uint32_t stripes = 0;  // StripeAxis bits: s, t, both (the grid of Fig. 10b) or noise alone
   float stripePeriod = 16.0f; // requested image-space period in pixels
   float stripeWidth = 0.5f;   // stripe fraction of one period
   float stripeStrength = 0.8f;
@@ -51,11 +51,11 @@ struct IllustrativeSettings {
   static std::vector<ParamSpec> params();
   // Reads params() and the opacity values present in `p` (alpha, alpha_min, alpha_max, gamma).
   static IllustrativeSettings from(const StyleParams& p, Opacity opacity);
+  // The common `lighting` choice as a shading: none → Flat, headlight, pbr → Physical.
+  static Shading lightingShading(const StyleParams& p);
   // The `constant` style: one α, the common `lighting` choice, nothing else.
-  static IllustrativeSettings constant(float alpha, bool lighting);
+  static IllustrativeSettings constant(float alpha, Shading shading);
 
-  // Normal variation and stripes need screen-space derivatives of n_z and (s, t).
-  bool needsScreenDerivatives() const { return opacity == Opacity::NormalVariation || stripes != 0; }
   // Sets every uniform of styles/illustrative_shading.glsl and ops/sobel_silhouette.glsl.
   void setUniforms(const gpu::ShaderProgram& program, int width, int height) const;
 };

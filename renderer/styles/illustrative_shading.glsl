@@ -23,7 +23,7 @@ uniform float uAlpha;
 uniform float uAlphaMin;
 uniform float uAlphaMax;
 uniform float uGamma;
-uniform int uShading;      // 0 flat, 1 headlight, 2 Phong, 3 Gooch
+uniform int uShading;      // 0 flat, 1 headlight, 2 Phong, 3 Gooch, 4 physically based
 uniform int uTwoSided;
 uniform float uSpecular;
 uniform float uShininess;
@@ -65,8 +65,29 @@ float windowFactor(SurfaceSample s) {
   return mix(1.0, uWindowOpacity, inside);
 }
 
-// The pattern P(s, t) over the unit period: stripes across s, across t, or both (a grid).
+// A hash of an integer lattice point to [0, 1) (deterministic on every GPU).
+float latticeNoise(ivec2 c) {
+  uint h = uint(c.x) * 0x8da6b343u ^ uint(c.y) * 0xd8163841u;
+  h = (h ^ (h >> 15)) * 0x2c1b3c6du;
+  h = (h ^ (h >> 12)) * 0x297a2d39u;
+  return float((h ^ (h >> 15)) & 0xFFFFu) / 65536.0;
+}
+
+// IRIS Fig. 10c: "noise blurred in t-direction" for a LIC-like look — 8 noise cells per period
+// across s, each a smooth (cubic) ramp between lattice values along t, so a streak runs a whole
+// period along t.
+float licPattern(vec2 u) {
+  int i = int(floor(u.x * 8.0));
+  float v = u.y, f = fract(v);
+  int j = int(floor(v));
+  float w = f * f * (3.0 - 2.0 * f);
+  return mix(latticeNoise(ivec2(i, j)), latticeNoise(ivec2(i, j + 1)), w);
+}
+
+// The pattern P(s, t) over the unit period: stripes across s, across t, or both (a grid), or
+// the LIC-like noise.
 float stripePattern(vec2 u) {
+  if ((uStripes & 4) != 0) return licPattern(u);
   float p = 0.0;
   if ((uStripes & 1) != 0 && fract(u.x) < uStripeWidth) p = 1.0;
   if ((uStripes & 2) != 0 && fract(u.y) < uStripeWidth) p = 1.0;
@@ -118,6 +139,8 @@ Shaded shadeIllustrative(SurfaceSample s) {
     float t = 0.5 * (1.0 + dot(n, l));
     vec3 cool = vec3(0.0, 0.0, 0.4) + 0.2 * base, warm = vec3(0.4, 0.4, 0.0) + 0.6 * base;
     r.diffuse = t * warm + (1.0 - t) * cool;
+  } else if (uShading == 4) {
+    r.diffuse = shadePhysical(base, n, v);  // buffer/physical_shading.glsl
   }
   return r;
 }

@@ -1,7 +1,6 @@
 #include "renderer/styles/iris_style.hpp"
 
 #include "renderer/compose/illustrative_compositor.hpp"
-#include "renderer/ops/connect_pass.hpp"
 
 namespace tlab::render {
 
@@ -9,38 +8,14 @@ namespace {
 
 using Opacity = IllustrativeSettings::Opacity;
 
-// What the passes of one frame share: the settings and the neighbour links.
-struct IrisFrame {
-  IllustrativeSettings settings;
-  std::unique_ptr<TransparencyFields> fields;
-};
-
-// Geodesic neighbour links (Carnecky Alg. 2) for the screen-space derivatives of IRIS Eqs. 2-4.
-class LinkPass final : public RenderPass {
- public:
-  explicit LinkPass(std::shared_ptr<IrisFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "connect"; }
-  void run(FrameContext& frame) override {
-    SmartSettings links;
-    links.silhouettes = false;
-    links.halos = false;
-    frame_->fields = connectFragments(*frame.buffer, frame.shaders, links, frame.scene.boundingSphere().radius);
-  }
-
- private:
-  std::shared_ptr<IrisFrame> frame_;
-};
-
 class IllustrativeComposePass final : public RenderPass {
  public:
-  explicit IllustrativeComposePass(std::shared_ptr<IrisFrame> f) : frame_(std::move(f)) {}
+  explicit IllustrativeComposePass(IllustrativeSettings s) : settings_(std::move(s)) {}
   std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override {
-    composeIllustrative(frame, frame_->settings, frame_->fields ? &frame_->fields->links() : nullptr);
-  }
+  void run(FrameContext& frame) override { composeIllustrative(frame, settings_); }
 
  private:
-  std::shared_ptr<IrisFrame> frame_;
+  IllustrativeSettings settings_;
 };
 
 }  // namespace
@@ -66,6 +41,15 @@ std::vector<ParamSpec> IrisStyle::params() const {
   if (selectable_ || opacity_ == Opacity::NormalVariation)
     p.push_back(ParamSpec::number("gamma", 0.5, 0, 1, "exponent γ of Eq. 2 (applied after clamping)"));
   for (auto& spec : IllustrativeSettings::params()) p.push_back(std::move(spec));
+  if (selectable_) {
+    // `iris` alone shows the IRIS look (Figs. 1, 10): normal-variation opacity, two-sided colour,
+    // adaptive s-stripes (pathlines) and silhouettes.
+    for (auto& spec : p) {
+      if (spec.name == "opacity") spec.defaultValue = "normal-variation";
+      if (spec.name == "stripes") spec.defaultValue = "s";
+      if (spec.name == "silhouettes") spec.defaultValue = "on";
+    }
+  }
   return p;
 }
 
@@ -87,17 +71,17 @@ FragmentProperties IrisStyle::properties(const StyleParams& params, const SceneF
   FragmentProperties p;
   p |= FragmentProperty::Normal;
   p |= FragmentProperty::Ids;  // object, and facing for two-sided colouring
-  if (s.needsScreenDerivatives()) p |= FragmentProperty::DepthGradient;  // for the neighbour links
-  if (s.stripes != 0) p |= FragmentProperty::SurfaceParams;
+  if (s.opacity == Opacity::NormalVariation) p |= FragmentProperty::NormalZGradient;  // IRIS Eq. 2
+  if (s.stripes != 0) {
+    p |= FragmentProperty::SurfaceParams;
+    p |= FragmentProperty::StGradient;  // IRIS Eqs. 3-4
+  }
   return p;
 }
 
 std::vector<std::unique_ptr<RenderPass>> IrisStyle::passes(const StyleParams& params) const {
-  auto frame = std::make_shared<IrisFrame>();
-  frame->settings = illustrative(params);
   std::vector<std::unique_ptr<RenderPass>> p;
-  if (frame->settings.needsScreenDerivatives()) p.push_back(std::make_unique<LinkPass>(frame));
-  p.push_back(std::make_unique<IllustrativeComposePass>(frame));
+  p.push_back(std::make_unique<IllustrativeComposePass>(illustrative(params)));
   return p;
 }
 

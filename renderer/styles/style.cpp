@@ -13,10 +13,22 @@
 
 namespace tlab::render {
 
+ParamSpec lightingParam(const std::string& defaultValue) {
+  return ParamSpec::choice("lighting", defaultValue, {"headlight", "pbr", "none"},
+                           "surface shading before transparency: two-sided headlight diffuse, physically based "
+                           "(Disney diffuse + GGX, key light and procedural sky, seed 002 Sec. 4.2), or the flat colour");
+}
+
+int lightingModel(const StyleParams& params) {
+  if (params.is("lighting", "none")) return 0;
+  return params.is("lighting", "pbr") ? 2 : 1;
+}
+
 std::vector<ParamSpec> Style::allParams() const {
   auto specs = params();
-  specs.push_back(ParamSpec::choice("lighting", "headlight", {"headlight", "none"},
-                                    "surface shading before transparency: two-sided headlight diffuse, or the flat colour"));
+  for (const auto& s : specs)
+    if (s.name == "lighting") return specs;  // the style chose its own default
+  specs.push_back(lightingParam("headlight"));
   return specs;
 }
 

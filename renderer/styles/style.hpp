@@ -42,6 +42,11 @@ class Style {
   StyleParams resolve(const std::map<std::string, std::string>& settings) const;
 };
 
+// The common `lighting` key (every style has it; a style may declare it with its own default) and
+// the uLighting value of buffer/surface_shading.glsl it selects: 0 none, 1 headlight, 2 pbr.
+ParamSpec lightingParam(const std::string& defaultValue);
+int lightingModel(const StyleParams& params);
+
 // The registered styles, by name; throws std::invalid_argument listing the known ones.
 const Style& findStyle(const std::string& name);
 std::vector<std::string> styleNames();

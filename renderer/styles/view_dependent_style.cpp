@@ -42,9 +42,8 @@ ViewDependentSettings settingsFrom(const StyleParams& p) {
   s.alphaOpaque = static_cast<float>(p.number("alpha_opaque"));
   s.alphaBackground = static_cast<float>(p.number("alpha_background"));
   s.lines = p.is("lines", "on");
-  s.shading.shading = p.is("shading", "gooch")       ? IllustrativeSettings::Shading::Gooch
-                      : p.is("lighting", "none")     ? IllustrativeSettings::Shading::Flat
-                                                     : IllustrativeSettings::Shading::Headlight;
+  s.additiveBlend = p.is("blend", "additive");
+  s.shading.shading = p.is("shading", "gooch") ? IllustrativeSettings::Shading::Gooch : IllustrativeSettings::lightingShading(p);
   return s;
 }
 
@@ -58,6 +57,9 @@ std::vector<ParamSpec> ViewDependentStyle::params() const {
       ParamSpec::number("alpha_opaque", 0.6, 0, 1, "weight of an opaque object seen through a transparent one"),
       ParamSpec::number("alpha_background", 0.5, 0, 1, "weight of the background seen through a transparent object"),
       ParamSpec::choice("lines", "on", {"on", "off"}, "black silhouette lines"),
+      ParamSpec::choice("blend", "normalized", {"normalized", "additive"},
+                        "c = a c_T + w c_dst (Sec. 7, GL_SRC_ALPHA/GL_DST_ALPHA, w = alpha_opaque or "
+                        "alpha_background), divided by a + w where that exceeds 1 (no wash-out), or the literal sum"),
       ParamSpec::choice("shading", "gooch", {"gooch", "lighting"}, "Gooch cool/warm tones (Sec. 7) or the common lighting"),
   };
 }

@@ -1,5 +1,6 @@
 #include "stimuli/scenes/walkthrough_scene.hpp"
 
+#include <algorithm>
 #include <numeric>
 #include <regex>
 #include <stdexcept>
@@ -58,6 +59,23 @@ std::vector<std::string> chooseKinds(render::SeededRandom& random, const Walkthr
   return kinds;
 }
 
+// Seed 004 Sec. VI (Fig. 7): the participant starts in the centre of the floor plan at eye height,
+// looking along the floor (−z, "up" on the floor plan). With an even number of rooms the centre
+// is a wall corner, so the eye stands in the middle of the room just below-right of it.
+render::Camera firstPersonCamera(const WalkthroughFloorPlan& plan, float wallHeight) {
+  constexpr float kEyeHeight = 1.7f;
+  const float s = float(plan.roomSize());
+  render::Camera c;
+  c.eye = glm::vec3((float(plan.columns() / 2) + 0.5f) * s, std::min(kEyeHeight, 0.85f * wallHeight),
+                    (float(plan.rows() / 2) + 0.5f) * s);
+  c.target = c.eye + glm::vec3(0.0f, 0.0f, -1.0f);
+  c.up = {0.0f, 1.0f, 0.0f};
+  c.fovyDegrees = 60.0f;
+  c.nearPlane = 0.05f;
+  c.farPlane = 1.5f * s * float(std::max(plan.columns(), plan.rows()));
+  return c;
+}
+
 }  // namespace
 
 WalkthroughFloorPlan walkthroughFloorPlan(const WalkthroughParams& p) { return WalkthroughFloorPlan::random(p.seed, p.columns, p.rows); }
@@ -99,8 +117,8 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
     scene.objects.push_back(structure(kinds[k] + "-" + std::to_string(++numbers[kinds[k]]),
                                       placed(model.mesh, at, random.uniform(0.0f, 6.2831853f)), model.color, roles));
   }
-  const render::BoundingSphere sphere = scene.boundingSphere();
-  scene.camera = render::fitClipPlanes(render::fitCamera(sphere, 1.0f, 40.0f, glm::normalize(glm::vec3(0.3f, 1.6f, 1.0f))), sphere);
+  scene.camera = firstPersonCamera(plan, float(p.wallHeight));
+  scene.revealAllObjects = true;  // seed 004 Sec. VI: "all objects are made visible through the walls"
   return scene;
 }
 

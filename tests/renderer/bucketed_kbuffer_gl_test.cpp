@@ -103,17 +103,24 @@ TEST(BucketedKBufferGl, BucketNeighboursEqualBruteForceOnRandomQuadStacks) {
 
 namespace {
 
+// On the z axis at `distance` looking at the origin, with the given clip planes.
+Camera onTheZAxis(float distance, float nearPlane, float farPlane) {
+  Camera camera;
+  camera.eye = {0, 0, distance};
+  camera.nearPlane = nearPlane;
+  camera.farPlane = farPlane;
+  return camera;
+}
+
 // Mean |κ| over the fragments with all four neighbours, for a sphere of radius r seen from a
-// fixed camera (so a larger sphere covers more pixels and bends less per pixel).
+// fixed camera (so a larger sphere bends less). Two tiny quads out of view at (±3, ±3, ±3) keep
+// the scene's bounding radius — κ's length unit — the same for every r.
 double meanInteriorCurvature(float radius) {
   Scene scene = buildBuiltinScene("sphere?radius=" + std::to_string(radius) + "&segments=128&rings=64", builtinScenes());
+  for (float c : {-3.0f, 3.0f}) scene.objects.push_back({"marker", makeQuad({c, c, c}, {0.01f, 0, 0}, {0, 0.01f, 0})});
   Renderer renderer(scene);
-  RenderRequest r = curvatureRequest(96, {{"k", "4"}, {"mode", "shading"}, {"scale", "4"}});
-  Camera camera;
-  camera.eye = {0, 0, 6};
-  camera.nearPlane = 1;
-  camera.farPlane = 11;
-  r.camera = camera;
+  RenderRequest r = curvatureRequest(96, {{"k", "4"}, {"mode", "shading"}, {"scale", "0.05"}});
+  r.camera = onTheZAxis(6, 1, 11);
   renderer.render(r);
   double sum = 0;
   std::size_t n = 0;
@@ -135,6 +142,24 @@ TEST(BucketedKBufferGl, CurvatureOfSpheresDecreasesWithTheRadius) {
   EXPECT_GT(small, medium);
   EXPECT_GT(medium, large);
   EXPECT_GT(large, 0.0);
+}
+
+// κ1 + κ2 of a sphere of radius R at the point facing the viewer is 2/R; in units of s·r (r the
+// scene's bounding radius = R here) κ = tanh(−2s) there, at every image size (Vergne et al. 2009
+// screen-space curvature with a resolution-independent length unit).
+TEST(BucketedKBufferGl, CurvatureAtTheSphereCentreIsTanhTwoSAtEverySize) {
+  Scene scene = buildBuiltinScene("sphere?radius=1&segments=128&rings=64", builtinScenes());
+  Renderer renderer(scene);
+  for (int size : {48, 96}) {
+    RenderRequest r = curvatureRequest(size, {{"k", "4"}, {"mode", "shading"}, {"scale", "0.25"}});
+    r.camera = onTheZAxis(4, 1, 8);
+    renderer.render(r);
+    const auto kappa = renderer.kBuffer()->curvatureValues();
+    double sum = 0;
+    for (int y = size / 2 - 1; y <= size / 2; ++y)
+      for (int x = size / 2 - 1; x <= size / 2; ++x) sum += kappa[std::size_t(y * size + x) * 4];
+    EXPECT_NEAR(sum / 4.0, std::tanh(-0.5), 0.03) << size << "x" << size;
+  }
 }
 
 TEST(BucketedKBufferGl, FlatQuadIsZeroInsideAndMinusOneAtItsEdges) {

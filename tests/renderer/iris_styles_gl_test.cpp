@@ -61,6 +61,8 @@ Image renderProbe(const std::string& style, std::map<std::string, std::string> s
   r.camera = frontCamera();
   settings["lighting"] = "none";
   settings["specular"] = "0";
+  settings.emplace("stripes", "off");      // `iris` defaults to the IRIS look (stripes,
+  settings.emplace("silhouettes", "off");  // silhouettes); these tests look at one effect each
   r.settings = settings;
   return renderer.render(r);
 }
@@ -225,6 +227,8 @@ Image renderQuad(std::map<std::string, std::string> settings, bool flip = false)
   r.camera = frontCamera();
   settings["lighting"] = "none";
   settings["specular"] = "0";
+  settings.emplace("stripes", "off");      // `iris` defaults to the IRIS look (stripes,
+  settings.emplace("silhouettes", "off");  // silhouettes); these tests look at one effect each
   r.settings = settings;
   return renderer.render(r);
 }
@@ -288,11 +292,88 @@ TEST(IrisContext, OpaqueObjectsAreContextGeometry) {
   r.width = r.height = 48;
   r.style = "iris";
   r.camera = frontCamera();
-  r.settings = {{"opacity", "constant"}, {"alpha", "0.3"}, {"lighting", "none"}, {"specular", "0"}, {"silhouettes", "on"}};
+  r.settings = {{"opacity", "constant"}, {"alpha", "0.3"}, {"lighting", "none"}, {"specular", "0"}, {"silhouettes", "on"},
+                {"stripes", "off"}};
   for (const Image& img : {Renderer(s).render(r), PeelingRenderer(s).render(r)}) {
     const glm::vec4 c = img.at(24, 24);
     EXPECT_NEAR(c.r, 0.7f, 1e-3);  // the box behind one layer of α = 0.3, never the background
     EXPECT_NEAR(c.g, 0.0f, 1e-3);
     EXPECT_NEAR(c.b, 0.3f, 1e-3);
   }
+}
+
+namespace {
+
+Image renderTorus(const std::string& style, const std::map<std::string, std::string>& settings, bool peel = false) {
+  Scene s = buildBuiltinScene("torus?major_segments=48&minor_segments=24", builtinScenes());
+  RenderRequest r;
+  r.width = r.height = 96;
+  r.style = style;
+  r.settings = settings;
+  return peel ? PeelingRenderer(s).render(r) : Renderer(s).render(r);
+}
+
+// (largest, mean) absolute channel difference in 1/255 units.
+std::pair<int, double> channelDifference(const Image& a, const Image& b) {
+  const auto x = toRgba8(a), y = toRgba8(b);
+  int largest = 0;
+  double sum = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const int d = std::abs(int(x[i]) - int(y[i]));
+    largest = std::max(largest, d);
+    sum += d;
+  }
+  return {largest, sum / double(x.size())};
+}
+
+}  // namespace
+
+// `iris` alone shows the IRIS look (Figs. 1, 10): it differs visibly from `constant` and has
+// dark silhouette pixels (a white-backed scene has none with `constant`).
+TEST(IrisDefaults, ShowTheIrisLookNotConstantTransparency) {
+  const Image iris = renderTorus("iris", {}), constant = renderTorus("constant", {});
+  const auto [largest, mean] = channelDifference(iris, constant);
+  EXPECT_GT(largest, 100);
+  EXPECT_GT(mean, 5.0);
+  const auto dark = [](const Image& img) {
+    int n = 0;
+    for (const auto& p : img.pixels) n += (p.r + p.g + p.b) < 0.3f ? 1 : 0;
+    return n;
+  };
+  EXPECT_GT(dark(iris), 50);  // silhouettes
+  EXPECT_EQ(dark(constant), 0);
+}
+
+// IRIS Sec. 5.1: the illustration buffer and depth peeling take the derivatives of Eqs. 2-4 the
+// same way (dFdx/dFdy at rasterization), so every IRIS effect agrees between the two renderers:
+// at most 2/255 in any channel, 0.05/255 on average (normals are stored in 2 × 16 bits in the
+// buffer, as floats by peeling).
+TEST(IrisRenderers, BufferAndPeelingAgreeWithDerivativesAndStripes) {
+  for (const auto& settings : std::vector<std::map<std::string, std::string>>{
+           {}, {{"stripes", "both"}, {"stripe_modulation", "add"}}, {{"stripes", "lic"}, {"shading", "gooch"}}}) {
+    const auto [largest, mean] = channelDifference(renderTorus("iris", settings), renderTorus("iris", settings, true));
+    EXPECT_LE(largest, 2) << settings.size();
+    EXPECT_LE(mean, 0.05) << settings.size();
+  }
+}
+
+// IRIS Fig. 10c: the LIC-like pattern is noise blurred along t — along t it changes slowly, across
+// s quickly (on a front-facing quad with s to the right and t upwards).
+TEST(IrisStripes, LicNoiseIsBlurredAlongT) {
+  Renderer renderer(stretchedQuad({1.0f, 1.0f}));
+  RenderRequest r;
+  r.width = r.height = 128;
+  r.style = "iris";
+  r.camera = frontCamera();
+  r.settings = patternSettings("lic", 32);
+  r.settings["silhouettes"] = "off";
+  const Image img = renderer.render(r);
+  double alongS = 0, alongT = 0;
+  for (int y = 32; y < 96; ++y)
+    for (int x = 32; x < 96; ++x) {
+      alongS += std::abs(img.at(x + 1, y).r - img.at(x, y).r);
+      alongT += std::abs(img.at(x, y + 1).r - img.at(x, y).r);
+    }
+  EXPECT_GT(alongS, 4.0 * alongT);
+  EXPECT_GT(alongT, 0.0);
 }

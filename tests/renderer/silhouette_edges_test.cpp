@@ -8,6 +8,7 @@
 #include "renderer/ops/silhouette_edges.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_source.hpp"
+#include "renderer/scene/technical_scenes.hpp"
 
 using namespace tlab::render;
 
@@ -88,4 +89,25 @@ TEST(SegmentBvh, NearestDistanceMatchesBruteForce) {
     EXPECT_FLOAT_EQ(bvh.nearestDistance(p, 0.5f * brute), 0.5f * brute);
   }
   EXPECT_EQ(SegmentBvh({}).nearestDistance({0, 0, 0}, 3.0f), 3.0f);
+}
+
+// A shaft whose end lies inside a web (Diepstraten's crank): the end cap's rim is inside the
+// other closed part of the mesh and never a silhouette, from any eye; the shaft's long edges
+// outside the web still are.
+TEST(SilhouetteEdges, EdgesBuriedInsideAnotherClosedPartAreNoSilhouettes) {
+  TriangleMesh mesh = makeBox(glm::vec3(0.1f, 0.5f, 0.5f));  // the web, x in [-0.1, 0.1]
+  appendMesh(mesh, makeCappedCylinder({-2.0f, 0, 0}, {0.0f, 0, 0}, 0.2f, 16));  // ends at x = 0
+  const EdgeAdjacency adjacency(mesh);
+  std::size_t buried = 0;
+  for (bool b : adjacency.buried()) buried += b ? 1 : 0;
+  EXPECT_GE(buried, 16u);  // at least the 16 rim edges of the end cap at x = 0
+  for (glm::vec3 eye : {glm::vec3(3, 1, 2), glm::vec3(0.5f, 0, 4), glm::vec3(2, 3, -1)}) {
+    bool outside = false;
+    for (const auto& s : adjacency.silhouettes(eye)) {
+      const glm::vec3 m = 0.5f * (s.p0 + s.p1);
+      EXPECT_FALSE(m.x > -0.1f && m.x < 0.1f && std::abs(m.y) < 0.5f && std::abs(m.z) < 0.5f) << "inside the web";
+      outside = outside || m.x < -0.5f;
+    }
+    EXPECT_TRUE(outside) << "the shaft's own silhouette";
+  }
 }

@@ -27,7 +27,7 @@ TEST(StyleParams, BadSettingsNameTheStyleAndKey) {
   EXPECT_NE(message({{"beta", "1"}}).find("no parameter 'beta'"), std::string::npos);
   EXPECT_NE(message({{"alpha", "x"}}).find("'x' is not a number"), std::string::npos);
   EXPECT_NE(message({{"alpha", "1.5"}}).find("outside [0, 1]"), std::string::npos);
-  EXPECT_NE(message({{"lighting", "sun"}}).find("not one of headlight, none"), std::string::npos);
+  EXPECT_NE(message({{"lighting", "sun"}}).find("not one of headlight, pbr, none"), std::string::npos);
   std::map<std::string, std::string> m;
   EXPECT_THROW(addSetting(m, "alpha"), std::invalid_argument);
   EXPECT_THROW(findStyle("watercolour"), std::invalid_argument);

@@ -148,3 +148,56 @@ TEST(DiepstratenRules, MugWithExplicitInnerWallShowsTheBoxOnlyWithExplicitBounda
   // Implicit: only the box top seen through the opening (no wall in between) remains.
   EXPECT_LT(redPixels("implicit"), redPixels("explicit") / 2);
 }
+
+namespace {
+
+// The crank scene in flat grey: every surface and the background 0.5, so a pixel brighter than
+// 0.5 means blend weights summing above 1.
+Image greyCrank(const std::string& blend) {
+  Scene scene = loadScene("builtin:crank-cylinder?segments=32", technicalScenes());
+  for (auto& o : scene.objects) o.frontColor = o.backColor = {0.5f, 0.5f, 0.5f, 1};
+  scene.background = {0.5f, 0.5f, 0.5f, 1};
+  Renderer renderer(scene);
+  RenderRequest r;
+  r.width = r.height = kSize;
+  r.style = "view-dependent";
+  r.settings = {{"boundaries", "implicit"}, {"lines", "off"}, {"shading", "lighting"}, {"lighting", "none"}, {"blend", blend}};
+  return renderer.render(r);
+}
+
+}  // namespace
+
+// Sec. 7's GL_SRC_ALPHA + GL_DST_ALPHA with α_opaque = 0.6 sums above 1 near the cylinder's
+// edges (the washed-out crank); the default normalised blend never does.
+TEST(DiepstratenBlend, WeightsNeverSumAboveOneByDefault) {
+  float brightest = 0.0f;
+  for (const auto& p : greyCrank("normalized").pixels) brightest = std::max({brightest, p.r, p.g, p.b});
+  EXPECT_LE(brightest, 0.5f + 1e-3f);
+  float additive = 0.0f;
+  for (const auto& p : greyCrank("additive").pixels) additive = std::max(additive, p.r);
+  EXPECT_GT(additive, 0.6f);  // the literal reading washes out
+}
+
+// An opaque shaft inside a transparent cylinder, seen from the front: its two long silhouette
+// lines are drawn unbroken (every column along the shaft has its line pixels), though the
+// surface right next to a silhouette is much nearer than the silhouette itself.
+TEST(DiepstratenLines, SilhouettesInsideATransparentObjectAreUnbroken) {
+  SceneObject glass{"glass", makeCappedCylinder({-2, 0, 0}, {2, 0, 0}, 1.0f, 48)};
+  glass.roles = Role::Transparent;
+  SceneObject shaft{"shaft", makeCappedCylinder({-1.5f, 0, 0}, {1.5f, 0, 0}, 0.2f, 32)};
+  shaft.roles = Role::Opaque;
+  Renderer renderer(sceneOf({glass, shaft}));
+  RenderRequest r;
+  r.width = r.height = 96;
+  r.style = "view-dependent";
+  r.settings = {{"boundaries", "implicit"}};
+  const Image img = renderer.render(r);
+  int columns = 0, broken = 0;
+  for (int x = 30; x < 66; ++x) {  // the shaft spans about x = 22 … 74
+    int line = 0;
+    for (int y = 30; y < 66; ++y) line += (img.at(x, y).r + img.at(x, y).g + img.at(x, y).b) < 0.15f ? 1 : 0;
+    ++columns;
+    broken += line < 2 ? 1 : 0;
+  }
+  EXPECT_EQ(broken, 0) << "of " << columns << " columns";
+}

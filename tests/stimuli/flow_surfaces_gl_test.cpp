@@ -26,5 +26,31 @@ TEST(FlowSurfaces, PretzelBubbleAndToroidReachSixLayersFromTheirDefaultView) {
   for (const char* name : {"builtin:pretzel", "builtin:bubble", "builtin:toroid"}) EXPECT_GE(maxLayers(name), 6) << name;
 }
 
+// Seed 004 Fig. 7: from the walkthrough's first-person start, `dynamic` with its defaults shows
+// objects through the walls — the picture differs from `opaque` — and `targets=role` (only the
+// unique trophy) does not reveal the other objects.
+TEST(Walkthrough, DynamicShowsObjectsThroughTheWallsByDefault) {
+  render::Renderer renderer(render::loadScene("builtin:walkthrough", allSceneSpecs()));
+  render::RenderRequest request;
+  request.width = request.height = 96;
+  const auto renderStyle = [&](const std::string& style, std::map<std::string, std::string> settings) {
+    request.style = style;
+    request.settings = std::move(settings);
+    return renderer.render(request);
+  };
+  const render::Image opaque = renderStyle("opaque", {}), dynamic = renderStyle("dynamic", {});
+  const render::Image roleOnly = renderStyle("dynamic", {{"targets", "role"}});
+  const auto differing = [&](const render::Image& a) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+      const glm::vec4 d = glm::abs(a.pixels[i] - opaque.pixels[i]);
+      n += std::max({d.r, d.g, d.b}) > 0.1f ? 1 : 0;  // more than the two fills' rounding
+    }
+    return n;
+  };
+  EXPECT_GT(differing(dynamic), 200u);
+  EXPECT_GT(differing(dynamic), 4 * differing(roleOnly));
+}
+
 }  // namespace
 }  // namespace tlab::stimuli

@@ -116,6 +116,18 @@ TEST(WalkthroughFloorPlan, ImageShowsWallsWithDoorwayGaps) {
   for (int y = 16; y < 16 + 16 * 32; ++y) EXPECT_LT(image.at(16, y).r, 0.5f);
 }
 
+TEST(WalkthroughScene, DefaultCameraIsFirstPersonInTheCentreAtEyeHeight) {
+  // Seed 004 Sec. VI / Fig. 7: the participant starts in the centre of the floor plan at eye height.
+  const render::Scene scene = walkthroughScene(WalkthroughParams{});
+  ASSERT_TRUE(scene.camera.has_value());
+  const render::Camera& c = *scene.camera;
+  EXPECT_NEAR(c.eye.y, 1.7f, 1e-6f);
+  EXPECT_LT(std::abs(c.eye.x - 32.0f), 4.0f);  // within the room next to the centre of 16 × 4 m
+  EXPECT_LT(std::abs(c.eye.z - 32.0f), 4.0f);
+  EXPECT_NEAR(c.target.y, c.eye.y, 1e-6f);     // looking along the floor
+  EXPECT_TRUE(scene.revealAllObjects);         // "all objects are made visible through the walls"
+}
+
 TEST(WalkthroughScene, HasFiftyObjectsOneUniqueTargetAndACountedKind) {
   WalkthroughParams params;
   params.seed = 9;
