@@ -8,6 +8,7 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
   MarkdownDocument doc;
   std::string& md = doc.text;
   md += "# " + report.title + "\n\n";
+  for (const auto& warning : report.warnings) md += "> **" + warning + "**\n\n";
   md += renderMarkdownTable(designTable(report));
   for (const auto& note : report.notes) md += "_" + note + "_\n\n";
   for (const auto& dv : report.dependentVariables) {
@@ -31,6 +32,7 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
       md += "![" + figure.caption + "](" + name + ")\n\n";
     }
   }
+  for (const auto& table : report.appendices) md += renderMarkdownTable(table);
   return doc;
 }
 

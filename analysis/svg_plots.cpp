@@ -146,12 +146,7 @@ std::vector<double> niceTicks(double lo, double hi, int targetCount) {
   return ticks;
 }
 
-std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
-  SvgCanvas canvas(width, height);
-  cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 20;
-  f.bottom = height - 70;
+std::vector<double> barChartTicks(const BarChart& chart) {
   double top = 0.0;
   double low = 0.0;
   for (const auto& s : chart.series)
@@ -160,7 +155,20 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
       top = std::max(top, s.means[i] + e);
       low = std::min(low, s.means[i] - e);
     }
-  const std::vector<double> ticks = niceTicks(low, top);
+  if (std::isfinite(chart.yCeiling)) top = std::min(top, chart.yCeiling);
+  if (std::isfinite(chart.yFloor)) low = std::max(low, chart.yFloor);
+  std::vector<double> ticks = niceTicks(low, top);
+  std::erase_if(ticks, [&](double t) { return t > chart.yCeiling + 1e-12 || t < chart.yFloor - 1e-12; });
+  return ticks;
+}
+
+std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
+  SvgCanvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  Frame f;
+  f.right = width - 20;
+  f.bottom = height - 70;
+  const std::vector<double> ticks = barChartTicks(chart);
   f.yMin = ticks.front();
   f.yMax = ticks.back();
   drawText(cr, chart.title, width / 2, 22, 14, Align::Center, true);
@@ -184,8 +192,8 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
       cairo_fill(cr);
       if (g < series.errors.size() && std::isfinite(series.errors[g])) {
         const double cx = x + barWidth / 2;
-        const double ylo = f.y(series.means[g] - series.errors[g]);
-        const double yhi = f.y(series.means[g] + series.errors[g]);
+        const double ylo = f.y(std::max(f.yMin, series.means[g] - series.errors[g]));
+        const double yhi = f.y(std::min(f.yMax, series.means[g] + series.errors[g]));
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
         cairo_set_line_width(cr, 1.5);
         cairo_move_to(cr, cx, ylo);
