@@ -85,6 +85,13 @@ struct DesignSummary {
   std::string subject;
 };
 
+// A picture the report shows as it is (e.g. a stimulus as participants saw it).
+struct ReportImage {
+  std::string caption;
+  std::string mimeType;  // "image/png"
+  std::string bytes;
+};
+
 struct Report {
   std::string title;
   std::string source;
@@ -94,6 +101,7 @@ struct Report {
   std::vector<std::string> notes;     // how the numbers were computed, each once
   std::vector<std::string> warnings;  // what a reader must know first (e.g. simulated data): at the top
   std::vector<TextTable> appendices;  // further tables after the dependent variables (questionnaires, stimuli)
+  std::vector<ReportImage> images;    // a gallery at the end (the stimuli shown)
 };
 
 // Throws AnalysisError for plan errors (missing columns, no dv, within without subject,

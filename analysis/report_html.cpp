@@ -64,6 +64,11 @@ std::string body(const Report& report, int level) {
     for (const auto& figure : dv.figures) html += image(figure.caption, "image/svg+xml", figure.svg);
   }
   for (const auto& table : report.appendices) html += renderHtmlTable(table);
+  if (!report.images.empty()) {
+    html += "<div class=\"gallery\">\n";
+    for (const auto& i : report.images) html += image(i.caption, i.mimeType, i.bytes, "width: 220px");
+    html += "</div>\n";
+  }
   return html;
 }
 

@@ -33,6 +33,11 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
     }
   }
   for (const auto& table : report.appendices) md += renderMarkdownTable(table);
+  for (std::size_t k = 0; k < report.images.size(); ++k) {
+    const std::string name = figureStem + "_image" + std::to_string(k + 1) + (report.images[k].mimeType == "image/png" ? ".png" : ".bin");
+    doc.figures.push_back({name, report.images[k].bytes});
+    md += "![" + report.images[k].caption + "](" + name + ")\n\n";
+  }
   return doc;
 }
 
