@@ -77,16 +77,17 @@ std::string fixed(double v, const char* format = "%.4f") {
 void printCalibration(const study::PublishedResults& published, const study::CalibrationFit& fit) {
   analysis::TextTable table;
   table.caption = "Fit of the simulated observer to " + published.source + " (factor " + published.factor + ")";
-  table.header = {"level", "n", "published mean", "predicted mean", "published variance", "predicted variance"};
+  table.header = {"level", "n", "published mean", "fitted mean", "mean before", "published variance", "fitted variance", "variance before"};
   for (const auto& r : fit.rows)
     table.rows.push_back({r.published.level, std::to_string(r.published.n), fixed(r.published.mean), fixed(r.predicted.mean),
-                          fixed(r.published.variance), fixed(r.predicted.variance)});
+                          fixed(r.atStart.mean), fixed(r.published.variance), fixed(r.predicted.variance), fixed(r.atStart.variance)});
   std::fputs(analysis::renderPlainText(table).c_str(), stdout);
   std::printf("parameters: sensitivity %.4g (was %.4g), threshold %.4g (was %.4g), skill_spread %.4g (was %.4g); others as in [observer]\n",
               fit.params.sensitivity, fit.start.sensitivity, fit.params.threshold, fit.start.threshold, fit.params.skillSpread,
               fit.start.skillSpread);
   std::printf("log-likelihood %.4f (at the experiment's parameters %.4f), %d evaluations, Nelder-Mead %s\n", fit.logLikelihood,
               fit.startLogLikelihood, fit.evaluations, fit.converged ? "converged" : "stopped at its evaluation limit");
+  for (const auto& note : fit.notes) std::printf("note: %s\n", note.c_str());
   std::printf("paste into the experiment file to simulate with the fitted observer:\n\n%s", study::observerToml(fit.params).c_str());
 }
 

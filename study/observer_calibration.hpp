@@ -9,7 +9,9 @@
 // and the probability that a guess scores (24 seeded guesses, scored by the task). The fitted
 // parameters are sensitivity, threshold and skill_spread (the others stay as in [observer]); the
 // log-likelihood is analysis::summaryLogLikelihood of every published condition under
-// predictProportionCorrect (observer_prediction.hpp), maximised by Nelder-Mead.
+// predictProportionCorrect (observer_prediction.hpp), maximised by Nelder-Mead from the
+// experiment's parameters and a grid of starts. A parameter that ends at the edge of its range is
+// reported as a note: the model does not describe the data well there.
 #include <map>
 #include <string>
 #include <vector>
@@ -45,7 +47,8 @@ std::map<std::string, std::vector<PredictionQuestion>> predictionQuestions(const
 
 struct CalibrationRow {
   PublishedCondition published;
-  PredictedProportion predicted;
+  PredictedProportion atStart;    // at the experiment's [observer] parameters
+  PredictedProportion predicted;  // at the fitted parameters
 };
 
 struct CalibrationFit {
@@ -54,6 +57,7 @@ struct CalibrationFit {
   int evaluations = 0;
   bool converged = false;
   std::vector<CalibrationRow> rows;
+  std::vector<std::string> notes;  // e.g. a parameter at the edge of its range
 };
 
 // Throws std::invalid_argument when a published level has no questions in the experiment.
