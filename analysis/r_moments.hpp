@@ -5,9 +5,8 @@
 //
 // R's mean.default (src/main/summary.c, real_mean) sums in long double, divides by n, then adds
 // the mean of the residuals x - m (also in long double) and rounds once to double. R's var and
-// cov (src/library/stats/src/cov.c, cov_complete1/2) take that mean as a *double* and sum
-// (long double)(x - m_x) · (y - m_y), the difference in double, without a correction term, and
-// divide by n - 1. Two consequences worth knowing:
+// cov (src/library/stats/src/cov.c, cov_complete1/2) take that mean rounded to *double* and sum
+// (x - m_x) · (y - m_y) in long double, without a correction term, and divide by n - 1. Two consequences worth knowing:
 //   - a t statistic uses mean(x) - mean(y) of two means already rounded to double (ulp 1.2e-7 at
 //     1e9), exactly as R does; computing the difference more accurately would disagree with R;
 //   - the residual-sum correction of Chan, Golub & LeVeque (1983) is deliberately *not* applied
@@ -35,12 +34,12 @@ inline double rMean(std::span<const double> xs) {
 }
 
 // Σ (x - m_x)(y - m_y) with R's double means and long double accumulation (cov.c).
+// (R keeps the double means in long double variables, so the differences are long double too.)
 inline long double rCrossProducts(std::span<const double> xs, std::span<const double> ys) {
-  const double mx = rMean(xs);
-  const double my = rMean(ys);
+  const long double mx = rMean(xs);
+  const long double my = rMean(ys);
   long double sum = 0.0L;
-  for (std::size_t k = 0; k < xs.size() && k < ys.size(); ++k)
-    sum += static_cast<long double>(xs[k] - mx) * (ys[k] - my);
+  for (std::size_t k = 0; k < xs.size() && k < ys.size(); ++k) sum += (xs[k] - mx) * (ys[k] - my);
   return sum;
 }
 
