@@ -4,6 +4,8 @@
 // --replicate R: a power analysis — the study repeated R times, and for each planned test how
 // often it is significant. With --calibrate carnecky|FILE.csv: the observer's parameters fitted to
 // published results by maximum likelihood (study/observer_calibration.hpp), nothing simulated.
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -97,7 +99,7 @@ void runCalibration(const study::Experiment& e, const SimulateOptions& o, int pa
   const auto context = gpu::createHeadlessContext();
   study::TextPainter painter;
   const bool temporary = o.db.empty();
-  const std::string directory = temporary ? (std::filesystem::temp_directory_path() / ("tlab-calibration-" + e.id)).string()
+  const std::string directory = temporary ? (std::filesystem::temp_directory_path() / ("tlab-calibration-" + e.id + "-" + std::to_string(::getpid()))).string()
                                           : study::stimulusDirectoryFor(o.db);
   study::StimulusLibrary stimuli(directory, sceneCatalog(), painter);
   const auto questions = study::predictionQuestions(e, stimuli, published.factor, participants);
