@@ -5,9 +5,14 @@
 //   x <- 1e9 + a * 2^-20; y <- 1e9 + b * 2^-20; t.test(x, y)   # welch a-b
 //   summary(aov(y ~ cond + Error(subj / cond), data = r))        # within F, p
 // and is compared to 1e-9 relative (1e-12 for R's mean and var themselves). R's t.test uses
-// mean(x) - mean(y) of means rounded to double, so at 1e9 its one-sample t differs from the exact
-// value in the 4th digit; these tests fail for any algorithm that is more (or less) exact than R's.
+// mean(x) - mean(y) of means rounded to double, so at 1e9 its t statistics differ from the exact
+// values by 5e-5 (Welch, Student) and 1.6e-4 (one-sample) relative: tlab before this change
+// (shifted, compensated sums) gave Welch t = -4.7751582854776098 here, R gives -4.7753968709293915.
+// These tests fail for any algorithm that is more (or less) exact than R's.
 #include <cstdio>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
 
 #include "analysis/anova.hpp"
 #include "analysis/anova_design.hpp"
@@ -16,6 +21,7 @@
 #include "analysis/rank_tests.hpp"
 #include "analysis/ttest.hpp"
 #include "tests/analysis/test_support.hpp"
+#include "tests/support/run_command.hpp"
 
 namespace tlab::analysis {
 namespace {
@@ -26,7 +32,7 @@ using testing::throwsWithMessage;
 constexpr double kR = 1e-9;
 
 const std::vector<int> kA = {398, -1089, 378, -129, -2388, -398, 447, -780, -269, -1458, 1484, 704};
-const std::vector<int> kB = {1852, 2068, 2058, 1854, 2558, 3700, 1229, -1183, 1587, 2189, 2898, 897, 818, 1222, 2393};
+const std::vector<int> kB = {1858, 2068, 2058, 1854, 2558, 3700, 1229, -1183, 1587, 2189, 2898, 897, 818, 1222, 2393};
 const std::vector<int> kC = {1794, 1130, 287, 1923, 1240, 337, 11, 897, 676, 868};
 const std::vector<int> kPre = {-657, -1033, 102, -507, -1322, -159, -633, -1378, 325, -925, -296, 852, -3226, 1327};
 const std::vector<int> kPost = {1076, 1119, 2385, 894, 1146, 707, 1852, 145, 1971, 1042, 1342, 1192, 1768, 959};
@@ -48,21 +54,21 @@ const OffsetCase kCases[] = {
     {1e6, 0x1p-20, -0.00024636590387672186, 1.0143487474344914e-06, 1.7973993985483851e-08,
      {-0.84737876650047705, 11, 0.41484086636824469, 999999.99911372224, 1000000.000393546},
      {5.4838916023022586, 13, 0.00010498261385322607, 0.0010373845944288834, 0.0023860337230934381},
-     {-4.744995844416966, 25, 7.215403655506628e-05, -0.0027365901077313882, -0.0010800145065264239},
-     {-4.7742909956328363, 24.2198333099916, 7.2124082301232591e-05, -0.0027328543673796981, -0.0010837502468781148},
-     13.68911029863191, 4.3541019743120159e-05, 9.8626618208917538, 0.00064955402557324436},
+     {-4.7458367007067839, 25, 7.1996903214846536e-05, -0.0027369904021789159, -0.0010803771980981498},
+     {-4.7751583437273393, 24.220160735718661, 7.1962220628533306e-05, -0.0027332503145996476, -0.0010841172856774187},
+     13.69391813694161, 4.3425221782916297e-05, 9.8626618208917538, 0.00064955402557324436},
     {1e9, 0x1p-20, -0.00024640560150146484, 1.0143487491570176e-06, 1.7973993985483851e-08,
      {-0.84751530628326144, 11, 0.41476799775032469, 999999999.99911368, 1000000000.0003935},
      {5.4838916023022586, 13, 0.00010498261385322607, 0.0010373845944288834, 0.0023860337230934381},
-     {-4.7449958406648571, 25, 7.2154037256999963e-05, -0.0027365901083863577, -0.0010800145058714548},
-     {-4.7742909918028351, 24.219833309150133, 7.212408301246534e-05, -0.0027328543680426661, -0.0010837502462151464},
-     13.68911029863191, 4.3541019743120159e-05, 9.8626618208917538, 0.00064955402557324436},
+     {-4.7460737629044987, 25, 7.1952664648262376e-05, -0.0027370857473317566, -0.0010804725412424622},
+     {-4.7753968709293915, 24.220160740959333, 7.1918411790695833e-05, -0.0027333456596797252, -0.0010842126288944935},
+     13.69391813694161, 4.3425221782916297e-05, 9.8626618208917538, 0.00064955402557324436},
     {1e12, 0x1p-10, -0.2523193359375, 1.0636217539960688, 0.018847098717322715,
      {-0.84751530628326144, 11, 0.41476799775032469, 999999999999.09241, 1000000000000.403},
      {5.4838916023022586, 13, 0.00010498261385322607, 1.0622818246951766, 2.4432985324476806},
-     {-4.7449958406648571, 25, 7.2154037256999963e-05, -2.8022682709876303, -1.1059348540123697},
-     {-4.7742909918028351, 24.219833309150133, 7.212408301246534e-05, -2.79844287287569, -1.10976025212431},
-     13.68911029863191, 4.3541019743120159e-05, 9.8626618208917538, 0.00064955402557324436},
+     {-4.7460737629044987, 25, 7.1952664648262376e-05, -2.8027758052677187, -1.1064038822322813},
+     {-4.7753968709293915, 24.220160740959333, 7.1918411790695833e-05, -2.7989459555120386, -1.1102337319879614},
+     13.69391813694161, 4.3425221782916297e-05, 9.8626618208917538, 0.00064955402557324436},
 };
 
 std::vector<double> values(const std::vector<int>& ks, double offset, double unit) {
@@ -163,6 +169,32 @@ TEST(ROffset, EssentiallyConstantDataAreRefusedAsRRefusesThem) {
   EXPECT_TRUE(throwsWithMessage([&] { oneSampleTTest(a, 1e12, Alternative::TwoSided); }, {"essentially constant"}));
   EXPECT_TRUE(throwsWithMessage([&] { welchTTest(a, b, Alternative::TwoSided); }, {"essentially constant"}));
   EXPECT_TRUE(throwsWithMessage([&] { studentTTest(a, b, Alternative::TwoSided); }, {"essentially constant"}));
+}
+
+TEST(ROffset, TlabStatsOnACsvFileGivesRsWelchTest) {
+  // As a user meets it: the 1e9 data written to CSV with 17 digits, `tlab stats ttest --json`,
+  // compared with R's t.test(x, y) on the same doubles (offset_r_reference.R, "welch a-b" at 1e9).
+  const auto dir = ::tlab::testing::freshDir("r_offset_cli");
+  const std::string csv = (dir / "offset.csv").string();
+  {
+    std::ofstream out(csv);
+    out << "group,y\n";
+    for (const auto& [name, ks] : {std::pair{"a", kA}, {"b", kB}})
+      for (const double y : values(ks, 1e9, 0x1p-20)) {
+        char line[64];
+        std::snprintf(line, sizeof line, "%s,%.17g\n", name, y);
+        out << line;
+      }
+  }
+  const auto r = ::tlab::testing::runCommand(std::string(TLAB_EXE) + " stats ttest " + csv + " --dv y --between group --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const RTTest& welch = kCases[1].welch;
+  EXPECT_TRUE(relativelyNear(j["t"].get<double>(), welch.t, kR));
+  EXPECT_TRUE(relativelyNear(j["df"].get<double>(), welch.df, kR));
+  EXPECT_TRUE(relativelyNear(j["p"].get<double>(), welch.p, kR));
+  EXPECT_TRUE(relativelyNear(j["ci_low"].get<double>(), welch.ciLow, kR));
+  EXPECT_TRUE(relativelyNear(j["ci_high"].get<double>(), welch.ciHigh, kR));
 }
 
 }  // namespace
