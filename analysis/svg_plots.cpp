@@ -101,6 +101,14 @@ struct Frame {
   double y(double v) const { return bottom - (v - yMin) / (yMax - yMin) * (bottom - top); }
 };
 
+// The plot area of a width × height picture, leaving `rightMargin` and `bottomMargin` free.
+Frame plotFrame(double width, double height, double rightMargin, double bottomMargin) {
+  Frame f;
+  f.right = width - rightMargin;
+  f.bottom = height - bottomMargin;
+  return f;
+}
+
 void drawYAxis(cairo_t* cr, const Frame& f, const std::vector<double>& ticks, const std::string& label) {
   cairo_set_line_width(cr, 1.0);
   for (const double t : ticks) {
@@ -165,9 +173,7 @@ std::vector<double> barChartTicks(const BarChart& chart) {
 std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 20;
-  f.bottom = height - 70;
+  Frame f = plotFrame(width, height, 20, 70);
   const std::vector<double> ticks = barChartTicks(chart);
   f.yMin = ticks.front();
   f.yMax = ticks.back();
@@ -226,9 +232,7 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
 std::string renderBoxPlotSvg(const BoxPlot& plot, double width, double height) {
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 20;
-  f.bottom = height - 50;
+  Frame f = plotFrame(width, height, 20, 50);
   double lo = INFINITY;
   double hi = -INFINITY;
   for (const auto& g : plot.groups)
@@ -312,9 +316,7 @@ std::string renderLinePlotSvg(const LinePlot& plot, double width, double height)
   const auto xTicks = niceTicks(xMin, xMax), yTicks = niceTicks(yMin, yMax);
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 170;
-  f.bottom = height - 50;
+  Frame f = plotFrame(width, height, 170, 50);
   f.yMin = yTicks.front();
   f.yMax = yTicks.back();
   const double x0 = xTicks.front(), x1 = xTicks.back();
