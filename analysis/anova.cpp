@@ -9,7 +9,7 @@
 #include "analysis/analysis_error.hpp"
 #include "analysis/contrasts.hpp"
 #include "analysis/distributions.hpp"
-#include "analysis/stable_sum.hpp"
+#include "analysis/r_moments.hpp"
 
 namespace tlab::analysis {
 
@@ -120,7 +120,7 @@ AnovaResult anova(const AnovaDesign& design, SumOfSquaresType ssType) {
   // Centre on the grand mean: removes large offsets before any product is formed. Only the
   // intercept of the between stratum (the grand mean itself, never reported) is affected.
   const std::vector<double> all(design.y.data(), design.y.data() + design.y.size());
-  const Eigen::MatrixXd y = design.y.array() - stableMean(all);
+  const Eigen::MatrixXd y = design.y.array() - rMean(all);
   const double totalSs = y.squaredNorm();
   if (!(totalSs > 0.0))
     throw AnalysisError("zero variance: all values of '" + design.dv +

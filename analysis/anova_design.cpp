@@ -3,6 +3,7 @@
 #include <map>
 
 #include "analysis/analysis_error.hpp"
+#include "analysis/r_moments.hpp"
 #include "analysis/factor.hpp"
 
 namespace tlab::analysis {
@@ -114,33 +115,23 @@ AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
     }
   }
 
-  // Cell means per subject.
-  std::vector<std::size_t> counts(n * cells, 0);
-  Eigen::MatrixXd sums = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(cells));
-  Eigen::MatrixXd firstValue = sums;
+  // Cell means per subject, as R's mean() computes them (replicates of a subject in a cell).
+  std::vector<std::vector<double>> cellValues(n * cells);
   for (std::size_t r = 0; r < table.rowCount(); ++r) {
     std::size_t cell = 0;
     for (const auto& f : withinFactors) cell = cell * f.levels.size() + f.codes[r];
-    const std::size_t s = subjectOfRow[r];
-    const auto si = static_cast<Eigen::Index>(s);
-    const auto ci = static_cast<Eigen::Index>(cell);
-    // Accumulate deviations from the cell's first value so that large offsets do not cancel.
-    if (counts[s * cells + cell] == 0) firstValue(si, ci) = values[r];
-    sums(si, ci) += values[r] - firstValue(si, ci);
-    ++counts[s * cells + cell];
+    cellValues[subjectOfRow[r] * cells + cell].push_back(values[r]);
   }
   design.y.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(cells));
   for (std::size_t s = 0; s < n; ++s)
     for (std::size_t c = 0; c < cells; ++c) {
-      const std::size_t count = counts[s * cells + c];
-      if (count == 0)
+      const std::vector<double>& replicates = cellValues[s * cells + c];
+      if (replicates.empty())
         throw AnalysisError("unbalanced within-subject data: subject '" + design.subjects[s] +
                             "' has no observation in cell " + withinCellLabel(design, c) +
                             " (every subject needs every within-subject cell)");
-      design.maxReplicates = std::max(design.maxReplicates, count);
-      const auto si = static_cast<Eigen::Index>(s);
-      const auto ci = static_cast<Eigen::Index>(c);
-      design.y(si, ci) = firstValue(si, ci) + sums(si, ci) / static_cast<double>(count);
+      design.maxReplicates = std::max(design.maxReplicates, replicates.size());
+      design.y(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(c)) = rMean(replicates);
     }
 
   // Every between-subject cell needs subjects (otherwise the model is rank deficient).

@@ -5,7 +5,7 @@
 
 #include "analysis/analysis_error.hpp"
 #include "analysis/distributions.hpp"
-#include "analysis/stable_sum.hpp"
+#include "analysis/r_moments.hpp"
 
 namespace tlab::analysis {
 
@@ -15,17 +15,23 @@ SampleSummary summarizeSample(std::span<const double> xs, const std::string& lab
                         "; at least 2 observations are needed to estimate a variance");
   SampleSummary s;
   s.n = xs.size();
-  s.mean = stableMean(xs);
-  s.variance = sumOfSquaredDeviations(xs) / static_cast<double>(s.n - 1);
+  s.mean = rMean(xs);
+  s.variance = rVariance(xs);
   return s;
 }
 
+// As R's quantile.default computes type 7: index = 1 + (n-1)p, lo = floor(index), and where
+// index > lo and x[hi] != x[lo], (1 - h)·x[lo] + h·x[hi] with h = index - lo.
 double quantileType7(std::span<const double> sorted, double probability) {
   if (sorted.empty()) return std::nan("");
-  const double h = (static_cast<double>(sorted.size()) - 1.0) * probability;
-  const auto lo = static_cast<std::size_t>(std::floor(h));
-  const std::size_t hi = std::min(lo + 1, sorted.size() - 1);
-  return sorted[lo] + (h - std::floor(h)) * (sorted[hi] - sorted[lo]);
+  const double index = 1.0 + (static_cast<double>(sorted.size()) - 1.0) * probability;
+  const double lo = std::floor(index);
+  const double hi = std::ceil(index);
+  const double xLo = sorted[static_cast<std::size_t>(lo) - 1];
+  const double xHi = sorted[std::min(static_cast<std::size_t>(hi), sorted.size()) - 1];
+  if (!(index > lo) || xHi == xLo) return xLo;
+  const double h = index - lo;
+  return (1.0 - h) * xLo + h * xHi;
 }
 
 Descriptives describe(std::span<const double> xs, const std::string& label, double confidence) {

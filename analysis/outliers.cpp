@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "analysis/descriptives.hpp"
-#include "analysis/stable_sum.hpp"
+#include "analysis/r_moments.hpp"
 
 namespace tlab::analysis {
 
@@ -21,10 +21,8 @@ OutlierScreen screenOutliers(std::span<const double> xs) {
   const double q3 = quantileType7(sorted, 0.75);
   screen.lowerFence = q1 - 1.5 * (q3 - q1);
   screen.upperFence = q3 + 1.5 * (q3 - q1);
-  const double mean = stableMean(xs);
-  const double sd = xs.size() > 1
-                        ? std::sqrt(sumOfSquaredDeviations(xs) / static_cast<double>(xs.size() - 1))
-                        : 0.0;
+  const double mean = rMean(xs);
+  const double sd = xs.size() > 1 ? std::sqrt(rVariance(xs)) : 0.0;
   for (std::size_t i = 0; i < xs.size(); ++i) {
     const double z = sd > 0.0 ? (xs[i] - mean) / sd : 0.0;
     if (xs[i] < screen.lowerFence || xs[i] > screen.upperFence)

@@ -5,6 +5,7 @@
 
 #include "analysis/analysis_error.hpp"
 #include "analysis/anova_design.hpp"
+#include "analysis/r_moments.hpp"
 #include "analysis/svg_plots.hpp"
 
 namespace tlab::analysis {
@@ -61,16 +62,19 @@ std::vector<CellSummary> cellSummaries(const AnovaDesign& design, double confide
 std::vector<double> marginalWithinMeans(const AnovaDesign& design, std::size_t factor, std::size_t level) {
   std::vector<double> means(design.subjects.size(), 0.0);
   for (std::size_t s = 0; s < design.subjects.size(); ++s) {
-    double sum = 0.0;
-    std::size_t count = 0;
+    std::vector<double> cells;
     for (std::size_t c = 0; c < design.cellCount(); ++c)
-      if (withinCellLevels(design, c)[factor] == level) {
-        sum += design.y(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(c));
-        ++count;
-      }
-    means[s] = sum / static_cast<double>(count);
+      if (withinCellLevels(design, c)[factor] == level)
+        cells.push_back(design.y(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(c)));
+    means[s] = rMean(cells);
   }
   return means;
+}
+
+// A subject's mean over all within cells.
+double subjectMean(const AnovaDesign& design, std::size_t s) {
+  const Eigen::RowVectorXd row = design.y.row(static_cast<Eigen::Index>(s));
+  return rMean(std::span<const double>(row.data(), static_cast<std::size_t>(row.size())));
 }
 
 std::vector<Comparison> comparisons(const AnovaDesign& design, const AnalysisPlan& plan) {
@@ -112,7 +116,7 @@ std::vector<Comparison> comparisons(const AnovaDesign& design, const AnalysisPla
     c.factor = factor.name;
     std::vector<double> groups[2];
     for (std::size_t s = 0; s < n; ++s)
-      groups[design.betweenLevels[s][f]].push_back(design.y.row(static_cast<Eigen::Index>(s)).mean());
+      groups[design.betweenLevels[s][f]].push_back(subjectMean(design, s));
     c.description = factor.name + ": " + factor.levels[0] + " (n = " + std::to_string(groups[0].size()) + ") vs " +
                     factor.levels[1] + " (n = " + std::to_string(groups[1].size()) + ")";
     try {
@@ -126,7 +130,15 @@ std::vector<Comparison> comparisons(const AnovaDesign& design, const AnalysisPla
   return out;
 }
 
-std::vector<Figure> figures(const std::string& dv, const AnovaDesign& design, const std::vector<CellSummary>& cells) {
+// A dependent variable on the scale [0, 1]: named a proportion by the plan, or every value 0 or 1.
+bool isProportion(const Table& table, const AnalysisPlan& plan, const std::string& dv) {
+  if (std::find(plan.proportions.begin(), plan.proportions.end(), dv) != plan.proportions.end()) return true;
+  const std::vector<double> values = table.numericColumn(dv);
+  return !values.empty() && std::all_of(values.begin(), values.end(), [](double v) { return v == 0.0 || v == 1.0; });
+}
+
+std::vector<Figure> figures(const std::string& dv, const AnovaDesign& design, const std::vector<CellSummary>& cells,
+                            bool proportion) {
   std::vector<std::string> names;
   for (const auto& f : design.between) names.push_back(f.name);
   for (const auto& f : design.within) names.push_back(f.name);
@@ -135,7 +147,11 @@ std::vector<Figure> figures(const std::string& dv, const AnovaDesign& design, co
   BarChart bars;
   bars.title = "Mean " + dv + " per condition";
   bars.yLabel = dv;
-  bars.errorBarMeaning = "error bars: ±1 SD over subjects";
+  bars.errorBarMeaning = proportion ? "error bars: ±1 SD over subjects, clipped to [0, 1]" : "error bars: ±1 SD over subjects";
+  if (proportion) {
+    bars.yFloor = 0.0;
+    bars.yCeiling = 1.0;
+  }
   std::map<std::string, std::size_t> categoryIndex;
   std::map<std::string, std::size_t> seriesIndex;
   for (const auto& cell : cells) {
@@ -210,7 +226,8 @@ Report makeReport(const Table& table, const AnalysisPlan& plan) {
       }
     }
     r.comparisons = comparisons(design, plan);
-    r.figures = figures(dv, design, r.cells);
+    r.proportion = isProportion(table, plan, dv);
+    r.figures = figures(dv, design, r.cells, r.proportion);
     report.dependentVariables.push_back(std::move(r));
   }
   if (report.design.maxReplicates > 1)

@@ -14,6 +14,7 @@
 #include "analysis/outliers.hpp"
 #include "analysis/rank_tests.hpp"
 #include "analysis/table.hpp"
+#include "analysis/text_table.hpp"
 #include "analysis/ttest.hpp"
 
 namespace tlab::analysis {
@@ -33,6 +34,9 @@ struct AnalysisPlan {
   std::vector<PlannedTest> tests = {PlannedTest::Anova, PlannedTest::TTests, PlannedTest::RankTests};
   SumOfSquaresType ssType = SumOfSquaresType::II;
   double confidence = 0.95;
+  // Dependent variables that are proportions or scores in [0, 1] (a dependent variable whose
+  // values are all 0 or 1 counts as one anyway): their plots' axes end at 0 and 1.
+  std::vector<std::string> proportions;
 };
 
 // One cell of the design (a combination of all factors' levels), over subjects (replicates of a
@@ -64,6 +68,7 @@ struct Figure {
 
 struct DependentVariableReport {
   std::string dv;
+  bool proportion = false;  // on the scale [0, 1] (AnalysisPlan::proportions): plots end at 0 and 1
   std::vector<CellSummary> cells;
   std::optional<AnovaResult> anova;
   std::string anovaError;
@@ -80,13 +85,23 @@ struct DesignSummary {
   std::string subject;
 };
 
+// A picture the report shows as it is (e.g. a stimulus as participants saw it).
+struct ReportImage {
+  std::string caption;
+  std::string mimeType;  // "image/png"
+  std::string bytes;
+};
+
 struct Report {
   std::string title;
   std::string source;
   AnalysisPlan plan;
   DesignSummary design;
   std::vector<DependentVariableReport> dependentVariables;
-  std::vector<std::string> notes;
+  std::vector<std::string> notes;     // how the numbers were computed, each once
+  std::vector<std::string> warnings;  // what a reader must know first (e.g. simulated data): at the top
+  std::vector<TextTable> appendices;  // further tables after the dependent variables (questionnaires, stimuli)
+  std::vector<ReportImage> images;    // a gallery at the end (the stimuli shown)
 };
 
 // Throws AnalysisError for plan errors (missing columns, no dv, within without subject,

@@ -16,6 +16,7 @@ th, td { border-bottom: 1px solid #ddd; padding: .25em .7em; text-align: left; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; }
 figure { margin: 1em 0; } figcaption { font-size: .9em; color: #555; }
 .error { color: #a00; } .note { color: #555; font-size: .95em; }
+.warning { border: 2px solid #c60; background: #fff4e5; padding: .6em .9em; }
 .gallery { display: flex; flex-wrap: wrap; gap: .5em; } .gallery figure { margin: 0; }
 )";
 
@@ -46,6 +47,7 @@ std::string image(const std::string& caption, const std::string& mimeType, const
 // One report's sections, its title at heading `level` and each dependent variable one below.
 std::string body(const Report& report, int level) {
   std::string html = heading(level, report.title);
+  for (const auto& warning : report.warnings) html += "<p class=\"warning\">" + escapeHtml(warning) + "</p>\n";
   html += renderHtmlTable(designTable(report));
   for (const auto& note : report.notes) html += "<p class=\"note\">" + escapeHtml(note) + "</p>\n";
   for (const auto& dv : report.dependentVariables) {
@@ -60,6 +62,12 @@ std::string body(const Report& report, int level) {
     }
     html += section(comparisonTable(dv.comparisons), "");
     for (const auto& figure : dv.figures) html += image(figure.caption, "image/svg+xml", figure.svg);
+  }
+  for (const auto& table : report.appendices) html += renderHtmlTable(table);
+  if (!report.images.empty()) {
+    html += "<div class=\"gallery\">\n";
+    for (const auto& i : report.images) html += image(i.caption, i.mimeType, i.bytes, "width: 220px");
+    html += "</div>\n";
   }
   return html;
 }

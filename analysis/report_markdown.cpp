@@ -8,6 +8,7 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
   MarkdownDocument doc;
   std::string& md = doc.text;
   md += "# " + report.title + "\n\n";
+  for (const auto& warning : report.warnings) md += "> **" + warning + "**\n\n";
   md += renderMarkdownTable(designTable(report));
   for (const auto& note : report.notes) md += "_" + note + "_\n\n";
   for (const auto& dv : report.dependentVariables) {
@@ -30,6 +31,12 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
       doc.figures.push_back({name, figure.svg});
       md += "![" + figure.caption + "](" + name + ")\n\n";
     }
+  }
+  for (const auto& table : report.appendices) md += renderMarkdownTable(table);
+  for (std::size_t k = 0; k < report.images.size(); ++k) {
+    const std::string name = figureStem + "_image" + std::to_string(k + 1) + (report.images[k].mimeType == "image/png" ? ".png" : ".bin");
+    doc.figures.push_back({name, report.images[k].bytes});
+    md += "![" + report.images[k].caption + "](" + name + ")\n\n";
   }
   return doc;
 }

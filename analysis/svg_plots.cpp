@@ -101,6 +101,14 @@ struct Frame {
   double y(double v) const { return bottom - (v - yMin) / (yMax - yMin) * (bottom - top); }
 };
 
+// The plot area of a width × height picture, leaving `rightMargin` and `bottomMargin` free.
+Frame plotFrame(double width, double height, double rightMargin, double bottomMargin) {
+  Frame f;
+  f.right = width - rightMargin;
+  f.bottom = height - bottomMargin;
+  return f;
+}
+
 void drawYAxis(cairo_t* cr, const Frame& f, const std::vector<double>& ticks, const std::string& label) {
   cairo_set_line_width(cr, 1.0);
   for (const double t : ticks) {
@@ -146,12 +154,7 @@ std::vector<double> niceTicks(double lo, double hi, int targetCount) {
   return ticks;
 }
 
-std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
-  SvgCanvas canvas(width, height);
-  cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 20;
-  f.bottom = height - 70;
+std::vector<double> barChartTicks(const BarChart& chart) {
   double top = 0.0;
   double low = 0.0;
   for (const auto& s : chart.series)
@@ -160,7 +163,18 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
       top = std::max(top, s.means[i] + e);
       low = std::min(low, s.means[i] - e);
     }
-  const std::vector<double> ticks = niceTicks(low, top);
+  if (std::isfinite(chart.yCeiling)) top = std::min(top, chart.yCeiling);
+  if (std::isfinite(chart.yFloor)) low = std::max(low, chart.yFloor);
+  std::vector<double> ticks = niceTicks(low, top);
+  std::erase_if(ticks, [&](double t) { return t > chart.yCeiling + 1e-12 || t < chart.yFloor - 1e-12; });
+  return ticks;
+}
+
+std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
+  SvgCanvas canvas(width, height);
+  cairo_t* cr = canvas.cr();
+  Frame f = plotFrame(width, height, 20, 70);
+  const std::vector<double> ticks = barChartTicks(chart);
   f.yMin = ticks.front();
   f.yMax = ticks.back();
   drawText(cr, chart.title, width / 2, 22, 14, Align::Center, true);
@@ -184,8 +198,8 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
       cairo_fill(cr);
       if (g < series.errors.size() && std::isfinite(series.errors[g])) {
         const double cx = x + barWidth / 2;
-        const double ylo = f.y(series.means[g] - series.errors[g]);
-        const double yhi = f.y(series.means[g] + series.errors[g]);
+        const double ylo = f.y(std::max(f.yMin, series.means[g] - series.errors[g]));
+        const double yhi = f.y(std::min(f.yMax, series.means[g] + series.errors[g]));
         cairo_set_source_rgb(cr, 0.1, 0.1, 0.1);
         cairo_set_line_width(cr, 1.5);
         cairo_move_to(cr, cx, ylo);
@@ -218,9 +232,7 @@ std::string renderBarChartSvg(const BarChart& chart, double width, double height
 std::string renderBoxPlotSvg(const BoxPlot& plot, double width, double height) {
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 20;
-  f.bottom = height - 50;
+  Frame f = plotFrame(width, height, 20, 50);
   double lo = INFINITY;
   double hi = -INFINITY;
   for (const auto& g : plot.groups)
@@ -304,9 +316,7 @@ std::string renderLinePlotSvg(const LinePlot& plot, double width, double height)
   const auto xTicks = niceTicks(xMin, xMax), yTicks = niceTicks(yMin, yMax);
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f;
-  f.right = width - 170;
-  f.bottom = height - 50;
+  Frame f = plotFrame(width, height, 170, 50);
   f.yMin = yTicks.front();
   f.yMax = yTicks.back();
   const double x0 = xTicks.front(), x1 = xTicks.back();

@@ -3,6 +3,7 @@
 // returned as SVG text: bar charts of cell means with error bars (the style of Elmqvist Figs. 9-10)
 // and box plots per condition (Tukey's: box Q1-Q3, median, whiskers to the most extreme values
 // inside the 1.5 IQR fences, points beyond them).
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ struct BarChart {
   std::string errorBarMeaning;  // e.g. "error bars: ±1 SD"
   std::vector<std::string> categories;  // x-axis groups
   std::vector<BarSeries> series;        // bars within each group
+  // The scale's own limits, e.g. [0, 1] for a proportion: the axis never runs past them and error
+  // bars are clipped to them (NaN: no limit).
+  double yFloor = std::numeric_limits<double>::quiet_NaN();
+  double yCeiling = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct BoxPlotGroup {
@@ -47,6 +52,9 @@ struct LinePlot {
 };
 
 std::string renderBarChartSvg(const BarChart& chart, double width = 640, double height = 400);
+// The y-axis ticks of a bar chart: from 0 (or below) to the highest bar plus error, within the
+// chart's yFloor/yCeiling.
+std::vector<double> barChartTicks(const BarChart& chart);
 std::string renderBoxPlotSvg(const BoxPlot& plot, double width = 640, double height = 400);
 std::string renderLinePlotSvg(const LinePlot& plot, double width = 640, double height = 400);
 

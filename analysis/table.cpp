@@ -112,4 +112,16 @@ std::string Table::where(std::size_t row) const {
   return source_ + ":" + std::to_string(origins_.at(row));
 }
 
+Table Table::rowsWhere(std::string_view column, std::string_view value) const {
+  const std::size_t c = columnIndex(column);
+  Table subset(source_, names_);
+  for (std::size_t r = 0; r < rowCount(); ++r) {
+    if (columns_[c][r] != value) continue;
+    std::vector<std::string> cells;
+    for (const auto& col : columns_) cells.push_back(col[r]);
+    subset.addRow(std::move(cells), origins_[r]);
+  }
+  return subset;
+}
+
 }  // namespace tlab::analysis

@@ -44,6 +44,9 @@ class Table {
   // "source:line" of a row, for messages.
   std::string where(std::size_t row) const;
 
+  // The rows whose cell in `column` is `value` (same columns, same origins).
+  Table rowsWhere(std::string_view column, std::string_view value) const;
+
  private:
   std::string source_;
   std::vector<std::string> names_;

@@ -1,5 +1,6 @@
 #include "analysis/ttest.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -20,7 +21,15 @@ std::string formatNumber(double x) {
 }
 
 // A standard error of exactly zero makes t = meanDiff / 0: say so instead of printing inf/nan.
-void requireNonzeroStandardError(double se, double meanDiff, const std::string& what) {
+// Like R's t.test, a standard error below 10·eps·|mean| is refused too ("data are essentially
+// constant"): the means themselves are not known to that precision.
+void requireNonzeroStandardError(double se, double meanDiff, const std::string& what, double magnitude) {
+  if (se > 0.0 && std::isfinite(se) && se < 10.0 * std::numeric_limits<double>::epsilon() * magnitude)
+    throw AnalysisError("data are essentially constant: the standard error " + formatNumber(se) +
+                        " is below 10·eps·|mean| = " +
+                        formatNumber(10.0 * std::numeric_limits<double>::epsilon() * magnitude) +
+                        ", so the means are not known to that precision (R's t.test refuses too); "
+                        "subtract a constant from the data first");
   if (se > 0.0 && std::isfinite(se)) return;
   std::string consequence =
       meanDiff == 0.0 ? "t = 0/0 is undefined"
@@ -29,32 +38,33 @@ void requireNonzeroStandardError(double se, double meanDiff, const std::string& 
                       "), so " + consequence);
 }
 
-// Confidence interval of an estimate with standard error se on df degrees of freedom (R's t.test).
-void setConfidenceInterval(TTestResult& r) {
+// Confidence interval as R's t.test computes it: mu + (t ± q)·se, where mu is the hypothesised
+// value (the one-sample interval is of the mean itself, the two-sample one of the difference).
+void setConfidenceInterval(TTestResult& r, double mu) {
   if (r.confidence <= 0.0 || r.confidence >= 1.0)
     throw AnalysisError("confidence level must lie in (0, 1), got " + formatNumber(r.confidence));
   switch (r.alternative) {
     case Alternative::TwoSided: {
       const double q = studentTQuantile(1.0 - (1.0 - r.confidence) / 2.0, r.df);
-      r.ciLow = r.meanDiff - q * r.se;
-      r.ciHigh = r.meanDiff + q * r.se;
+      r.ciLow = mu + (r.t - q) * r.se;
+      r.ciHigh = mu + (r.t + q) * r.se;
       break;
     }
     case Alternative::Less:
       r.ciLow = -kInf;
-      r.ciHigh = r.meanDiff + studentTQuantile(r.confidence, r.df) * r.se;
+      r.ciHigh = mu + (r.t + studentTQuantile(r.confidence, r.df)) * r.se;
       break;
     case Alternative::Greater:
-      r.ciLow = r.meanDiff - studentTQuantile(r.confidence, r.df) * r.se;
+      r.ciLow = mu + (r.t - studentTQuantile(r.confidence, r.df)) * r.se;
       r.ciHigh = kInf;
       break;
   }
 }
 
-void finish(TTestResult& r, double effectSizeDf) {
+void finish(TTestResult& r, double effectSizeDf, double mu = 0.0) {
   r.t = r.meanDiff / r.se;
   r.p = studentTPValue(r.t, r.df, r.alternative);
-  setConfidenceInterval(r);
+  setConfidenceInterval(r, mu);
   r.hedgesG = hedgesCorrection(effectSizeDf) * r.cohensD;
 }
 
@@ -70,23 +80,12 @@ void requireAtLeastTwo(const SampleSummary& s, const char* which) {
                         "; at least 2 observations are needed to estimate a variance");
 }
 
-std::vector<double> shiftedBy(std::span<const double> xs, double reference) {
-  std::vector<double> shifted(xs.size());
-  for (std::size_t i = 0; i < xs.size(); ++i) shifted[i] = xs[i] - reference;
-  return shifted;
-}
-
 using TwoSampleFromSummaries = TTestResult (*)(const SampleSummary&, const SampleSummary&, Alternative, double);
 
-// Both samples shifted by the first observation (the differences are exact for nearby values).
+// R's t.test.default: mean(x) - mean(y) of the two means as R rounds them, var(x), var(y).
 TTestResult twoSampleTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,
                            double confidence, TwoSampleFromSummaries test) {
-  const double reference = x.empty() ? 0.0 : x[0];
-  TTestResult r = test(summarizeSample(shiftedBy(x, reference), "the first group"),
-                       summarizeSample(shiftedBy(y, reference), "the second group"), alternative, confidence);
-  r.first.mean += reference;
-  r.second.mean += reference;
-  return r;
+  return test(summarizeSample(x, "the first group"), summarizeSample(y, "the second group"), alternative, confidence);
 }
 
 }  // namespace
@@ -107,11 +106,22 @@ double hedgesCorrection(double m) {
   return std::exp(std::lgamma(m / 2.0) - std::lgamma((m - 1.0) / 2.0)) / std::sqrt(m / 2.0);
 }
 
+namespace {
+// R's t.test: stderrx <- sqrt(vx/nx); stderry <- sqrt(vy/ny); stderr <- sqrt(stderrx^2 + stderry^2);
+// df <- stderr^4/(stderrx^4/(nx-1) + stderry^4/(ny-1)) (Welch 1947; Satterthwaite 1946).
+double welchStandardError(const SampleSummary& x, const SampleSummary& y) {
+  const double sx = std::sqrt(x.variance / static_cast<double>(x.n));
+  const double sy = std::sqrt(y.variance / static_cast<double>(y.n));
+  return std::sqrt(sx * sx + sy * sy);
+}
+}  // namespace
+
 double welchSatterthwaiteDf(const SampleSummary& x, const SampleSummary& y) {
-  const double a = x.variance / static_cast<double>(x.n);
-  const double b = y.variance / static_cast<double>(y.n);
-  return (a + b) * (a + b) /
-         (a * a / static_cast<double>(x.n - 1) + b * b / static_cast<double>(y.n - 1));
+  const double sx = std::sqrt(x.variance / static_cast<double>(x.n));
+  const double sy = std::sqrt(y.variance / static_cast<double>(y.n));
+  const double se = welchStandardError(x, y);
+  return std::pow(se, 4.0) /
+         (std::pow(sx, 4.0) / static_cast<double>(x.n - 1) + std::pow(sy, 4.0) / static_cast<double>(y.n - 1));
 }
 
 TTestResult oneSampleTTestFromSummary(const SampleSummary& x, double mu0, Alternative alternative,
@@ -125,11 +135,9 @@ TTestResult oneSampleTTestFromSummary(const SampleSummary& x, double mu0, Altern
   r.meanDiff = x.mean - mu0;
   r.df = static_cast<double>(x.n - 1);
   r.se = std::sqrt(x.variance / static_cast<double>(x.n));
-  requireNonzeroStandardError(r.se, r.meanDiff, "all values are equal");
+  requireNonzeroStandardError(r.se, r.meanDiff, "all values are equal", std::fabs(x.mean));
   r.cohensD = r.meanDiff / std::sqrt(x.variance);
-  finish(r, r.df);
-  r.ciLow += mu0;  // R reports the interval of the mean itself
-  r.ciHigh += mu0;
+  finish(r, r.df, mu0);  // R reports the interval of the mean itself
   return r;
 }
 
@@ -144,7 +152,7 @@ TTestResult pairedTTestFromDifferences(const SampleSummary& d, Alternative alter
   r.meanDiff = d.mean;
   r.df = static_cast<double>(d.n - 1);
   r.se = std::sqrt(d.variance / static_cast<double>(d.n));
-  requireNonzeroStandardError(r.se, r.meanDiff, "all paired differences are equal");
+  requireNonzeroStandardError(r.se, r.meanDiff, "all paired differences are equal", std::fabs(d.mean));
   r.cohensD = d.mean / std::sqrt(d.variance);  // d_z
   finish(r, r.df);
   return r;
@@ -173,7 +181,8 @@ TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummar
   r.df = static_cast<double>(x.n + y.n - 2);
   const double sp2 = pooledVariance(x, y);
   r.se = std::sqrt(sp2 * (1.0 / static_cast<double>(x.n) + 1.0 / static_cast<double>(y.n)));
-  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant");
+  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant",
+                              std::max(std::fabs(x.mean), std::fabs(y.mean)));
   r.cohensD = r.meanDiff / std::sqrt(sp2);
   finish(r, r.df);
   return r;
@@ -182,8 +191,9 @@ TTestResult studentTTestFromSummaries(const SampleSummary& x, const SampleSummar
 TTestResult welchTTestFromSummaries(const SampleSummary& x, const SampleSummary& y,
                                     Alternative alternative, double confidence) {
   TTestResult r = twoSampleResult(TTestKind::Welch, x, y, alternative, confidence);
-  r.se = std::sqrt(x.variance / static_cast<double>(x.n) + y.variance / static_cast<double>(y.n));
-  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant");
+  r.se = welchStandardError(x, y);
+  requireNonzeroStandardError(r.se, r.meanDiff, "both groups are constant",
+                              std::max(std::fabs(x.mean), std::fabs(y.mean)));
   r.df = welchSatterthwaiteDf(x, y);
   r.cohensD = r.meanDiff / std::sqrt(pooledVariance(x, y));
   finish(r, static_cast<double>(x.n + y.n - 2));
@@ -192,12 +202,7 @@ TTestResult welchTTestFromSummaries(const SampleSummary& x, const SampleSummary&
 
 TTestResult oneSampleTTest(std::span<const double> x, double mu0, Alternative alternative,
                            double confidence) {
-  SampleSummary shifted = summarizeSample(shiftedBy(x, mu0), "the sample");
-  TTestResult r = oneSampleTTestFromSummary(shifted, 0.0, alternative, confidence);
-  r.first.mean += mu0;
-  r.ciLow += mu0;
-  r.ciHigh += mu0;
-  return r;
+  return oneSampleTTestFromSummary(summarizeSample(x, "the sample"), mu0, alternative, confidence);
 }
 
 TTestResult pairedTTest(std::span<const double> x, std::span<const double> y, Alternative alternative,

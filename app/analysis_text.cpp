@@ -7,6 +7,7 @@ namespace tlab::app {
 
 std::string analysisText(const study::StudyAnalysis& a) {
   std::string out = "== " + a.spec.title + " (" + std::to_string(a.report.design.subjects) + " subjects, " + std::to_string(a.report.design.rows) + " rows)\n";
+  for (const auto& warning : a.report.warnings) out += warning + "\n";
   analysis::TextTable table;
   table.header = {"dv", "test", "statistic", "p"};
   for (const auto& dv : a.report.dependentVariables) {

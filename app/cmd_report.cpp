@@ -16,6 +16,7 @@
 #include "app/commands.hpp"
 #include "study/study_analysis.hpp"
 #include "study/open_store.hpp"
+#include "study/study_record_tables.hpp"
 
 namespace tlab::app {
 
@@ -36,7 +37,19 @@ struct ReportOptions {
   bool poolVersions = false;
 };
 
+// Creates the folder a report goes into (as export does), with one plain line if it cannot.
+void createParentFolder(const std::filesystem::path& path) {
+  const std::filesystem::path parent = path.parent_path();
+  if (parent.empty()) return;
+  std::error_code error;
+  std::filesystem::create_directories(parent, error);
+  if (error)
+    throw an::AnalysisError(parent.string() + ": cannot create the folder for " + path.filename().string() + " (" +
+                            error.message() + "); choose another -o path");
+}
+
 void writeFile(const std::filesystem::path& path, const std::string& content) {
+  createParentFolder(path);
   std::ofstream out(path, std::ios::binary);
   if (!out) throw an::AnalysisError(path.string() + ": cannot open for writing");
   out << content;
@@ -51,7 +64,7 @@ void writeReport(const an::Report& report, const std::string& output, const std:
     const an::MarkdownDocument doc = an::renderMarkdown(report, md.stem().string());
     writeFile(md, doc.text);
     for (const auto& figure : doc.figures) writeFile(md.parent_path() / figure.fileName, figure.svg);
-    std::cout << "wrote " << markdown << " and " << doc.figures.size() << " SVG figures\n";
+    std::cout << "wrote " << markdown << " and " << doc.figures.size() << " figure files\n";
   }
 }
 
@@ -72,6 +85,7 @@ void runDatabase(const ReportOptions& o) {
   if (analyses.empty()) throw an::AnalysisError(o.file + ": the experiment plans no [[analysis]]");
   for (std::size_t i = 0; i < analyses.size(); ++i) {
     an::Report report = analyses[i].report;
+    study::appendStudyRecord(report, store, stored);
     if (!o.title.empty()) report.title = analyses.size() == 1 ? o.title : o.title + " - " + report.title;
     writeReport(report, numbered(o.output, i), numbered(o.markdown, i));
   }

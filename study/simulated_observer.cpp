@@ -95,6 +95,27 @@ std::string trueAnswer(const tasks::Question& q, render::SeededRandom& random) {
 
 }  // namespace
 
+std::string describeSimulatedObserver(const ObserverParams& p) {
+  const auto g = [](double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%g", v);
+    return std::string(buf);
+  };
+  return "A simulated observer does not look at the picture as a person does. For each question it "
+         "measures the local RMS luminance contrast c in a 9x9-pixel window at the question's marked probe "
+         "points of the rendered stimulus, takes the visibility v = min(1, c / " + g(p.contrastReference) +
+         ") (layer-index questions: times 1 - " + g(p.layerPenalty) + " per layer behind the first), and "
+         "knows the answer with probability 1 / (1 + exp(-" + g(p.sensitivity) + " (s v - " + g(p.threshold) +
+         "))), where s is the participant's skill (log-normal, sd of log " + g(p.skillSpread) +
+         "). An observer who knows answers the ground truth; otherwise, and in a share " + g(p.lapse) +
+         " of questions (lapses), it guesses uniformly among the possible answers; in a share " +
+         g(p.giveUpShare) + " it gives no answer. Its response time is (" + g(p.baseSeconds) + " + " +
+         g(p.slowSeconds) + " (1 - v)) / sqrt(s) seconds times a log-normal factor (sd " + g(p.rtSigma) +
+         "). Differences between conditions therefore follow from this contrast heuristic at the probes, "
+         "not from perceiving shape; the parameters are the experiment file's [observer] table "
+         "(tlab simulate --calibrate fits them to published results).";
+}
+
 SimulatedObserver::SimulatedObserver(ObserverParams params, std::uint64_t experimentSeed, const std::string& participant,
                                      double paceSeconds)
     : params_(params), seed_(mixSeed(experimentSeed, "observer:" + participant)), paceSeconds_(paceSeconds) {

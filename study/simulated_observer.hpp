@@ -33,6 +33,10 @@ struct ObserverDecision {
   std::string typed;                  // what the observer would answer given time (the autopilot types it)
 };
 
+// What a simulated observer does, in words and with these parameters' values: the text the
+// report of simulated data, `tlab simulate --help` and the README give.
+std::string describeSimulatedObserver(const ObserverParams& params);
+
 class SimulatedObserver final : public Responder {
  public:
   SimulatedObserver(ObserverParams params, std::uint64_t experimentSeed, const std::string& participant,

@@ -58,6 +58,10 @@ class SqliteStore : public Store {
   void recordDisplay(std::int64_t session, const std::string& displayJson) override;
   DataTable exportTable(ExportTable table, const Experiment& experiment) override;  // study/sqlite_store_tables.cpp
   std::vector<AnalysisRecord> analysisRecords(const std::string& experimentId, const std::string& dependentVariable) override;
+  std::vector<std::map<std::string, int>> sessionModes(const std::string& experimentId) override;
+  std::vector<StoredAnswer> formAnswers(const std::string& experimentId) override;
+  DataTable stimulusSummary(const std::string& experimentId) override;
+  DataTable stimulusExamples(const std::string& experimentId) override;
 
  private:
   int requireStudyDatabase();  // the schema version

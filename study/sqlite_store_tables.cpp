@@ -169,4 +169,55 @@ std::vector<AnalysisRecord> SqliteStore::analysisRecords(const std::string& expe
   return out;
 }
 
+std::vector<std::map<std::string, int>> SqliteStore::sessionModes(const std::string& experimentId) {
+  Statement s = db_->prepare("SELECT s.participant, s.mode, count(*) FROM sessions s JOIN participants p ON p.id = s.participant "
+                             "WHERE p.experiment " + std::string(kOfExperiment) + " GROUP BY s.participant, s.mode ORDER BY s.participant");
+  s.bind(1, experimentId);
+  std::vector<std::map<std::string, int>> out;
+  std::int64_t last = -1;
+  while (s.step()) {
+    if (s.integer(0) != last) out.emplace_back(), last = s.integer(0);
+    out.back()[s.text(1)] = int(s.integer(2));
+  }
+  return out;
+}
+
+std::vector<StoredAnswer> SqliteStore::formAnswers(const std::string& experimentId) {
+  Statement s = db_->prepare(
+      "SELECT p.participant, a.questionnaire, a.item, a.answer, a.value, a.id FROM questionnaire_answers a "
+      "JOIN participants p ON p.id = a.participant WHERE p.experiment " + std::string(kOfExperiment) + " AND p.status != 'dropped' "
+      "UNION ALL SELECT p.participant, 'info', i.field, i.value, i.number, i.id FROM participant_info i "
+      "JOIN participants p ON p.id = i.participant WHERE p.experiment " + std::string(kOfExperiment) + " AND p.status != 'dropped' "
+      "ORDER BY 2, 6");
+  s.bind(1, experimentId);
+  std::vector<StoredAnswer> out;
+  while (s.step()) out.push_back({s.text(0), s.text(1), s.text(2), s.text(3), s.optionalReal(4), std::size_t(s.integer(5))});
+  return out;
+}
+
+DataTable SqliteStore::stimulusSummary(const std::string& experimentId) {
+  DataTable t;
+  t.header = {"condition", "task", "phase", "stimulus", "file", "sha256", "trials", "participants"};
+  Statement s = db_->prepare(
+      "SELECT t.condition, t.task_id, t.phase, t.stimulus_key, t.stimulus_path, t.stimulus_sha256, COUNT(*), "
+      "COUNT(DISTINCT t.participant) FROM trials t JOIN participants p ON p.id = t.participant "
+      "WHERE p.experiment " + std::string(kOfExperiment) + " GROUP BY t.stimulus_sha256, t.stimulus_key, t.phase, t.condition, t.task_id "
+      "ORDER BY t.phase DESC, t.condition, t.task_id, t.stimulus_key");
+  s.bind(1, experimentId);
+  while (s.step()) t.rows.push_back({s.text(0), s.text(1), s.text(2), s.text(3), s.text(4), s.text(5), cell(s, 6), cell(s, 7)});
+  return t;
+}
+
+DataTable SqliteStore::stimulusExamples(const std::string& experimentId) {
+  DataTable t;
+  t.header = {"condition", "task", "file"};
+  Statement s = db_->prepare(
+      "SELECT t.condition, t.task_id, t.stimulus_path, MIN(t.id) FROM trials t JOIN participants p ON p.id = t.participant "
+      "WHERE p.experiment " + std::string(kOfExperiment) + " AND t.phase = 'test' GROUP BY t.condition, t.task_id "
+      "ORDER BY t.condition, t.task_id");
+  s.bind(1, experimentId);
+  while (s.step()) t.rows.push_back({s.text(0), s.text(1), s.text(2)});
+  return t;
+}
+
 }  // namespace tlab::study

@@ -123,6 +123,16 @@ struct AnalysisRecord {
   std::size_t sourceRow = 0;  // the trial's id, for messages
 };
 
+// One stored form answer, for report summaries.
+struct StoredAnswer {
+  std::string participant;
+  std::string form;  // questionnaire id, or "info"
+  std::string field;
+  std::string value;
+  std::optional<double> number;
+  std::size_t sourceRow = 0;
+};
+
 class Store {
  public:
   virtual ~Store() = default;
@@ -193,6 +203,14 @@ class Store {
   // Test records of non-dropped participants with a value of `dependentVariable` (correct, score,
   // rt, error, partial_credit, answered), in participant and sequence order.
   virtual std::vector<AnalysisRecord> analysisRecords(const std::string& experimentId, const std::string& dependentVariable) = 0;
+  // Per participant with sessions: how many of their sessions ran in each mode ("simulated", ...).
+  virtual std::vector<std::map<std::string, int>> sessionModes(const std::string& experimentId) = 0;
+  // Questionnaire answers ("info": participant information) of non-dropped participants, in order.
+  virtual std::vector<StoredAnswer> formAnswers(const std::string& experimentId) = 0;
+  // The stimuli shown: condition, task, phase, stimulus key, file, sha256, trials, participants
+  // (test before training); and the file of the first test question of each condition and task.
+  virtual DataTable stimulusSummary(const std::string& experimentId) = 0;
+  virtual DataTable stimulusExamples(const std::string& experimentId) = 0;
 };
 
 // "host:pid" of this process, stored with each session (two stations may share one database).

@@ -1,9 +1,13 @@
 #include "study/study_analysis.hpp"
 
+#include <algorithm>
 #include <map>
 
 #include "analysis/analysis_error.hpp"
+#include "analysis/anova_design.hpp"
 #include "analysis/number_format.hpp"
+#include "analysis/r_moments.hpp"
+#include "study/study_record_tables.hpp"
 
 namespace tlab::study {
 
@@ -14,19 +18,17 @@ namespace {
 std::map<std::string, std::map<std::string, double>> subjectLevelMeans(const analysis::Table& table, const std::string& factor,
                                                                        const std::string& dv) {
   const std::size_t subject = table.columnIndex("participant"), f = table.columnIndex(factor), y = table.columnIndex(dv);
-  std::map<std::string, std::map<std::string, std::pair<double, int>>> sums;
-  for (std::size_t r = 0; r < table.rowCount(); ++r) {
-    auto& cell = sums[table.text(r, subject)][table.text(r, f)];
-    cell.first += table.number(r, y);
-    cell.second += 1;
-  }
+  std::map<std::string, std::map<std::string, std::vector<double>>> values;
+  for (std::size_t r = 0; r < table.rowCount(); ++r) values[table.text(r, subject)][table.text(r, f)].push_back(table.number(r, y));
   std::map<std::string, std::map<std::string, double>> means;
-  for (const auto& [s, levels] : sums)
-    for (const auto& [l, sum] : levels) means[s][l] = sum.first / sum.second;
+  for (const auto& [s, levels] : values)
+    for (const auto& [l, v] : levels) means[s][l] = analysis::rMean(v);
   return means;
 }
 
-void addPairwise(StudyAnalysis& out, const analysis::Table& table, const Experiment& e, const std::string& dv) {
+// Pairwise paired t-tests of column `dv`, listed as `label` (the variable, and its task when split).
+void addPairwise(StudyAnalysis& out, const analysis::Table& table, const Experiment& e, const std::string& dv,
+                 const std::string& label) {
   for (const auto& name : out.spec.within) {
     const Factor* factor = e.factor(name);
     if (!factor || factor->levels.size() <= 2) continue;
@@ -41,13 +43,80 @@ void addPairwise(StudyAnalysis& out, const analysis::Table& table, const Experim
           y.push_back(lb->second);
         }
         try {
-          out.pairwise.push_back({dv, name, factor->levels[a].name, factor->levels[b].name,
+          out.pairwise.push_back({label, name, factor->levels[a].name, factor->levels[b].name,
                                   analysis::pairedTTest(x, y, analysis::Alternative::TwoSided, 1.0 - out.spec.alpha)});
         } catch (const analysis::AnalysisError& error) {
-          out.errors.push_back(dv + ": " + name + " " + factor->levels[a].name + " vs " + factor->levels[b].name + ": " + error.what());
+          out.errors.push_back(label + ": " + name + " " + factor->levels[a].name + " vs " + factor->levels[b].name + ": " + error.what());
         }
       }
   }
+}
+
+struct TaskTable {
+  std::string label;  // "correct", or "correct [task layer-index]"
+  analysis::Table table;
+};
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string out;
+  for (const auto& i : items) out += (out.empty() ? "" : ", ") + i;
+  return out;
+}
+
+// The tables one dependent variable is analysed in. Different tasks ask different questions, so
+// by default each task is analysed alone; when a task's data cannot be analysed alone (e.g. each
+// participant meets each method in a different task, as in Carnecky's design), or the analysis
+// names its tasks (tasks = [...]), the tasks are pooled and a note says so.
+std::vector<TaskTable> tablesByTask(const analysis::Table& table, const AnalysisSpec& spec, const std::string& dv,
+                                    std::vector<std::string>& notes) {
+  std::vector<std::string> tasks;
+  for (const auto& t : table.textColumn("task"))
+    if (std::find(tasks.begin(), tasks.end(), t) == tasks.end()) tasks.push_back(t);
+  if (tasks.size() <= 1) return {{dv, table}};
+  if (!spec.tasks.empty()) {
+    notes.push_back(dv + ": pooled over the tasks " + joined(tasks) + ", as the analysis's tasks = [...] asks.");
+    return {{dv, table}};
+  }
+  std::vector<TaskTable> split;
+  for (const auto& task : tasks) {
+    analysis::Table subset = table.rowsWhere("task", task);
+    try {
+      analysis::makeAnovaDesign(subset, dv, spec.between, spec.within, "participant");
+    } catch (const analysis::AnalysisError& error) {
+      notes.push_back(dv + ": pooled over the tasks " + joined(tasks) + " because task '" + task +
+                      "' cannot be analysed alone (" + error.what() +
+                      "); name the tasks to analyse with tasks = [...] in [[analysis]].");
+      return {{dv, table}};
+    }
+    split.push_back({dv + " [task " + task + "]", std::move(subset)});
+  }
+  notes.push_back(dv + ": analysed per task (" + joined(tasks) +
+                  "), since tasks ask different questions; tasks = [...] in [[analysis]] pools the tasks it names.");
+  return split;
+}
+
+void addNote(analysis::Report& report, const std::string& note) {
+  if (std::find(report.notes.begin(), report.notes.end(), note) == report.notes.end()) report.notes.push_back(note);
+}
+
+// One dependent variable (per task, see tablesByTask) merged into the analysis's report.
+void addDependentVariable(StudyAnalysis& a, Store& store, const StoredExperiment& stored, const std::string& dv) {
+  std::vector<std::string> notes;
+  for (const TaskTable& part : tablesByTask(analysisTable(store, stored, a.spec, dv), a.spec, dv, notes)) {
+    analysis::Report r = analysis::makeReport(part.table, analysisPlan(a.spec, dv));
+    for (auto& d : r.dependentVariables) d.dv = part.label;
+    if (a.report.dependentVariables.empty()) {
+      a.report.plan = r.plan;
+      a.report.plan.dependentVariables.clear();
+      a.report.design = r.design;
+    }
+    a.report.plan.dependentVariables.push_back(part.label);
+    a.report.dependentVariables.insert(a.report.dependentVariables.end(), r.dependentVariables.begin(), r.dependentVariables.end());
+    for (const auto& note : r.notes) addNote(a.report, note);
+    if (std::find(a.spec.tests.begin(), a.spec.tests.end(), "t-tests") != a.spec.tests.end())
+      addPairwise(a, part.table, stored.experiment, dv, part.label);
+  }
+  for (const auto& note : notes) addNote(a.report, note);
 }
 
 }  // namespace
@@ -77,21 +146,13 @@ std::vector<StudyAnalysis> analyzeStudy(Store& store, const StoredExperiment& st
     a.report.source = store.location();
     for (const auto& dv : spec.dependentVariables) {
       try {
-        const analysis::Table table = analysisTable(store, stored, spec, dv);
-        const analysis::Report r = analysis::makeReport(table, analysisPlan(spec, dv));
-        if (a.report.dependentVariables.empty()) {
-          a.report.plan = r.plan;
-          a.report.design = r.design;
-        } else {
-          a.report.plan.dependentVariables.push_back(dv);
-        }
-        a.report.dependentVariables.insert(a.report.dependentVariables.end(), r.dependentVariables.begin(), r.dependentVariables.end());
-        a.report.notes.insert(a.report.notes.end(), r.notes.begin(), r.notes.end());
-        if (std::find(spec.tests.begin(), spec.tests.end(), "t-tests") != spec.tests.end()) addPairwise(a, table, stored.experiment, dv);
+        addDependentVariable(a, store, stored, dv);
       } catch (const analysis::AnalysisError& error) {
         a.errors.push_back(dv + ": " + error.what());
       }
     }
+    if (const std::string w = simulatedDataWarning(participantModes(store, stored), stored.experiment.observer); !w.empty())
+      a.report.warnings.push_back(w);
     for (const auto& pw : a.pairwise)
       a.report.notes.push_back("Pairwise paired t-test, " + pw.dv + ", " + pw.factor + " " + pw.first + " vs " + pw.second + ": t(" +
                                analysis::formatNumber(pw.test.df) + ") = " + analysis::formatNumber(pw.test.t) + ", p = " +

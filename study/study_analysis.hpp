@@ -3,7 +3,11 @@
 // every dependent variable, analysis::makeReport on the adapter's Table, merged into one Report
 // per analysis, plus pairwise paired t-tests for within factors with more than two levels when
 // t-tests are planned (Carnecky Table 1 compares three methods pairwise). Every planned p-value is
-// listed by name, which is what the power analysis counts.
+// listed by name, which is what the power analysis counts. Each task is analysed on its own
+// ("correct [task layer-index]") unless the analysis names its tasks or a task cannot be analysed
+// alone; then the tasks are pooled and a note says so. The report starts with a warning when the
+// participants were simulated; `tlab report` appends the questionnaire answers and the stimuli
+// shown (study_record_tables.hpp).
 #include <string>
 #include <vector>
 

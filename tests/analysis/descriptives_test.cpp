@@ -3,7 +3,7 @@
 #include "analysis/descriptives.hpp"
 
 #include "analysis/outliers.hpp"
-#include "analysis/stable_sum.hpp"
+#include "analysis/r_moments.hpp"
 #include "tests/analysis/test_support.hpp"
 
 namespace tlab::analysis {
@@ -31,7 +31,8 @@ TEST(Descriptives, SleepGroupOne) {
 
 TEST(Descriptives, OffsetByOneBillionKeepsTheSpread) {
   // Values 1e9 + 0.001·k; exact variance of these doubles (offset_reference.py):
-  // 1.650005197717518967692740261554718017578125e-5. The one-pass formula Σx² - (Σx)²/n would
+  // 1.650005197717518967692740261554718017578125e-5; R: var(x) = 1.650005197717519e-05,
+  // mean(x) - 1e9 = 4.999995231628418e-03. The one-pass formula Σx² - (Σx)²/n would
   // lose every digit here (Σx² ≈ 5e18, ulp 1024).
   std::vector<double> x;
   for (const int k : {1, 2, 4, 7, 11}) x.push_back(1e9 + 0.001 * k);
@@ -48,13 +49,6 @@ TEST(Descriptives, NTwoAndTooFew) {
   EXPECT_TRUE(relativelyNear(d.ciHigh - d.mean, 12.7062047361747 * std::sqrt(4.5 / 2), 1e-12));
   const std::vector<double> one = {3.0};
   EXPECT_TRUE(throwsWithMessage([&] { describe(one, "cell group=a"); }, {"cell group=a", "n = 1", "at least 2"}));
-}
-
-TEST(StableSum, CompensatedSummationBeatsNaive) {
-  // 1 + 1e-16 added 10^6 times: naive summation stays at 1, the exact sum is 1 + 1e-10.
-  std::vector<double> xs(1000001, 1e-16);
-  xs[0] = 1.0;
-  EXPECT_TRUE(relativelyNear(stableSum(xs), 1.0 + 1e-10, 1e-15));
 }
 
 TEST(Outliers, TukeyFencesAndZScoreAreReportedSeparately) {
