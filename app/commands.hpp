@@ -27,6 +27,7 @@ void addSimulateCommand(CLI::App& app);  // cmd_simulate.cpp
 void addExportCommand(CLI::App& app);    // cmd_export.cpp
 void addAnalyzeCommand(CLI::App& app);   // cmd_analyze.cpp
 void addDropCommand(CLI::App& app);      // cmd_drop.cpp
+void addTimingCommand(CLI::App& app);    // cmd_timing.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
 void addDemoCommand(CLI::App& app);      // cmd_demo.cpp
 

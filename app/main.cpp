@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   tlab::app::addReproduceCommand(app);
   tlab::app::addStatcheckCommand(app);
   tlab::app::addReportCommand(app);
+  tlab::app::addTimingCommand(app);
   tlab::app::addTaskCommand(app);
   tlab::app::addStimuliCommand(app);
   tlab::app::addDesignCommand(app);

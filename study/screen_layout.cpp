@@ -23,7 +23,10 @@ ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stim
   l.header = {0, 0, width, headerHeight};
   l.answer = {0, height - answerHeight, width, answerHeight};
   const Rect area{margin, headerHeight + margin, width - 2 * margin, height - headerHeight - answerHeight - 2 * margin};
-  const double scale = std::max(0.01, std::min(area.width / double(l.stimulusWidth), area.height / double(l.stimulusHeight)));
+  // Stimuli are shown at their rendered size or a whole multiple of it (never resampled to an
+  // odd scale, which blurs them); only a window too small for the rendered size shrinks them.
+  const double fit = std::max(0.01, std::min(area.width / double(l.stimulusWidth), area.height / double(l.stimulusHeight)));
+  const double scale = fit >= 1.0 ? std::floor(fit) : fit;
   const int w = int(std::floor(l.stimulusWidth * scale)), h = int(std::floor(l.stimulusHeight * scale));
   l.stimulus = {area.x + (area.width - w) / 2, area.y + (area.height - h) / 2, w, h};
   return l;

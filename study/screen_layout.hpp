@@ -1,6 +1,6 @@
 #pragma once
 // ScreenLayout: where things go on a participant's screen of a given size — the header (question
-// and countdown), the stimulus fitted into the middle keeping its aspect, the answer band at the
+// and countdown), the stimulus in the middle at its rendered size or a whole multiple of it, the answer band at the
 // bottom with its buttons (letters, Likert points) — and the mapping between stimulus pixels and
 // screen pixels used to draw the marks and to hit-test clicks on labels. Pure geometry.
 #include <optional>

@@ -12,6 +12,7 @@
 #include "analysis/likert_summary.hpp"
 #include "analysis/number_format.hpp"
 #include "study/simulated_observer.hpp"
+#include "study/timing_tables.hpp"
 
 namespace tlab::study {
 
@@ -144,6 +145,7 @@ std::vector<analysis::ReportImage> stimulusImages(Store& store, const StoredExpe
 void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored) {
   for (auto& table : questionnaireTables(store, stored)) report.appendices.push_back(std::move(table));
   report.appendices.push_back(stimulusTable(store, stored));
+  report.appendices.push_back(sessionTimingTable(store, stored));
   for (auto& image : stimulusImages(store, stored)) report.images.push_back(std::move(image));
 }
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "study/experiment_file.hpp"
+#include "study/form_field.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace tlab::study;
@@ -108,4 +109,55 @@ task = "layer-index"
                     "task = \"counting\"\n")
                 .find("\"by-position\" needs one task per block: 1 blocks but 2 tasks"),
             std::string::npos);
+}
+
+TEST(ExperimentFile, SessionFlowKeysAreCheckedWithFileLineAndField) {
+  EXPECT_EQ(errorOf(kBase + "[[info]]\nid = \"age\"\ntext = \"Age\"\nkind = \"colour\"\n"),
+            "bad.toml:12: info[1].kind: expected likert, choice, number or text, got 'colour'");
+  EXPECT_EQ(errorOf(kBase + "[[info]]\nid = \"hand\"\ntext = \"Hand\"\nkind = \"choice\"\noptions = [\"left\"]\n"),
+            "bad.toml:13: info[1].options: a choice needs at least two options");
+  EXPECT_EQ(errorOf(kBase + "[breaks]\nevery = 2\nunit = \"minutes\"\n"),
+            "bad.toml:11: breaks.unit: expected \"trials\" or \"blocks\", got 'minutes'");
+  EXPECT_EQ(errorOf(kBase + "[breaks]\nevery = 0\n"), "bad.toml:10: breaks.every: must be >= 1");
+  EXPECT_EQ(errorOf(kBase + "[consent]\naccept = \"yes\"\n"), "bad.toml:9: consent.text: missing (a string is required)");
+  EXPECT_EQ(errorOf(kBase + "[training]\nfeedback = \"yes\"\n"), "bad.toml:10: training.feedback: must be true or false");
+  EXPECT_EQ(errorOf(kBase + "[[questionnaires]]\nid = \"q\"\nitems = [{ id = \"n\", text = \"N\", kind = \"number\", min = 5, max = 1 }]\n"),
+            "bad.toml:11: questionnaires[1].items[1].min: must not exceed max");
+  const Experiment flow = readExperimentFile(tlab::testing::studyData("flow.toml"));
+  EXPECT_EQ(flow.participantTitle, "A study of transparent shapes");
+  ASSERT_TRUE(flow.consent.has_value());
+  ASSERT_EQ(flow.info.size(), 4u);  // standard_info (age, gender, vision) and handedness
+  EXPECT_EQ(flow.info[3].options.size(), 3u);
+  EXPECT_TRUE(flow.trainingFeedback);
+  EXPECT_EQ(flow.breaks.every, 2);
+  EXPECT_EQ(flow.debrief.completionCode, "C0DE42");
+  ASSERT_EQ(flow.questionnaires.at(0).items.size(), 4u);
+  EXPECT_EQ(flow.questionnaires[0].items[1].kind, FieldKind::Choice);
+  EXPECT_EQ(flow.questionnaires[0].items[0].points, 5);
+}
+
+TEST(FormField, AnswersAreCheckedByKind) {
+  FormField likert{"ease", "Easy?", FieldKind::Likert};
+  likert.points = 5;
+  EXPECT_EQ(fieldError(likert, "5"), "");
+  EXPECT_NE(fieldError(likert, "6"), "");
+  EXPECT_NE(fieldError(likert, ""), "");
+  FormField age{"age", "Age", FieldKind::Number};
+  age.minimum = 16;
+  age.maximum = 120;
+  age.integer = true;
+  EXPECT_EQ(fieldError(age, "34"), "");
+  EXPECT_EQ(fieldError(age, "34.5"), "a whole number is required");
+  EXPECT_EQ(fieldError(age, "12"), "a number from 16 to 120 is required");
+  EXPECT_EQ(fieldError(age, "abc"), "'abc' is not a number");
+  EXPECT_EQ(fieldNumber(age, "34").value_or(-1), 34.0);
+  FormField choice{"hand", "Hand", FieldKind::Choice};
+  choice.options = {"left", "right"};
+  EXPECT_EQ(fieldError(choice, "right"), "");
+  EXPECT_EQ(fieldNumber(choice, "right").value_or(-1), 2.0);
+  EXPECT_NE(fieldError(choice, "both"), "");
+  FormField text{"notes", "Notes", FieldKind::Text};
+  text.required = false;
+  EXPECT_EQ(fieldError(text, ""), "");
+  EXPECT_FALSE(fieldNumber(text, "anything").has_value());
 }

@@ -43,5 +43,9 @@ TEST(ScreenLayout, StimulusFitsAndPlanSitsBesideIt) {
   EXPECT_EQ(p.plan->width, p.stimulus.width);
   EXPECT_GT(p.plan->x, p.stimulus.x + p.stimulus.width);
   EXPECT_EQ(hitPoint({{10, 10}, {30, 10}}, {27, 12}), 1);
+  // Shown at the rendered size or a whole multiple (here 1x; 2x in a large window), never resampled by a fraction.
+  EXPECT_EQ(l.stimulus.width, 160);
+  EXPECT_EQ(makeScreenLayout(1024, 900, 160, 160).stimulus.width, 4 * 160);
+  EXPECT_EQ(makeScreenLayout(1024, 768, 240, 240).stimulus.width, 2 * 240);
   EXPECT_EQ(hitPoint({{10, 10}}, {60, 60}), -1);
 }
