@@ -53,9 +53,54 @@ float continuity(uint i, uint j, ivec2 d) {
 
 const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
 
+// ε ≥ wz·εz because εn = 1 − n_i·n_j ≥ 0 (up to rounding: kEpsNSlack covers a dot product of two
+// unit normals a few ulps above 1). So once wz·|Δz|/r_obj passes the best ε found, no fragment
+// further away in depth can match better: lists are sorted by depth, and the searches below walk
+// outwards from the predicted depth and stop there. Same result as comparing all pairs (ties go to
+// the lower index, as in a front-to-back scan), in O(log n + matches) instead of O(n) per query.
+const float kEpsNSlack = 1e-4;
+bool beyond(float depthGap, float bestEps) {
+  return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps * (1.0 + 1e-5);
+}
+
+// First index in [head, head + count) whose depth is ≥ z (binary search over the sorted list).
+uint lowerBound(uint head, uint count, float z) {
+  uint lo = 0u, hi = count;
+  while (lo < hi) {
+    uint mid = (lo + hi) >> 1;
+    if (depthOf(head + mid) < z) lo = mid + 1u;
+    else hi = mid;
+  }
+  return lo;
+}
+
+// Keeps j when it matches a better than the best so far (lower index on a tie).
+void consider(uint a, uint j, ivec2 d, inout uint best, inout float bestEps) {
+  float e = continuity(a, j, d);
+  if (e < bestEps || (e == bestEps && e < 1.0 / 0.0 && j < best)) {
+    bestEps = e;
+    best = j;
+  }
+}
+
+// The best candidate for a among pixel q's list (Alg. 2's first half).
+uint bestCandidate(uint a, uint headB, uint countB, ivec2 d, out float bestEps) {
+  uint best = NO_NEIGHBOR;
+  bestEps = 1.0 / 0.0;
+  float predicted = depthOf(a) + dot(vec2(d), gradientOf(a));
+  uint start = lowerBound(headB, countB, predicted);
+  for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k) consider(a, headB + k, d, best, bestEps);
+  for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k) consider(a, headB + k - 1u, d, best, bestEps);
+  return best;
+}
+
 // Alg. 2: the best candidate for fragment a among the list of pixel q, unless some other fragment
-// of a's own list is an even better match for that candidate (the relation must be mutual).
-uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec2 d) {
+// of a's own list is an even better match for that candidate (the relation must be mutual). The
+// other fragments predict with their own gradients, so their window in depth is widened by
+// maxStep = max |d·∇z| over a's list.
+uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec2 d, float maxStep) {
+#ifdef TLAB_ALL_PAIRS
+  // The reference: every pair, as Alg. 2 is written (tests check the search above against it).
   uint best = NO_NEIGHBOR;
   float bestEps = 1.0 / 0.0;
   for (uint k = 0u; k < countB; ++k) {
@@ -66,12 +111,24 @@ uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec
     }
   }
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
-  for (uint k = 0u; k < countA; ++k) {
-    uint a2 = headA + k;
-    if (a2 != a && continuity(a2, best, d) < bestEps) return NO_NEIGHBOR;
-  }
+  for (uint k = 0u; k < countA; ++k)
+    if (headA + k != a && continuity(headA + k, best, d) < bestEps) return NO_NEIGHBOR;
   return best;
+#else
+  float bestEps;
+  uint best = bestCandidate(a, headB, countB, d, bestEps);
+  if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
+  float zb = depthOf(best);
+  uint start = lowerBound(headA, countA, zb);
+  for (uint k = start; k < countA && !beyond(depthOf(headA + k) - zb - maxStep, bestEps); ++k)
+    if (headA + k != a && continuity(headA + k, best, d) < bestEps) return NO_NEIGHBOR;
+  for (uint k = start; k > 0u && !beyond(zb - depthOf(headA + k - 1u) - maxStep, bestEps); --k)
+    if (headA + k - 1u != a && continuity(headA + k - 1u, best, d) < bestEps) return NO_NEIGHBOR;
+  return best;
+#endif
 }
+
+bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < uWidth && q.y < uHeight; }
 
 void main() {
   uint pixel = linearInvocation();
@@ -81,15 +138,20 @@ void main() {
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
 #if TLAB_PHASE == 1
+  vec4 maxStep = vec4(0.0);  // max |d·∇z| over this list, per direction
+  for (uint layer = 0u; layer < n; ++layer) {
+    vec2 g = abs(gradientOf(head + layer));
+    maxStep = max(maxStep, vec4(g.x, g.x, g.y, g.y));
+  }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     uint link[4];
     for (int k = 0; k < 4; ++k) {
       ivec2 q = xy + kDirections[k];
       link[k] = NO_NEIGHBOR;
-      if (q.x < 0 || q.y < 0 || q.x >= uWidth || q.y >= uHeight) continue;
+      if (!inside(q)) continue;
       uint qp = uint(q.y * uWidth + q.x);
-      link[k] = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k]);
+      link[k] = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k], maxStep[k]);
     }
     links[f] = uvec4(link[0], link[1], link[2], link[3]);
   }
@@ -98,10 +160,11 @@ void main() {
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     uvec4 link = links[f];
-    uint found = 0u;
+    uint found = 0u, outside = 0u;
     bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {
       uint j = link[k];
+      if (!inside(xy + kDirections[k])) ++outside;
       if (j == NO_NEIGHBOR) continue;
       // Directions come in pairs (0,1), (2,3): k ^ 1 is the way back.
       if (links[j][k ^ 1] != f) {
@@ -118,7 +181,9 @@ void main() {
     // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
     float b = 0.0, g = 0.0;
     uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;
-    if (found < 4u) { b = 1.0; free &= ~FREE_BETA; }          // boundary or silhouette (red)
+    // A neighbour beyond the image edge is unknown, not missing: the frame cuts the surface, it
+    // is no silhouette (issue #20: zoomed-in views drew the frame as one).
+    if (found + outside < 4u) { b = 1.0; free &= ~FREE_BETA; }  // boundary or silhouette (red)
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
     if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
     alpha[f] = alphaInit;

@@ -15,6 +15,12 @@ void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda
   gpu::dispatchLinear(fragments);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
+
+std::string fixed(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
 }  // namespace
 
 DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings)
@@ -26,17 +32,26 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
 const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const {
   gpu::ShaderDefines d;
   if (jacobi) d.emplace_back("TLAB_JACOBI", "1");
+  if (!settings_.diffusesAlpha()) d.emplace_back("TLAB_SKIP_ALPHA", "1");
   if (fused) {
     d.emplace_back("TLAB_FUSED_SPREAD", "1");
     for (const auto& f : fields.defines()) d.push_back(f);
   }
   const auto& program = shaders_.compute("ops/diffuse_alpha.comp", d);
+  program.use();
+  glUniform1i(program.uniform("uNormalized"), settings_.normalizedLaplacian ? 1 : 0);
   if (fused) {
-    program.use();
     glUniform1f(program.uniform("uLambdaBeta"), static_cast<float>(settings_.lambdaBeta));
     glUniform1f(program.uniform("uLambdaGamma"), static_cast<float>(settings_.lambdaGamma));
   }
   return program;
+}
+
+int DiffusionSolver::alphaDispatches() const {
+  if (!settings_.diffusesAlpha()) return 0;
+  if (settings_.scheme == DiffusionScheme::Implicit) return settings_.jacobiSweeps;
+  if (settings_.scheme == DiffusionScheme::Explicit) return 1;
+  return substepsFor(settings_.lambdaAlpha, settings_.explicitBound());
 }
 
 void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const {
@@ -48,6 +63,13 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
     if (fields.hasBeta()) fields.swap(Field::Beta);
     if (fields.hasGamma()) fields.swap(Field::Gamma);
   };
+  if (!settings_.diffusesAlpha()) {  // α uniform: the spreading alone, in one dispatch
+    if (!fusedSpread) return;
+    fields.bindCurrent();
+    run(alphaProgram(false, true, fields), n, lambda);
+    afterFirst(true);
+    return;
+  }
   if (settings_.scheme == DiffusionScheme::Implicit) {
     // Backward Euler (I + λL)α' = α: keep α in the scratch buffer, Jacobi sweeps from α.
     glCopyNamedBufferSubData(fields.current(Field::Alpha).id(), fields.scratch().id(), 0, 0,
@@ -61,8 +83,8 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
     }
     return;
   }
-  // Explicit (λ ≤ 1/4) or sub-stepped: m steps of λ/m cover the same diffusion time λ.
-  const int m = settings_.scheme == DiffusionScheme::Explicit ? 1 : substepsFor(lambda);
+  // Explicit (λ within the bound) or sub-stepped: m steps of λ/m cover the same diffusion time λ.
+  const int m = alphaDispatches();
   for (int k = 0; k < m; ++k) {
     fields.bindCurrent();
     run(alphaProgram(false, fusedSpread && k == 0, fields), n, lambda / m);
@@ -73,7 +95,7 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
 
 void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const {
   const std::size_t n = fields.fragments();
-  const int m = settings_.spreadByMax ? 1 : substepsFor(lambda);
+  const int m = settings_.spreadByMax ? 1 : substepsFor(lambda, kExplicitStableLambdaSum);
   for (int k = 0; k < m; ++k) {
     fields.bindPair(field, kFieldIn, kFieldOut);
     const auto& program = settings_.spreadByMax ? *spreadMax_ : *spreadDiffusion_;
@@ -101,12 +123,33 @@ void DiffusionSolver::solve(TransparencyFields& fields) const {
 }
 
 int DiffusionSolver::dispatchesPerStep() const {
-  const int alpha = settings_.scheme == DiffusionScheme::Implicit ? settings_.jacobiSweeps
-                    : settings_.scheme == DiffusionScheme::Explicit ? 1
-                                                                    : substepsFor(settings_.lambdaAlpha);
-  if (settings_.spreadByMax) return alpha;  // fused into the first α dispatch
-  return alpha + (settings_.silhouettes ? substepsFor(settings_.lambdaBeta) : 0) +
-         (settings_.halos ? substepsFor(settings_.lambdaGamma) : 0);
+  const int alpha = alphaDispatches();
+  if (settings_.spreadByMax) return alpha > 0 ? alpha : (settings_.silhouettes || settings_.halos ? 1 : 0);
+  return alpha + (settings_.silhouettes ? substepsFor(settings_.lambdaBeta, kExplicitStableLambdaSum) : 0) +
+         (settings_.halos ? substepsFor(settings_.lambdaGamma, kExplicitStableLambdaSum) : 0);
+}
+
+std::vector<std::string> DiffusionSolver::operations() const {
+  std::vector<std::string> ops;
+  const std::string n = std::to_string(settings_.iterations) + " steps";
+  if (!settings_.diffusesAlpha()) {
+    ops.push_back("alpha diffusion skipped (" + std::string(settings_.iterations > 0 && settings_.lambdaAlpha > 0
+                                                                  ? "initial alpha uniform: alpha_init=constant"
+                                                                  : "no diffusion time") + ")");
+  } else {
+    const char* scheme = settings_.scheme == DiffusionScheme::Implicit ? "implicit"
+                         : settings_.scheme == DiffusionScheme::Explicit ? "explicit"
+                                                                         : "substep";
+    ops.push_back("alpha diffusion (Eq. 8, " + std::string(settings_.normalizedLaplacian ? "normalized" : "sum") +
+                  " Laplacian, " + scheme + ", lambda " + fixed(settings_.lambdaAlpha) + ", " + n + ", " +
+                  std::to_string(alphaDispatches()) + " dispatch(es) per step)");
+  }
+  const std::string how = settings_.spreadByMax ? "Eq. 9 max" : "Eq. 8 diffusion";
+  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + n + ")");
+  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + n + ")");
+  if (!settings_.halos) ops.push_back("gamma skipped (halos=off)");
+  if (!settings_.silhouettes) ops.push_back("beta skipped (silhouettes=off)");
+  return ops;
 }
 
 }  // namespace tlab::render

@@ -1,7 +1,12 @@
 #pragma once
 // The solve pass (Carnecky Sec. 5.4): n steps of α diffusion (Eq. 8; explicit, sub-stepped or
 // implicit — see ops/diffuse_alpha.comp for the stability bound) and β/γ spreading (Eq. 9 or
-// Eq. 8), each step a ping-pong compute pass over all fragments.
+// Eq. 8), each step a ping-pong compute pass over all fragments. What a scene does not need is
+// left out: no α diffusion when α starts uniform (Eq. 4), no γ with halos off, no β without
+// silhouettes.
+#include <string>
+#include <vector>
+
 #include "renderer/gpu/shader_cache.hpp"
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
@@ -16,10 +21,15 @@ class DiffusionSolver {
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
+  // What the solve does and leaves out (for --stats-json): one line per field.
+  std::vector<std::string> operations() const;
+  // Whether a solve has anything to do (α to diffuse or β/γ to spread).
+  bool hasWork() const { return settings_.iterations > 0 && dispatchesPerStep() > 0; }
 
  private:
   // α diffusion for one step; with `fusedSpread` the first dispatch also spreads β and γ.
   void diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const;
+  int alphaDispatches() const;  // per step; 0 when α cannot change
   const gpu::ShaderProgram& alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
 

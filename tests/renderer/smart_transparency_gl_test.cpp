@@ -243,30 +243,79 @@ TEST_P(AdaptiveAlpha, AccumulatesExactlyS) {
 INSTANTIATE_TEST_SUITE_P(Layers, AdaptiveAlpha, ::testing::Values(1, 2, 3, 7, 16, 64));
 
 // Eq. 9 spreads β from the boundary so that 1 − β = λβ·d at graph distance d (until it reaches 0).
+// The front quad's only boundary is its edge at column 31: the image edges (rows 0 and 15, column
+// 0) cut the surface and start nothing (issue #20: they used to be drawn as silhouettes).
 TEST(FieldSpreading, MaxPropagationIsLinearInDistance) {
-  const int w = 40, h = 40, n = 12;
-  SmartRig rig(loadScene("builtin:quad-stack?n=1"), w, h,
-               {{"iterations", std::to_string(n)}, {"lambda_beta", "0.05"}, {"halos", "off"}});
+  const int w = 64, h = 16, n = 12;
+  SmartRig rig(occluderScene(), w, h, {{"iterations", std::to_string(n)}, {"lambda_beta", "0.05"}, {"halos", "off"}});
   DiffusionSolver(rig.shaders, rig.smart).solve(*rig.fields);
   const auto beta = rig.fields->read(Field::Beta);
   for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int d = std::min({x, y, w - 1 - x, h - 1 - y});
+    for (int x = 0; x < 32; ++x) {
+      const int d = 31 - x;
       const float expected = d <= n ? 1.0f - 0.05f * d : 0.0f;
       ASSERT_NEAR(beta[rig.fragment(x, y, 0)], expected, 1e-5) << x << "," << y;
     }
 }
 
+// A surface cut by the image edge: the missing neighbour beyond the edge is unknown, not "no
+// surface" — no β = 1 frame, and the border fragments stay free (Carnecky Sec. 5.3 on what
+// the image shows; issue #20 item 1).
+TEST(BoundaryConditions, ImageEdgeStartsNoSilhouette) {
+  SmartRig rig(loadScene("builtin:quad-stack?n=1"), 40, 30, {{"iterations", "0"}});
+  const auto beta = rig.fields->read(Field::Beta), gamma = rig.fields->read(Field::Gamma);
+  const auto flags = rig.fields->readFlags();
+  for (int y = 0; y < 30; ++y)
+    for (int x = 0; x < 40; ++x) {
+      const auto f = rig.fragment(x, y, 0);
+      ASSERT_EQ(beta[f], 0.0f) << x << "," << y;
+      ASSERT_EQ(gamma[f], 0.0f) << x << "," << y;
+      ASSERT_EQ(flags[f], 7u) << x << "," << y;
+    }
+}
+
+// The picture of the issue: a sphere filling a zoomed-in view. The outer 3 pixels used to be 61
+// grey levels darker than the band just inside; now the frame shows the surface as it continues.
+TEST(SmartTransparency, ZoomedInViewHasNoDarkFrame) {
+  Scene sphere = loadScene("builtin:sphere");
+  sphere.camera = Camera{};
+  sphere.camera->eye = {0, 0, 2.2f};
+  sphere.camera->fovyDegrees = 40;
+  Renderer renderer(sphere);
+  RenderRequest r;
+  r.width = r.height = 128;
+  r.style = "smart";
+  const Image img = renderer.render(r);
+  // Mean grey over the pixels at distance [from, to) from the edge, along the middle half of each
+  // side (the corners see the sphere's real silhouette).
+  const auto band = [&](int from, int to) {
+    double sum = 0;
+    int count = 0;
+    for (int y = 0; y < img.height; ++y)
+      for (int x = 0; x < img.width; ++x) {
+        const int d = std::min({x, y, img.width - 1 - x, img.height - 1 - y});
+        const bool middle = std::abs(2 * x - img.width) < img.width / 2 || std::abs(2 * y - img.height) < img.height / 2;
+        if (d < from || d >= to || !middle) continue;
+        const auto& p = img.pixels[std::size_t(y) * img.width + x];
+        sum += (p[0] + p[1] + p[2]) / 3.0 * 255.0;
+        ++count;
+      }
+    return sum / count;
+  };
+  EXPECT_NEAR(band(0, 3), band(3, 6), 3.0);
+}
+
 // Stability of α diffusion for any λα and iteration count: fields stay in [0, 1], no NaN, and the
 // discrete energy Σ (α_i − α_j)² over the links never increases.
-class DiffusionStability : public ::testing::TestWithParam<std::tuple<double, std::string>> {};
+class DiffusionStability : public ::testing::TestWithParam<std::tuple<double, std::string, std::string>> {};
 TEST_P(DiffusionStability, FieldsStayBoundedAndEnergyDecays) {
-  const auto [lambda, solver] = GetParam();
+  const auto [lambda, solver, laplacian] = GetParam();
   SmartRig rig(loadScene("builtin:open-cylinders?segments=48&rings=4"), 40, 40,
-               {{"lambda_alpha", std::to_string(lambda)}, {"solver", solver}, {"alpha_init", "adaptive"}, {"s", "0.7"}});
+               {{"lambda_alpha", std::to_string(lambda)}, {"solver", solver}, {"alpha_init", "adaptive"}, {"s", "0.7"},
+                {"laplacian", laplacian}});
   const DiffusionSolver solver_(rig.shaders, rig.smart);
-  // Forced sub-stepping at λα = 1000 costs 4000 passes per step (solver=auto goes implicit there):
-  // 20 steps of it are enough to check it.
+  // Forced sub-stepping at λα = 1000 costs 1000-4000 passes per step (solver=auto goes implicit
+  // there): 20 steps of it are enough to check it.
   const int steps = solver == "substep" && lambda > 10 ? 20 : 1000;
   const auto links = rig.fields->readLinks();
   double energy = linkEnergy(rig.fields->read(Field::Alpha), links);
@@ -284,32 +333,79 @@ TEST_P(DiffusionStability, FieldsStayBoundedAndEnergyDecays) {
     }
   }
 }
-// Every scheme at every λα, except explicit above its bound (refused: see the next test).
-std::vector<std::tuple<double, std::string>> stabilityCases() {
-  std::vector<std::tuple<double, std::string>> cases;
-  for (double lambda : {0.0, 0.25, 1.0, 10.0, 1000.0})
-    for (const char* solver : {"auto", "explicit", "substep", "implicit"})
-      if (std::string(solver) != "explicit" || lambda <= kExplicitStableLambda) cases.emplace_back(lambda, solver);
+// Every scheme at every λα for both readings of Eq. 8, except explicit above its bound (refused:
+// see the next test).
+std::vector<std::tuple<double, std::string, std::string>> stabilityCases() {
+  std::vector<std::tuple<double, std::string, std::string>> cases;
+  for (const char* laplacian : {"normalized", "sum"}) {
+    const double bound = std::string(laplacian) == "sum" ? kExplicitStableLambdaSum : kExplicitStableLambdaNormalized;
+    for (double lambda : {0.0, 0.25, 1.0, 10.0, 1000.0})
+      for (const char* solver : {"auto", "explicit", "substep", "implicit"})
+        if (std::string(solver) != "explicit" || lambda <= bound) cases.emplace_back(lambda, solver, laplacian);
+  }
   return cases;
 }
 INSTANTIATE_TEST_SUITE_P(LambdaAndScheme, DiffusionStability, ::testing::ValuesIn(stabilityCases()),
                          [](const auto& info) {
                            const double l = std::get<0>(info.param);
                            return "lambda_" + (l == 0.25 ? std::string("quarter") : std::to_string(int(l))) + "_" +
-                                  std::get<1>(info.param);
+                                  std::get<1>(info.param) + "_" + std::get<2>(info.param);
                          });
 
 TEST(DiffusionStability, ExplicitAboveTheBoundIsRefusedWithTheReason) {
-  try {
-    SmartStyle().resolve({{"solver", "explicit"}, {"lambda_alpha", "1"}});
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("unstable"), std::string::npos) << e.what();
+  for (const auto& [laplacian, lambda] : {std::pair{"normalized", "1.5"}, std::pair{"sum", "1"}}) {
+    try {
+      SmartStyle().resolve({{"solver", "explicit"}, {"lambda_alpha", lambda}, {"laplacian", laplacian}});
+      FAIL() << laplacian;
+    } catch (const std::invalid_argument& e) {
+      EXPECT_NE(std::string(e.what()).find("unstable"), std::string::npos) << e.what();
+    }
   }
-  EXPECT_EQ(automaticScheme(0.25), DiffusionScheme::Explicit);
-  EXPECT_EQ(automaticScheme(1.0), DiffusionScheme::Substep);
-  EXPECT_EQ(automaticScheme(1000.0), DiffusionScheme::Implicit);
-  EXPECT_EQ(substepsFor(1.0), 4);
+  EXPECT_NO_THROW(SmartStyle().resolve({{"solver", "explicit"}, {"lambda_alpha", "1"}}));
+  // The paper's λα = 1 is one explicit pass per step with the normalised reading, 4 with the sum.
+  EXPECT_EQ(automaticScheme(1.0, kExplicitStableLambdaNormalized), DiffusionScheme::Explicit);
+  EXPECT_EQ(automaticScheme(0.25, kExplicitStableLambdaSum), DiffusionScheme::Explicit);
+  EXPECT_EQ(automaticScheme(1.0, kExplicitStableLambdaSum), DiffusionScheme::Substep);
+  EXPECT_EQ(automaticScheme(1000.0, kExplicitStableLambdaNormalized), DiffusionScheme::Implicit);
+  EXPECT_EQ(substepsFor(1.0, kExplicitStableLambdaSum), 4);
+  EXPECT_EQ(substepsFor(1.0, kExplicitStableLambdaNormalized), 1);
+  EXPECT_EQ(substepsFor(3.0, kExplicitStableLambdaNormalized), 3);
+}
+
+// The normalised reading of Eq. 8 at λα = 1 is α' = mean of the neighbours (for free fragments):
+// one explicit step checked on the host from the links.
+TEST(DiffusionStability, NormalizedStepIsTheMeanOfTheNeighbours) {
+  SmartRig rig(loadScene("builtin:open-cylinders?segments=48&rings=4"), 40, 40,
+               {{"alpha_init", "adaptive"}, {"s", "0.7"}, {"iterations", "1"}});
+  const auto before = rig.fields->read(Field::Alpha);
+  const auto links = rig.fields->readLinks();
+  DiffusionSolver(rig.shaders, rig.smart).step(*rig.fields);
+  const auto after = rig.fields->read(Field::Alpha);
+  for (std::size_t i = 0; i < links.size(); ++i) {
+    double sum = 0;
+    int degree = 0;
+    for (int k = 0; k < 4; ++k)
+      if (links[i][k] != kNone) sum += before[links[i][k]], ++degree;
+    const double expected = degree > 0 ? sum / degree : before[i];
+    ASSERT_NEAR(after[i], expected, 1e-6) << "fragment " << i;
+  }
+}
+
+// The bounded search finds the same links, flags and initial fields as comparing all pairs.
+TEST(NeighborLinks, BoundedSearchEqualsAllPairs) {
+  Scene occluder = occluderScene();
+  for (const auto& [scene, size] : {std::pair{loadScene("builtin:open-cylinders"), 64}, std::pair{loadScene("builtin:torus"), 64},
+                                    std::pair{loadScene("builtin:quad-stack?n=16"), 32},
+                                    std::pair{loadScene("builtin:nested-spheres?n=3"), 64}, std::pair{occluder, 48},
+                                    std::pair{loadScene("builtin:sphere?segments=8&rings=4"), 24}}) {
+    SmartRig rig(scene, size, size, {{"alpha_init", "adaptive"}});
+    const auto reference =
+        connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, NeighborSearch::AllPairs);
+    EXPECT_EQ(rig.fields->readLinks(), reference->readLinks()) << scene.name;
+    EXPECT_EQ(rig.fields->readFlags(), reference->readFlags()) << scene.name;
+    EXPECT_EQ(rig.fields->read(Field::Beta), reference->read(Field::Beta)) << scene.name;
+    EXPECT_EQ(rig.fields->read(Field::Gamma), reference->read(Field::Gamma)) << scene.name;
+  }
 }
 
 // Degenerate inputs: an empty image, a pixel with one fragment, a one-pixel-wide strip, more than
@@ -352,6 +448,17 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
   std::vector<std::string> ran;
   for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
   EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "solve", "compose"}));
+  // Initial α uniform (Eq. 4, the default): the solve only spreads β and γ, and says so.
+  EXPECT_EQ(stats.operations, (std::vector<std::string>{
+                                  "connect: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)",
+                                  "connect: beta spreading (Eq. 9 max, 20 steps)", "connect: gamma spreading (Eq. 9 max, 20 steps)"}));
+  // Nothing to solve at all: uniform α, no silhouettes, no halos.
+  r.settings = {{"halos", "off"}, {"silhouettes", "off"}};
+  renderer.render(r, &stats);
+  ran.clear();
+  for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
+  EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "compose"}));
+  r.settings = {};
   // One connected component: no component ids in the records.
   EXPECT_EQ(stats.fragmentProperties, (std::vector<std::string>{"depth", "triangle", "color", "normal", "depth_gradient"}));
   r.settings = {{"iterations", "0"}};
