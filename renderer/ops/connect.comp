@@ -38,17 +38,34 @@ vec2 gradientOf(uint f) {
   return vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
 }
 
-// ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3).
-float continuity(uint i, uint j, ivec2 d) {
+// What ε reads of a fragment, loaded once per fragment rather than once per comparison.
+struct Surfel {
+  float z;
+  vec2 g;      // ∇z per pixel
+  vec3 n;
+  uint comp;   // connected component (0 without ids)
+};
+Surfel surfel(uint f) {
+  Surfel s;
+  s.z = depthOf(f);
+  s.g = gradientOf(f);
+  s.n = normalOf(f);
 #ifdef TLAB_HAS_IDS
-  // Different connected components are never neighbours.
-  if (((sorted[fragWord(i, TLAB_OFF_IDS)] >> 16) & 0x7FFFu) != ((sorted[fragWord(j, TLAB_OFF_IDS)] >> 16) & 0x7FFFu))
-    return 1.0 / 0.0;
+  s.comp = (sorted[fragWord(f, TLAB_OFF_IDS)] >> 16) & 0x7FFFu;
+#else
+  s.comp = 0u;
 #endif
-  float predicted = depthOf(i) + dot(vec2(d), gradientOf(i));
-  float epsZ = abs(predicted - depthOf(j)) / uObjectRadius;  // Eq. 1
-  float epsN = 1.0 - dot(normalOf(i), normalOf(j));          // Eq. 2
-  return uWz * epsZ + uWn * epsN;                            // Eq. 3
+  return s;
+}
+
+// ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3); fragments of
+// different connected components are never neighbours.
+float continuity(Surfel i, Surfel j, ivec2 d) {
+  if (i.comp != j.comp) return 1.0 / 0.0;
+  float predicted = i.z + dot(vec2(d), i.g);
+  float epsZ = abs(predicted - j.z) / uObjectRadius;  // Eq. 1
+  float epsN = 1.0 - dot(i.n, j.n);                   // Eq. 2
+  return uWz * epsZ + uWn * epsN;                     // Eq. 3
 }
 
 const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
@@ -75,8 +92,8 @@ uint lowerBound(uint head, uint count, float z) {
 }
 
 // Keeps j when it matches a better than the best so far (lower index on a tie).
-void consider(uint a, uint j, ivec2 d, inout uint best, inout float bestEps) {
-  float e = continuity(a, j, d);
+void consider(Surfel a, uint j, ivec2 d, inout uint best, inout float bestEps) {
+  float e = continuity(a, surfel(j), d);
   if (e < bestEps || (e == bestEps && e < 1.0 / 0.0 && j < best)) {
     bestEps = e;
     best = j;
@@ -84,10 +101,10 @@ void consider(uint a, uint j, ivec2 d, inout uint best, inout float bestEps) {
 }
 
 // The best candidate for a among pixel q's list (Alg. 2's first half).
-uint bestCandidate(uint a, uint headB, uint countB, ivec2 d, out float bestEps) {
+uint bestCandidate(Surfel a, uint headB, uint countB, ivec2 d, out float bestEps) {
   uint best = NO_NEIGHBOR;
   bestEps = 1.0 / 0.0;
-  float predicted = depthOf(a) + dot(vec2(d), gradientOf(a));
+  float predicted = a.z + dot(vec2(d), a.g);
   uint start = lowerBound(headB, countB, predicted);
   for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k) consider(a, headB + k, d, best, bestEps);
   for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k) consider(a, headB + k - 1u, d, best, bestEps);
@@ -98,32 +115,33 @@ uint bestCandidate(uint a, uint headB, uint countB, ivec2 d, out float bestEps) 
 // of a's own list is an even better match for that candidate (the relation must be mutual). The
 // other fragments predict with their own gradients, so their window in depth is widened by
 // maxStep = max |d·∇z| over a's list.
-uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec2 d, float maxStep) {
+uint findNeighbor(uint a, Surfel sa, uint headA, uint countA, uint headB, uint countB, ivec2 d, float maxStep) {
 #ifdef TLAB_ALL_PAIRS
   // The reference: every pair, as Alg. 2 is written (tests check the search above against it).
   uint best = NO_NEIGHBOR;
   float bestEps = 1.0 / 0.0;
   for (uint k = 0u; k < countB; ++k) {
-    float e = continuity(a, headB + k, d);
+    float e = continuity(sa, surfel(headB + k), d);
     if (e < bestEps) {
       bestEps = e;
       best = headB + k;
     }
   }
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
+  Surfel sb = surfel(best);
   for (uint k = 0u; k < countA; ++k)
-    if (headA + k != a && continuity(headA + k, best, d) < bestEps) return NO_NEIGHBOR;
+    if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
   return best;
 #else
   float bestEps;
-  uint best = bestCandidate(a, headB, countB, d, bestEps);
+  uint best = bestCandidate(sa, headB, countB, d, bestEps);
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
-  float zb = depthOf(best);
-  uint start = lowerBound(headA, countA, zb);
-  for (uint k = start; k < countA && !beyond(depthOf(headA + k) - zb - maxStep, bestEps); ++k)
-    if (headA + k != a && continuity(headA + k, best, d) < bestEps) return NO_NEIGHBOR;
-  for (uint k = start; k > 0u && !beyond(zb - depthOf(headA + k - 1u) - maxStep, bestEps); --k)
-    if (headA + k - 1u != a && continuity(headA + k - 1u, best, d) < bestEps) return NO_NEIGHBOR;
+  Surfel sb = surfel(best);
+  uint start = lowerBound(headA, countA, sb.z);
+  for (uint k = start; k < countA && !beyond(depthOf(headA + k) - sb.z - maxStep, bestEps); ++k)
+    if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
+  for (uint k = start; k > 0u && !beyond(sb.z - depthOf(headA + k - 1u) - maxStep, bestEps); --k)
+    if (headA + k - 1u != a && continuity(surfel(headA + k - 1u), sb, d) < bestEps) return NO_NEIGHBOR;
   return best;
 #endif
 }
@@ -145,13 +163,14 @@ void main() {
   }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
+    Surfel sf = surfel(f);
     uint link[4];
     for (int k = 0; k < 4; ++k) {
       ivec2 q = xy + kDirections[k];
       link[k] = NO_NEIGHBOR;
       if (!inside(q)) continue;
       uint qp = uint(q.y * uWidth + q.x);
-      link[k] = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k], maxStep[k]);
+      link[k] = findNeighbor(f, sf, head, n, pixelHead[qp], pixelCount[qp], kDirections[k], maxStep[k]);
     }
     links[f] = uvec4(link[0], link[1], link[2], link[3]);
   }

@@ -1,5 +1,9 @@
 #include "renderer/ops/diffusion_solver.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "renderer/gpu/gl_error.hpp"
 
 namespace tlab::render {
@@ -29,18 +33,19 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")) {}
 
-const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const {
+const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
   gpu::ShaderDefines d;
   if (jacobi) d.emplace_back("TLAB_JACOBI", "1");
   if (!settings_.diffusesAlpha()) d.emplace_back("TLAB_SKIP_ALPHA", "1");
-  if (fused) {
+  if (fused.any()) {
     d.emplace_back("TLAB_FUSED_SPREAD", "1");
-    for (const auto& f : fields.defines()) d.push_back(f);
+    if (fused.beta) d.emplace_back("TLAB_HAS_BETA", "1");
+    if (fused.gamma) d.emplace_back("TLAB_HAS_GAMMA", "1");
   }
   const auto& program = shaders_.compute("ops/diffuse_alpha.comp", d);
   program.use();
   glUniform1i(program.uniform("uNormalized"), settings_.normalizedLaplacian ? 1 : 0);
-  if (fused) {
+  if (fused.any()) {
     glUniform1f(program.uniform("uLambdaBeta"), static_cast<float>(settings_.lambdaBeta));
     glUniform1f(program.uniform("uLambdaGamma"), static_cast<float>(settings_.lambdaGamma));
   }
@@ -54,19 +59,20 @@ int DiffusionSolver::alphaDispatches() const {
   return substepsFor(settings_.lambdaAlpha, settings_.explicitBound());
 }
 
-void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const {
+void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, Spread fused) const {
   const std::size_t n = fields.fragments();
   const double lambda = settings_.lambdaAlpha;
+  const Spread none;
   // After the first dispatch of a fused step, β and γ are done: swap them to current.
   const auto afterFirst = [&](bool first) {
-    if (!(first && fusedSpread)) return;
-    if (fields.hasBeta()) fields.swap(Field::Beta);
-    if (fields.hasGamma()) fields.swap(Field::Gamma);
+    if (!first) return;
+    if (fused.beta) fields.swap(Field::Beta);
+    if (fused.gamma) fields.swap(Field::Gamma);
   };
   if (!settings_.diffusesAlpha()) {  // α uniform: the spreading alone, in one dispatch
-    if (!fusedSpread) return;
+    if (!fused.any()) return;
     fields.bindCurrent();
-    run(alphaProgram(false, true, fields), n, lambda);
+    run(alphaProgram(false, fused), n, lambda);
     afterFirst(true);
     return;
   }
@@ -77,7 +83,7 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     for (int sweep = 0; sweep < settings_.jacobiSweeps; ++sweep) {
       fields.bindCurrent();
-      run(alphaProgram(true, fusedSpread && sweep == 0, fields), n, lambda);
+      run(alphaProgram(true, sweep == 0 ? fused : none), n, lambda);
       fields.swap(Field::Alpha);
       afterFirst(sweep == 0);
     }
@@ -87,7 +93,7 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
   const int m = alphaDispatches();
   for (int k = 0; k < m; ++k) {
     fields.bindCurrent();
-    run(alphaProgram(false, fusedSpread && k == 0, fields), n, lambda / m);
+    run(alphaProgram(false, k == 0 ? fused : none), n, lambda / m);
     fields.swap(Field::Alpha);
     afterFirst(k == 0);
   }
@@ -106,20 +112,34 @@ void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lam
   }
 }
 
-void DiffusionSolver::step(TransparencyFields& fields) const {
+void DiffusionSolver::step(TransparencyFields& fields) const { step(fields, {fields.hasBeta(), fields.hasGamma()}); }
+
+void DiffusionSolver::step(TransparencyFields& fields, Spread spread) const {
   if (fields.fragments() == 0) return;
   // Eq. 9 spreading rides along with the first α dispatch; Eq. 8 spreading needs its own passes.
-  const bool fused = settings_.spreadByMax && (fields.hasBeta() || fields.hasGamma());
-  diffuseAlpha(fields, fused);
-  if (!fused) {
-    if (fields.hasBeta()) spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
-    if (fields.hasGamma()) spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
+  diffuseAlpha(fields, settings_.spreadByMax ? spread : Spread{});
+  if (!settings_.spreadByMax) {
+    if (spread.beta) this->spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
+    if (spread.gamma) this->spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
   }
   gpu::checkGl("the diffusion solver");
 }
 
+// Eq. 9 settles after ⌈1/λ⌉ steps: a value carried over a longer path is 1 − λ·length ≤ 0, and
+// fields never drop below 0. Steps beyond that change nothing and are left out (λ = 0 never settles).
+int DiffusionSolver::spreadSteps(double lambda) const {
+  if (!settings_.spreadByMax || lambda <= 0) return settings_.iterations;
+  return std::min(settings_.iterations, static_cast<int>(std::ceil(1.0 / lambda - 1e-9)));
+}
+
 void DiffusionSolver::solve(TransparencyFields& fields) const {
-  for (int i = 0; i < settings_.iterations; ++i) step(fields);
+  const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
+  const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
+  for (int i = 0; i < settings_.iterations; ++i) {
+    const Spread spread{i < betaSteps, i < gammaSteps};
+    if (!settings_.diffusesAlpha() && !spread.any()) break;
+    step(fields, spread);
+  }
 }
 
 int DiffusionSolver::dispatchesPerStep() const {
@@ -145,8 +165,12 @@ std::vector<std::string> DiffusionSolver::operations() const {
                   std::to_string(alphaDispatches()) + " dispatch(es) per step)");
   }
   const std::string how = settings_.spreadByMax ? "Eq. 9 max" : "Eq. 8 diffusion";
-  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + n + ")");
-  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + n + ")");
+  const auto steps = [&](double lambda) {
+    const int k = spreadSteps(lambda);
+    return std::to_string(k) + " steps" + (k < settings_.iterations ? " (settled after 1/lambda)" : "");
+  };
+  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + steps(settings_.lambdaBeta) + ")");
+  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + steps(settings_.lambdaGamma) + ")");
   if (!settings_.halos) ops.push_back("gamma skipped (halos=off)");
   if (!settings_.silhouettes) ops.push_back("beta skipped (silhouettes=off)");
   return ops;

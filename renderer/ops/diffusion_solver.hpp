@@ -18,6 +18,7 @@ class DiffusionSolver {
   DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings);
   // One of the n steps (time λα) on all fields.
   void step(TransparencyFields& fields) const;
+  // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps).
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
@@ -27,10 +28,17 @@ class DiffusionSolver {
   bool hasWork() const { return settings_.iterations > 0 && dispatchesPerStep() > 0; }
 
  private:
-  // α diffusion for one step; with `fusedSpread` the first dispatch also spreads β and γ.
-  void diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const;
+  // Which of β and γ a step spreads.
+  struct Spread {
+    bool beta = false, gamma = false;
+    bool any() const { return beta || gamma; }
+  };
+  void step(TransparencyFields& fields, Spread spread) const;
+  // α diffusion for one step; the first dispatch also spreads the fields of `fused` (Eq. 9).
+  void diffuseAlpha(TransparencyFields& fields, Spread fused) const;
   int alphaDispatches() const;  // per step; 0 when α cannot change
-  const gpu::ShaderProgram& alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const;
+  int spreadSteps(double lambda) const;  // steps after which Eq. 9 spreading changes nothing
+  const gpu::ShaderProgram& alphaProgram(bool jacobi, Spread fused) const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
 
   SmartSettings settings_;

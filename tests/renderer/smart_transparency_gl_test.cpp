@@ -391,6 +391,24 @@ TEST(DiffusionStability, NormalizedStepIsTheMeanOfTheNeighbours) {
   }
 }
 
+// Eq. 9 settles after ⌈1/λ⌉ steps: the solve that stops spreading there gives exactly the fields of
+// n full steps.
+TEST(FieldSpreading, SettledSpreadingStopsWithoutChangingTheFields) {
+  for (const char* alphaInit : {"constant", "adaptive"}) {
+    const std::map<std::string, std::string> settings = {{"iterations", "30"}, {"lambda_beta", "0.05"}, {"lambda_gamma", "0.2"},
+                                                         {"alpha_init", alphaInit}};
+    SmartRig solved(occluderScene(), 64, 16, settings), stepped(occluderScene(), 64, 16, settings);
+    const DiffusionSolver solver(solved.shaders, solved.smart);
+    solver.solve(*solved.fields);
+    const DiffusionSolver full(stepped.shaders, stepped.smart);
+    for (int i = 0; i < 30; ++i) full.step(*stepped.fields);
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma})
+      EXPECT_EQ(solved.fields->read(f), stepped.fields->read(f)) << alphaInit << " field " << int(f);
+    const auto gamma = solved.fields->read(Field::Gamma);
+    EXPECT_GT(*std::max_element(gamma.begin(), gamma.end()), 0.5f);  // there is a halo to spread
+  }
+}
+
 // The bounded search finds the same links, flags and initial fields as comparing all pairs.
 TEST(NeighborLinks, BoundedSearchEqualsAllPairs) {
   Scene occluder = occluderScene();
@@ -451,7 +469,8 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
   // Initial α uniform (Eq. 4, the default): the solve only spreads β and γ, and says so.
   EXPECT_EQ(stats.operations, (std::vector<std::string>{
                                   "connect: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)",
-                                  "connect: beta spreading (Eq. 9 max, 20 steps)", "connect: gamma spreading (Eq. 9 max, 20 steps)"}));
+                                  "connect: beta spreading (Eq. 9 max, 20 steps)",
+                                  "connect: gamma spreading (Eq. 9 max, 10 steps (settled after 1/lambda))"}));
   // Nothing to solve at all: uniform α, no silhouettes, no halos.
   r.settings = {{"halos", "off"}, {"silhouettes", "off"}};
   renderer.render(r, &stats);
