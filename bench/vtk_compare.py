@@ -5,7 +5,9 @@ mesh, view and image size, in one run on one GL (issue #19: the peer a visualiza
 Run by hand, not in CI (it times things). Needs Debian's python3-vtk9 and an X display for VTK's
 render window (Debian's VTK has no headless EGL window), e.g.:
 
-    xvfb-run -a -s "-screen 0 1280x1024x24" python3 bench/vtk_compare.py [--mesh FILE.gltf] [--size 512]
+    xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 bench/vtk_compare.py [--mesh FILE.gltf] [--size 512]
+
+(Debian's python3, where python3-vtk9 installs the vtk module.)
 
 Without --mesh it writes a torus of --triangles triangles as glTF (positions, normals, indices) so
 both programs read the same file. The camera is the same eye/target/up/fovy for both; every layer
@@ -63,7 +65,7 @@ def torus_gltf(path, triangles, major=1.0, minor=0.4):
     return len(idx) // 3
 
 
-def vtk_frame_ms(mesh, size, camera, opacity, frames, mode):
+def vtk_frame_ms(mesh, size, camera, opacity, frames, mode, png=None):
     import vtk
     reader = vtk.vtkGLTFReader()
     reader.SetFileName(mesh)
@@ -106,6 +108,13 @@ def vtk_frame_ms(mesh, size, camera, opacity, frames, mode):
         win.Render()
         win.WaitForCompletion()
         times.append((time.perf_counter() - start) * 1000.0)
+    if png:  # the picture, to check both programs drew the same view
+        grab = vtk.vtkWindowToImageFilter()
+        grab.SetInput(win)
+        writer = vtk.vtkPNGWriter()
+        writer.SetFileName(png)
+        writer.SetInputConnection(grab.GetOutputPort())
+        writer.Write()
     info = win.ReportCapabilities().splitlines()
     renderer = next((l.split(":", 1)[1].strip() for l in info if "OpenGL renderer string" in l), "?")
     return statistics.median(times), renderer
@@ -121,6 +130,7 @@ def main():
     ap.add_argument("--opacity", type=float, default=0.3)
     ap.add_argument("--camera", default="eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40")
     ap.add_argument("--gl", default="auto", help="tlab's --gl")
+    ap.add_argument("--images", help="also write tlab.png and vtk-MODE.png of the view into this folder")
     a = ap.parse_args()
     camera = {}
     for item in a.camera.split():
@@ -139,9 +149,15 @@ def main():
         row = tlab["rows"][0]
         print(f"tlab constant ({tlab['gl']['backend']}, {tlab['gl']['renderer']}): {row['frame_ms']:.1f} ms/frame, "
               f"{row['fragments']} fragments, passes {row['pass_ms']}")
+        if a.images:
+            os.makedirs(a.images, exist_ok=True)
+            subprocess.run([a.tlab, "render", mesh, "--camera", a.camera, "--style", "constant", "--set", f"alpha={a.opacity}",
+                            "--size", f"{a.size}x{a.size}", "--gl", a.gl, "-o", os.path.join(a.images, "tlab.png")],
+                           check=True, capture_output=True)
         results = {}
         for mode in ("dual-peeling", "weighted-oit"):
-            ms, renderer = vtk_frame_ms(mesh, a.size, camera, a.opacity, a.frames, mode)
+            png = os.path.join(a.images, f"vtk-{mode}.png") if a.images else None
+            ms, renderer = vtk_frame_ms(mesh, a.size, camera, a.opacity, a.frames, mode, png)
             results[mode] = ms
             print(f"VTK {mode} ({renderer}): {ms:.1f} ms/frame")
         print(f"ratio tlab constant / VTK dual peeling = {row['frame_ms'] / results['dual-peeling']:.2f} "
