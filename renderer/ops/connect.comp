@@ -80,8 +80,14 @@ bool beyond(float depthGap, float bestEps) {
   return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps * (1.0 + 1e-5);
 }
 
-// First index in [head, head + count) whose depth is ≥ z (binary search over the sorted list).
-uint lowerBound(uint head, uint count, float z) {
+// First index in [head, head + count) whose depth is ≥ z. Neighbouring lists mostly hold the
+// same surfaces in the same order, so the answer is tried at `hint` (the layer being matched)
+// first, and found by binary search over the sorted list otherwise.
+bool isLowerBound(uint head, uint count, float z, uint k) {
+  return k <= count && (k == count || depthOf(head + k) >= z) && (k == 0u || depthOf(head + k - 1u) < z);
+}
+uint lowerBound(uint head, uint count, float z, uint hint) {
+  if (isLowerBound(head, count, z, hint)) return hint;
   uint lo = 0u, hi = count;
   while (lo < hi) {
     uint mid = (lo + hi) >> 1;
@@ -101,11 +107,11 @@ void consider(Surfel a, uint j, ivec2 d, inout uint best, inout float bestEps) {
 }
 
 // The best candidate for a among pixel q's list (Alg. 2's first half).
-uint bestCandidate(Surfel a, uint headB, uint countB, ivec2 d, out float bestEps) {
+uint bestCandidate(Surfel a, uint layer, uint headB, uint countB, ivec2 d, out float bestEps) {
   uint best = NO_NEIGHBOR;
   bestEps = 1.0 / 0.0;
   float predicted = a.z + dot(vec2(d), a.g);
-  uint start = lowerBound(headB, countB, predicted);
+  uint start = lowerBound(headB, countB, predicted, min(layer, countB));
   for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k) consider(a, headB + k, d, best, bestEps);
   for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k) consider(a, headB + k - 1u, d, best, bestEps);
   return best;
@@ -134,10 +140,10 @@ uint findNeighbor(uint a, Surfel sa, uint headA, uint countA, uint headB, uint c
   return best;
 #else
   float bestEps;
-  uint best = bestCandidate(sa, headB, countB, d, bestEps);
+  uint best = bestCandidate(sa, a - headA, headB, countB, d, bestEps);
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
   Surfel sb = surfel(best);
-  uint start = lowerBound(headA, countA, sb.z);
+  uint start = lowerBound(headA, countA, sb.z, a - headA);
   for (uint k = start; k < countA && !beyond(depthOf(headA + k) - sb.z - maxStep, bestEps); ++k)
     if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
   for (uint k = start; k > 0u && !beyond(sb.z - depthOf(headA + k - 1u) - maxStep, bestEps); --k)

@@ -34,6 +34,12 @@ layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer GammaOut { float gamma
 #endif
 uniform float uLambdaBeta;
 uniform float uLambdaGamma;
+// Whether a field changed anywhere: a step that changes nothing is a fixed point, and the host
+// stops spreading there.
+layout(std430, binding = BIND_CHANGED) coherent buffer Changed { uint changed; };
+void noteChange(bool differs, uint bit) {
+  if (differs && (changed & bit) == 0u) atomicOr(changed, bit);
+}
 #endif
 uniform uint uFragments;
 uniform float uLambda;
@@ -52,6 +58,7 @@ void main() {
     for (int k = 0; k < 4; ++k)
       if (l[k] != NO_NEIGHBOR) b = max(b, betaIn[l[k]] - uLambdaBeta);
   betaOut[f] = b;
+  noteChange(b != betaIn[f], 2u);
 #endif
 #ifdef TLAB_HAS_GAMMA
   float g = gammaIn[f];
@@ -59,6 +66,7 @@ void main() {
     for (int k = 0; k < 4; ++k)
       if (l[k] != NO_NEIGHBOR) g = max(g, gammaIn[l[k]] - uLambdaGamma);
   gammaOut[f] = g;
+  noteChange(g != gammaIn[f], 4u);
 #endif
 #endif
 #ifndef TLAB_SKIP_ALPHA

@@ -10,7 +10,8 @@ namespace tlab::render {
 
 namespace {
 constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/field_bindings.glsl
-constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;
+constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;  // also the bits of the change record
+constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
   program.use();  // (callers may have set further uniforms on it already)
@@ -31,7 +32,8 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
     : settings_(settings),
       shaders_(shaders),
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
-      spreadDiffusion_(&shaders.compute("ops/spread_field.comp")) {}
+      spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
+      changed_(sizeof(std::uint32_t)) {}
 
 const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
   gpu::ShaderDefines d;
@@ -132,13 +134,35 @@ int DiffusionSolver::spreadSteps(double lambda) const {
   return std::min(settings_.iterations, static_cast<int>(std::ceil(1.0 / lambda - 1e-9)));
 }
 
+// Whether a fused step changed β (bit 2) or γ (bit 4) anywhere; clears the record for the next.
+unsigned DiffusionSolver::takeChanges() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t bits = 0;
+  changed_.download(&bits, sizeof bits);
+  changed_.clearToZero();
+  return bits;
+}
+
 void DiffusionSolver::solve(TransparencyFields& fields) const {
   const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
   const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
+  bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was
+  betaRun_ = gammaRun_ = 0;
+  changed_.clearToZero();
+  changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
   for (int i = 0; i < settings_.iterations; ++i) {
-    const Spread spread{i < betaSteps, i < gammaSteps};
+    const Spread spread{betaMoves && i < betaSteps, gammaMoves && i < gammaSteps};
     if (!settings_.diffusesAlpha() && !spread.any()) break;
     step(fields, spread);
+    betaRun_ += spread.beta ? 1 : 0;
+    gammaRun_ += spread.gamma ? 1 : 0;
+    // A step that changes nothing is a fixed point of Eq. 9: the next would not change it either.
+    // Checked after steps 1, 2, 4, 8, ... (each check waits for the GPU).
+    if (settings_.spreadByMax && spread.any() && (i & (i + 1)) == 0) {
+      const unsigned bits = takeChanges();
+      betaMoves = betaMoves && (!spread.beta || (bits & kFreeBeta) != 0);
+      gammaMoves = gammaMoves && (!spread.gamma || (bits & kFreeGamma) != 0);
+    }
   }
 }
 
@@ -165,12 +189,14 @@ std::vector<std::string> DiffusionSolver::operations() const {
                   std::to_string(alphaDispatches()) + " dispatch(es) per step)");
   }
   const std::string how = settings_.spreadByMax ? "Eq. 9 max" : "Eq. 8 diffusion";
-  const auto steps = [&](double lambda) {
-    const int k = spreadSteps(lambda);
-    return std::to_string(k) + " steps" + (k < settings_.iterations ? " (settled after 1/lambda)" : "");
+  // Steps run (after a solve) or planned, of the n asked for.
+  const auto steps = [&](double lambda, int run) {
+    const int k = run >= 0 ? run : spreadSteps(lambda);
+    if (k == settings_.iterations) return n;
+    return std::to_string(k) + " of " + n + ": settled" + (run >= 0 ? "" : " after 1/lambda");
   };
-  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + steps(settings_.lambdaBeta) + ")");
-  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + steps(settings_.lambdaGamma) + ")");
+  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + steps(settings_.lambdaBeta, betaRun_) + ")");
+  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + steps(settings_.lambdaGamma, gammaRun_) + ")");
   if (!settings_.halos) ops.push_back("gamma skipped (halos=off)");
   if (!settings_.silhouettes) ops.push_back("beta skipped (silhouettes=off)");
   return ops;

@@ -18,11 +18,13 @@ class DiffusionSolver {
   DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings);
   // One of the n steps (time λα) on all fields.
   void step(TransparencyFields& fields) const;
-  // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps).
+  // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps, or a
+  // step that changed nothing).
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
-  // What the solve does and leaves out (for --stats-json): one line per field.
+  // What the solve does and leaves out (for --stats-json): one line per field, with the steps
+  // the last solve() ran (before any solve: the steps planned).
   std::vector<std::string> operations() const;
   // Whether a solve has anything to do (α to diffuse or β/γ to spread).
   bool hasWork() const { return settings_.iterations > 0 && dispatchesPerStep() > 0; }
@@ -39,12 +41,15 @@ class DiffusionSolver {
   int alphaDispatches() const;  // per step; 0 when α cannot change
   int spreadSteps(double lambda) const;  // steps after which Eq. 9 spreading changes nothing
   const gpu::ShaderProgram& alphaProgram(bool jacobi, Spread fused) const;
+  unsigned takeChanges() const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
+  mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
+  mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };
 
 }  // namespace tlab::render

@@ -11,18 +11,19 @@ namespace {
 // What the three passes of one frame share.
 struct SmartFrame {
   SmartSettings settings;
+  bool solves = false;  // whether a solve pass follows the connect pass
   std::unique_ptr<TransparencyFields> fields;
 };
 
-// The links (Alg. 2), initial α and boundary conditions; it also reports what the solve runs
-// and leaves out, since a solve with nothing to do is not scheduled at all.
+// The links (Alg. 2), initial α and boundary conditions; when no solve pass is scheduled (nothing
+// to diffuse or spread) it reports what was left out.
 class ConnectRenderPass final : public RenderPass {
  public:
   explicit ConnectRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
   std::string name() const override { return "connect"; }
   void run(FrameContext& frame) override {
     frame_->fields = connectFragments(*frame.buffer, frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
-    operations_ = DiffusionSolver(frame.shaders, frame_->settings).operations();
+    if (!frame_->solves) operations_ = DiffusionSolver(frame.shaders, frame_->settings).operations();
   }
   std::vector<std::string> operations() const override { return operations_; }
 
@@ -35,10 +36,16 @@ class SolveRenderPass final : public RenderPass {
  public:
   explicit SolveRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
   std::string name() const override { return "solve"; }
-  void run(FrameContext& frame) override { DiffusionSolver(frame.shaders, frame_->settings).solve(*frame_->fields); }
+  void run(FrameContext& frame) override {
+    const DiffusionSolver solver(frame.shaders, frame_->settings);
+    solver.solve(*frame_->fields);
+    operations_ = solver.operations();
+  }
+  std::vector<std::string> operations() const override { return operations_; }
 
  private:
   std::shared_ptr<SmartFrame> frame_;
+  std::vector<std::string> operations_;
 };
 
 class SmartComposePass final : public RenderPass {
@@ -93,8 +100,9 @@ std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& p
   frame->settings = SmartSettings::from(params);
   std::vector<std::unique_ptr<RenderPass>> p;
   p.push_back(std::make_unique<ConnectRenderPass>(frame));
-  if (frame->settings.iterations > 0 && (frame->settings.diffusesAlpha() || frame->settings.silhouettes || frame->settings.halos))
-    p.push_back(std::make_unique<SolveRenderPass>(frame));
+  frame->solves =
+      frame->settings.iterations > 0 && (frame->settings.diffusesAlpha() || frame->settings.silhouettes || frame->settings.halos);
+  if (frame->solves) p.push_back(std::make_unique<SolveRenderPass>(frame));
   p.push_back(std::make_unique<SmartComposePass>(frame));
   return p;
 }

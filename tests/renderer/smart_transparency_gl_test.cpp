@@ -407,6 +407,12 @@ TEST(FieldSpreading, SettledSpreadingStopsWithoutChangingTheFields) {
     const auto gamma = solved.fields->read(Field::Gamma);
     EXPECT_GT(*std::max_element(gamma.begin(), gamma.end()), 0.5f);  // there is a halo to spread
   }
+  // A full-frame stack has no silhouette and no occluding edge: one step shows nothing moves.
+  SmartRig stack(loadScene("builtin:quad-stack?n=4"), 24, 24, {{"iterations", "20"}});
+  const DiffusionSolver solver(stack.shaders, stack.smart);
+  solver.solve(*stack.fields);
+  EXPECT_EQ(solver.operations()[1], "beta spreading (Eq. 9 max, 1 of 20 steps: settled)");
+  EXPECT_EQ(solver.operations()[2], "gamma spreading (Eq. 9 max, 1 of 20 steps: settled)");
 }
 
 // The bounded search finds the same links, flags and initial fields as comparing all pairs.
@@ -466,17 +472,22 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
   std::vector<std::string> ran;
   for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
   EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "solve", "compose"}));
-  // Initial α uniform (Eq. 4, the default): the solve only spreads β and γ, and says so.
-  EXPECT_EQ(stats.operations, (std::vector<std::string>{
-                                  "connect: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)",
-                                  "connect: beta spreading (Eq. 9 max, 20 steps)",
-                                  "connect: gamma spreading (Eq. 9 max, 10 steps (settled after 1/lambda))"}));
+  // Initial α uniform (Eq. 4, the default): the solve only spreads β and γ, and says so; γ
+  // (λγ = 0.1) settles within 10 of the 20 steps.
+  ASSERT_EQ(stats.operations.size(), 3u);
+  EXPECT_EQ(stats.operations[0], "solve: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)");
+  EXPECT_EQ(stats.operations[1].rfind("solve: beta spreading (Eq. 9 max, ", 0), 0u) << stats.operations[1];
+  EXPECT_EQ(stats.operations[2].rfind("solve: gamma spreading (Eq. 9 max, ", 0), 0u) << stats.operations[2];
+  EXPECT_NE(stats.operations[2].find(" of 20 steps: settled)"), std::string::npos) << stats.operations[2];
   // Nothing to solve at all: uniform α, no silhouettes, no halos.
   r.settings = {{"halos", "off"}, {"silhouettes", "off"}};
   renderer.render(r, &stats);
   ran.clear();
   for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
   EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "compose"}));
+  EXPECT_EQ(stats.operations, (std::vector<std::string>{
+                                  "connect: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)",
+                                  "connect: gamma skipped (halos=off)", "connect: beta skipped (silhouettes=off)"}));
   r.settings = {};
   // One connected component: no component ids in the records.
   EXPECT_EQ(stats.fragmentProperties, (std::vector<std::string>{"depth", "triangle", "color", "normal", "depth_gradient"}));
