@@ -97,23 +97,28 @@ uint lowerBound(uint head, uint count, float z, uint hint) {
   return lo;
 }
 
-// Keeps j when it matches a better than the best so far (lower index on a tie).
-void consider(Surfel a, uint j, ivec2 d, inout uint best, inout float bestEps) {
-  float e = continuity(a, surfel(j), d);
+// Keeps j when it matches a better than the best so far (lower index on a tie), with its record.
+void consider(Surfel a, uint j, ivec2 d, inout uint best, inout float bestEps, inout Surfel bestSurfel) {
+  Surfel sj = surfel(j);
+  float e = continuity(a, sj, d);
   if (e < bestEps || (e == bestEps && e < 1.0 / 0.0 && j < best)) {
     bestEps = e;
     best = j;
+    bestSurfel = sj;
   }
 }
 
 // The best candidate for a among pixel q's list (Alg. 2's first half).
-uint bestCandidate(Surfel a, uint layer, uint headB, uint countB, ivec2 d, out float bestEps) {
+uint bestCandidate(Surfel a, uint layer, uint headB, uint countB, ivec2 d, out float bestEps, out Surfel bestSurfel) {
   uint best = NO_NEIGHBOR;
   bestEps = 1.0 / 0.0;
+  bestSurfel = a;
   float predicted = a.z + dot(vec2(d), a.g);
   uint start = lowerBound(headB, countB, predicted, min(layer, countB));
-  for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k) consider(a, headB + k, d, best, bestEps);
-  for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k) consider(a, headB + k - 1u, d, best, bestEps);
+  for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k)
+    consider(a, headB + k, d, best, bestEps, bestSurfel);
+  for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k)
+    consider(a, headB + k - 1u, d, best, bestEps, bestSurfel);
   return best;
 }
 
@@ -140,9 +145,9 @@ uint findNeighbor(uint a, Surfel sa, uint headA, uint countA, uint headB, uint c
   return best;
 #else
   float bestEps;
-  uint best = bestCandidate(sa, a - headA, headB, countB, d, bestEps);
+  Surfel sb;
+  uint best = bestCandidate(sa, a - headA, headB, countB, d, bestEps, sb);
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
-  Surfel sb = surfel(best);
   uint start = lowerBound(headA, countA, sb.z, a - headA);
   for (uint k = start; k < countA && !beyond(depthOf(headA + k) - sb.z - maxStep, bestEps); ++k)
     if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
