@@ -1,7 +1,7 @@
 #pragma once
 // tlab bench render --scene (any scene, camera, styles, size) and tlab bench all (every style at
-// 512² and 1024² on the standard scenes): steady-state per-frame and per-pass ms, fps, fragments
-// and the GL that ran them — the table a lab runs on its own GPU.
+// 512² and 1024² on the standard scenes, then the seeds' own comparisons): steady-state per-frame
+// and per-pass ms, fps, fragments and the GL that ran them — the table a lab runs on its own GPU.
 #include <string>
 #include <vector>
 

@@ -1,6 +1,8 @@
 // tlab bench render --scene and tlab bench all (app/bench_scene.hpp).
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <stdexcept>
 
 #include <nlohmann/json.hpp>
 
@@ -8,6 +10,7 @@
 #include "app/frame_timing.hpp"
 #include "app/gl_option.hpp"
 #include "app/scene_options.hpp"
+#include "renderer/gpu/gl_backend.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
@@ -100,24 +103,61 @@ void report(const std::vector<BenchRow>& rows, const gpu::GpuInfo& gl, int frame
 }
 
 struct BenchAllOptions {
+  std::vector<std::string> comparisons = {"buckets", "dynamic", "peel"};
   std::vector<std::string> sizes = {"512x512", "1024x1024"};
   std::vector<std::string> scenes = {"builtin:torus?triangles=100000", "builtin:quad-stack?n=16", "builtin:nested-spheres?n=3"};
   int frames = 5;
   bool json = false;
 };
 
+// The seeds' own comparisons (`tlab bench buckets|dynamic|peel`: Murray Fig. 10, Elmqvist Table
+// 2, IRIS Sec. 5.1) with their papers' settings, each run by this executable with the same --gl.
+// With `json` their JSON documents are returned, keyed by name; otherwise their tables are printed.
+nlohmann::json runComparisons(const std::vector<std::string>& names, bool json) {
+  const std::string exe = std::filesystem::read_symlink("/proc/self/exe").string();
+  nlohmann::json all = nlohmann::json::object();
+  for (const auto& name : names) {
+    const std::string command =
+        "'" + exe + "' bench " + name + " --gl " + gpu::glChoiceName(gpu::glChoice()) + (json ? " --json" : "");
+    std::fflush(stdout);
+    std::string out;
+    FILE* pipe = ::popen(command.c_str(), "r");
+    if (!pipe) throw std::runtime_error("bench all: cannot run tlab bench " + name);
+    char buf[4096];
+    for (std::size_t n; (n = std::fread(buf, 1, sizeof buf, pipe)) > 0;) out.append(buf, n);
+    const int status = ::pclose(pipe);
+    if (status != 0) throw std::runtime_error("bench all: tlab bench " + name + " failed (see its message above)");
+    if (json) all[name] = nlohmann::json::parse(out);
+    else std::printf("\n%s", out.c_str());
+  }
+  return all;
+}
+
 void runBenchAll(const BenchAllOptions& o) {
-  const auto context = gpu::createHeadlessContext();
-  std::vector<std::string> styles = {"constant"};  // the reference first
-  for (const auto& s : render::styleNames())
-    if (s != "constant") styles.push_back(s);
   std::vector<BenchRow> rows;
-  for (const auto& scene : o.scenes)
-    for (const auto& size : o.sizes) {
-      auto part = benchScene(scene, "", styles, {}, size, o.frames);
-      rows.insert(rows.end(), part.begin(), part.end());
-    }
-  report(rows, context->info(), o.frames, "constant", o.json);
+  gpu::GpuInfo gl;
+  {
+    const auto context = gpu::createHeadlessContext();
+    gl = context->info();
+    std::vector<std::string> styles = {"constant"};  // the reference first
+    for (const auto& s : render::styleNames())
+      if (s != "constant") styles.push_back(s);
+    for (const auto& scene : o.scenes)
+      for (const auto& size : o.sizes) {
+        auto part = benchScene(scene, "", styles, {}, size, o.frames);
+        rows.insert(rows.end(), part.begin(), part.end());
+      }
+  }  // the comparisons run in processes of their own
+  if (!o.json) {
+    report(rows, gl, o.frames, "constant", false);
+    runComparisons(o.comparisons, false);
+    return;
+  }
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& r : rows) list.push_back(rowJson(r));
+  std::cout << nlohmann::json{{"gl", gpuInfoToJson(gl)}, {"frames", o.frames}, {"reference_style", "constant"}, {"rows", list},
+                              {"comparisons", runComparisons(o.comparisons, true)}}.dump(2)
+            << "\n";
 }
 
 }  // namespace
@@ -138,7 +178,17 @@ void addBenchAll(CLI::App& bench) {
   cmd->add_option("--frames", o->frames, "timed frames per row (median)")->capture_default_str()->check(CLI::Range(1, 1000));
   cmd->add_option("--sizes", o->sizes, "image sizes WxH")->delimiter(',')->capture_default_str();
   cmd->add_option("--scenes", o->scenes, "scenes")->delimiter(',')->capture_default_str();
-  cmd->callback([o] { runBenchAll(*o); });
+  cmd->add_option("--comparisons", o->comparisons,
+                  "the seeds' comparisons to run after the table (tlab bench buckets, dynamic, peel), or none")
+      ->delimiter(',')
+      ->capture_default_str();
+  cmd->callback([o] {
+    if (o->comparisons == std::vector<std::string>{"none"}) o->comparisons.clear();
+    for (const auto& name : o->comparisons)  // before any work
+      if (name != "buckets" && name != "dynamic" && name != "peel")
+        throw std::invalid_argument("--comparisons: '" + name + "' is not buckets, dynamic or peel (or none)");
+    runBenchAll(*o);
+  });
 }
 
 }  // namespace tlab::app

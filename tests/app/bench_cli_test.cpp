@@ -33,7 +33,7 @@ TEST(BenchCli, OneSceneInSeveralStylesWithTheGlAndWhatRan) {
 }
 
 TEST(BenchCli, AllStylesOnTheGivenScenes) {
-  const auto r = runCommand(kTlab + " bench all --scenes builtin:sphere --sizes 16x16 --frames 1 --json");
+  const auto r = runCommand(kTlab + " bench all --scenes builtin:sphere --sizes 16x16 --frames 1 --comparisons dynamic --json");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   const auto styles = runCommand(kTlab + " render --help").out;
@@ -44,12 +44,18 @@ TEST(BenchCli, AllStylesOnTheGivenScenes) {
     EXPECT_NE(styles.find("  " + row["style"].get<std::string>() + ":"), std::string::npos) << row;
     EXPECT_FALSE(row.contains("error")) << row;
   }
+  // The seed's comparison ran with the same GL: Elmqvist's dynamic against opaque.
+  ASSERT_TRUE(j["comparisons"].contains("dynamic")) << j["comparisons"];
+  EXPECT_GT(j["comparisons"]["dynamic"]["ratio"].get<double>(), 0);
+  EXPECT_FALSE(j["comparisons"].contains("peel"));
 }
 
 TEST(BenchCli, SceneOptionsWithoutASceneAndUnknownStylesAreOneLine) {
   for (const auto& [args, part] : {std::pair{"bench render --quick --size 64x64", "--size needs --scene"},
                                    std::pair{"bench render --scene builtin:sphere --style constant,glass", "unknown style 'glass'"},
-                                   std::pair{"bench render --scene builtin:sphere --size 12", "--size"}}) {
+                                   std::pair{"bench render --scene builtin:sphere --size 12", "--size"},
+                                   std::pair{"bench all --scenes builtin:sphere --sizes 8x8 --frames 1 --comparisons peel,fast",
+                                             "'fast' is not buckets, dynamic or peel"}}) {
     const auto r = runCommand(kTlab + " " + args);
     EXPECT_EQ(r.exitCode, 1) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
