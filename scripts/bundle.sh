@@ -8,7 +8,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-dist/tlab-bundle}
-exe=build/bin/tlab
+exe=${TLAB_EXE:-build/bin/tlab}  # the tlab to pack (ctest names its build)
 limit_mib=60
 [ -x "$exe" ] || { echo "bundle: $exe is missing - build first (scripts/build.sh)" >&2; exit 1; }
 
