@@ -172,17 +172,20 @@ void main() {
     vec2 g = abs(gradientOf(head + layer));
     maxStep = max(maxStep, vec4(g.x, g.x, g.y, g.y));
   }
+  uvec4 qHead = uvec4(0u), qCount = uvec4(0u);  // the 4 adjacent lists (empty beyond the image)
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = xy + kDirections[k];
+    if (!inside(q)) continue;
+    uint qp = uint(q.y * uWidth + q.x);
+    qHead[k] = pixelHead[qp];
+    qCount[k] = pixelCount[qp];
+  }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     Surfel sf = surfel(f);
     uint link[4];
-    for (int k = 0; k < 4; ++k) {
-      ivec2 q = xy + kDirections[k];
-      link[k] = NO_NEIGHBOR;
-      if (!inside(q)) continue;
-      uint qp = uint(q.y * uWidth + q.x);
-      link[k] = findNeighbor(f, sf, head, n, pixelHead[qp], pixelCount[qp], kDirections[k], maxStep[k]);
-    }
+    for (int k = 0; k < 4; ++k)
+      link[k] = findNeighbor(f, sf, head, n, qHead[k], qCount[k], kDirections[k], maxStep[k]);
     links[f] = uvec4(link[0], link[1], link[2], link[3]);
   }
 #else
