@@ -77,7 +77,7 @@ const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), i
 // the lower index, as in a front-to-back scan), in O(log n + matches) instead of O(n) per query.
 const float kEpsNSlack = 1e-4;
 bool beyond(float depthGap, float bestEps) {
-  return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps * (1.0 + 1e-5);
+  return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps + abs(bestEps) * 1e-5;
 }
 
 // First index in [head, head + count) whose depth is ≥ z. Neighbouring lists mostly hold the
@@ -190,14 +190,20 @@ void main() {
   }
 #else
   float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+  uvec4 qHead = uvec4(0u);  // heads of the adjacent lists, to turn a link into a layer
+  uint outside = 0u;        // adjacent pixels beyond the image edge
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = xy + kDirections[k];
+    if (inside(q)) qHead[k] = pixelHead[uint(q.y * uWidth + q.x)];
+    else ++outside;
+  }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     uvec4 link = links[f];
-    uint found = 0u, outside = 0u;
+    uint found = 0u;
     bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {
       uint j = link[k];
-      if (!inside(xy + kDirections[k])) ++outside;
       if (j == NO_NEIGHBOR) continue;
       // Directions come in pairs (0,1), (2,3): k ^ 1 is the way back.
       if (links[j][k ^ 1] != f) {
@@ -205,8 +211,7 @@ void main() {
         continue;
       }
       ++found;
-      ivec2 q = xy + kDirections[k];
-      uint neighborLayer = j - pixelHead[uint(q.y * uWidth + q.x)];
+      uint neighborLayer = j - qHead[k];
       nextToSilhouette = nextToSilhouette || layer < neighborLayer;
       underSilhouette = underSilhouette || layer > neighborLayer;
     }
