@@ -1,13 +1,16 @@
 // tlab bench: speed measurements (never timed assertions in tests).
 //   tlab bench render — the per-pass timing table of Carnecky Figs. 14-15 on the torus, with the
-//   ratio to plain unsorted blending (the floor) and the R² of time vs. fragments.
+//   ratio to plain unsorted blending (the floor) and the R² of time vs. fragments; with --scene,
+//   one scene in one or more styles (app/cmd_bench_scene.cpp).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench_scene.hpp"
 #include "app/commands.hpp"
+#include "app/frame_timing.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
@@ -34,40 +37,6 @@ struct Row {
   double listMs = 0, floorMs = 0;
 };
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0.0 : v[v.size() / 2];
-}
-
-// Median per pass over `repeats` timed frames after one warm-up frame.
-std::vector<std::pair<std::string, double>> timeFrames(render::Renderer& r, const render::RenderRequest& q, int repeats,
-                                                       std::uint64_t* fragments) {
-  render::RenderStats stats;
-  r.render(q, &stats);  // warm-up: shader compilation, pool growth
-  std::vector<std::vector<double>> samples;
-  std::vector<std::string> names;
-  for (int i = 0; i < repeats; ++i) {
-    r.render(q, &stats);
-    for (std::size_t p = 0; p < stats.passMilliseconds.size(); ++p) {
-      if (samples.size() <= p) {
-        samples.emplace_back();
-        names.push_back(stats.passMilliseconds[p].first);
-      }
-      samples[p].push_back(stats.passMilliseconds[p].second);
-    }
-  }
-  if (fragments) *fragments = stats.fragments;
-  std::vector<std::pair<std::string, double>> out;
-  for (std::size_t p = 0; p < names.size(); ++p) out.emplace_back(names[p], median(samples[p]));
-  return out;
-}
-
-double sum(const std::vector<std::pair<std::string, double>>& passes) {
-  double t = 0;
-  for (const auto& p : passes) t += p.second;
-  return t;
-}
-
 // Least-squares line through (x, y) and its coefficient of determination.
 double rSquared(const std::vector<double>& x, const std::vector<double>& y) {
   const double n = double(x.size());
@@ -82,6 +51,17 @@ double rSquared(const std::vector<double>& x, const std::vector<double>& y) {
   return sxx > 0 && syy > 0 ? (sxy * sxy) / (sxx * syy) : 0.0;
 }
 
+std::vector<std::string> splitList(const std::string& text) {
+  std::vector<std::string> out;
+  std::size_t start = 0;
+  while (start <= text.size()) {
+    const std::size_t end = std::min(text.find(',', start), text.size());
+    if (end > start) out.push_back(text.substr(start, end - start));
+    start = end + 1;
+  }
+  return out;
+}
+
 Row measure(const std::string& sweep, const std::string& source, int size, render::FillMethod fill,
             const BenchRenderOptions& o) {
   render::Renderer renderer(render::loadScene(source));
@@ -90,11 +70,13 @@ Row measure(const std::string& sweep, const std::string& source, int size, rende
   q.style = o.style;
   q.fill = fill;
   Row row{sweep, source, size, renderer.scene().triangleCount(), render::fillMethodName(fill)};
-  row.passes = timeFrames(renderer, q, o.repeats, &row.fragments);
-  row.listMs = sum(row.passes);
+  const FrameTiming t = timeFrames(renderer, q, o.repeats);
+  row.passes = t.passes;
+  row.fragments = t.fragments;
+  row.listMs = passSum(row.passes);
   render::RenderRequest floor = q;
   floor.style = "unsorted";
-  row.floorMs = sum(timeFrames(renderer, floor, o.repeats, nullptr));
+  row.floorMs = passSum(timeFrames(renderer, floor, o.repeats).passes);
   return row;
 }
 
@@ -173,7 +155,25 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--fill", o->fill, "scatter, list or both")->capture_default_str();
   render->add_option("--style", o->style, "style to time")->capture_default_str();
   render->add_option("--repeats", o->repeats, "timed frames per configuration (median)")->capture_default_str()->check(CLI::Range(1, 100));
-  render->callback([o] { runBenchRender(*o); });
+  auto scene = std::make_shared<SceneBenchOptions>();
+  render->add_option("--scene", scene->scene,
+                     "time one scene instead of the sweep: a glTF file or builtin:NAME (with --camera, --size, --frames; "
+                     "--style may then list several styles, comma-separated: the first is the ratio's reference)");
+  render->add_option("--camera", scene->camera, "with --scene: \"eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG\"");
+  render->add_option("--size", scene->size, "with --scene: image size WxH")->capture_default_str();
+  render->add_option("--frames", scene->frames, "with --scene: timed frames (median)")->capture_default_str()->check(CLI::Range(1, 1000));
+  render->add_option("--set", scene->settings, "with --scene: style parameter key=value (repeatable)");
+  render->callback([o, scene, render] {
+    if (scene->scene.empty()) {
+      for (const char* only : {"--camera", "--size", "--frames", "--set"})
+        if (render->count(only) > 0) throw std::invalid_argument(std::string(only) + " needs --scene");
+      return runBenchRender(*o);
+    }
+    scene->styles = splitList(o->style);
+    scene->json = o->json;
+    runSceneBench(*scene);
+  });
+  addBenchAll(*bench);
   addDiffusionBench(*bench);
   addPeelBench(*bench);
   addDynamicBench(*bench);

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "app/commands.hpp"
+#include "app/gl_option.hpp"
 
 int main(int argc, char** argv) {
   CLI::App app{"tlab - Transparency Lab: illustrative transparency rendering and perceptual studies"};
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
   tlab::app::addAnalyzeCommand(app);
   tlab::app::addDropCommand(app);
   tlab::app::addVersionCommand(app);
+  tlab::app::addGlOptions(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

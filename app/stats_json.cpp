@@ -1,5 +1,7 @@
 #include "app/stats_json.hpp"
 
+#include "app/gl_option.hpp"
+
 namespace tlab::app {
 
 nlohmann::json cameraToJson(const render::Camera& c, int width, int height) {
@@ -26,8 +28,9 @@ nlohmann::json statsToJson(const render::RenderStats& s, const gpu::GpuInfo& gpu
           {"triangles", s.triangles},
           {"pass_ms", passes},
           {"passes_run", order},
+          {"operations", s.operations},
           {"camera", cameraToJson(s.camera, s.width, s.height)},
-          {"gpu", {{"renderer", gpu.renderer}, {"version", gpu.version}}}};
+          {"gpu", gpuInfoToJson(gpu)}};
 }
 
 }  // namespace tlab::app

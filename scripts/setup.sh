@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool imagemagick chromium
   clang libclang-rt-14-dev time e2fsprogs
+  python3-vtk9  # bench/vtk_compare.py (run by hand)
 )
 
 missing=()

@@ -33,6 +33,8 @@ std::u32string decodeUtf8(std::string_view text) {
   return out;
 }
 
+std::string defaultFont() { return render::dejavuFontPath("DejaVuSans.ttf"); }
+
 TextPainter::TextPainter(const std::string& fontPath) : font_(new FontInfo(fontPath)) {}
 
 TextPainter::~TextPainter() { delete font_; }

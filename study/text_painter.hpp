@@ -10,12 +10,13 @@
 
 namespace tlab::study {
 
-inline constexpr const char* kDefaultFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+// DejaVu Sans, from $TLAB_FONT_DIR when set (renderer/image/font_rasterizer.hpp).
+std::string defaultFont();
 
 class TextPainter {
  public:
   // Throws std::runtime_error naming the font file when it cannot be read or parsed.
-  explicit TextPainter(const std::string& fontPath = kDefaultFont);
+  explicit TextPainter(const std::string& fontPath = defaultFont());
   ~TextPainter();
   TextPainter(const TextPainter&) = delete;
   TextPainter& operator=(const TextPainter&) = delete;

@@ -1,5 +1,6 @@
 #include "renderer/image/font_rasterizer.hpp"
 
+#include <cstdlib>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -13,6 +14,11 @@
 #pragma GCC diagnostic pop
 
 namespace tlab::render {
+
+std::string dejavuFontPath(const std::string& name) {
+  const char* dir = std::getenv("TLAB_FONT_DIR");
+  return (dir && *dir ? std::string(dir) : std::string("/usr/share/fonts/truetype/dejavu")) + "/" + name;
+}
 
 struct FontRasterizer::Font {
   std::vector<unsigned char> bytes;

@@ -14,6 +14,10 @@ struct GlyphBitmap {
   std::vector<unsigned char> coverage;  // width * height, 0..255
 };
 
+// A DejaVu font file (Debian's fonts-dejavu-core): $TLAB_FONT_DIR/NAME when that variable is set
+// (a relocatable bundle carries its fonts: scripts/bundle.sh), else /usr/share/fonts/truetype/dejavu/NAME.
+std::string dejavuFontPath(const std::string& name);
+
 class FontRasterizer {
  public:
   // Throws std::runtime_error naming the file when it cannot be read or parsed.

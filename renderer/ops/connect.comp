@@ -38,40 +38,126 @@ vec2 gradientOf(uint f) {
   return vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
 }
 
-// ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3).
-float continuity(uint i, uint j, ivec2 d) {
+// What ε reads of a fragment, loaded once per fragment rather than once per comparison.
+struct Surfel {
+  float z;
+  vec2 g;      // ∇z per pixel
+  vec3 n;
+  uint comp;   // connected component (0 without ids)
+};
+Surfel surfel(uint f) {
+  Surfel s;
+  s.z = depthOf(f);
+  s.g = gradientOf(f);
+  s.n = normalOf(f);
 #ifdef TLAB_HAS_IDS
-  // Different connected components are never neighbours.
-  if (((sorted[fragWord(i, TLAB_OFF_IDS)] >> 16) & 0x7FFFu) != ((sorted[fragWord(j, TLAB_OFF_IDS)] >> 16) & 0x7FFFu))
-    return 1.0 / 0.0;
+  s.comp = (sorted[fragWord(f, TLAB_OFF_IDS)] >> 16) & 0x7FFFu;
+#else
+  s.comp = 0u;
 #endif
-  float predicted = depthOf(i) + dot(vec2(d), gradientOf(i));
-  float epsZ = abs(predicted - depthOf(j)) / uObjectRadius;  // Eq. 1
-  float epsN = 1.0 - dot(normalOf(i), normalOf(j));          // Eq. 2
-  return uWz * epsZ + uWn * epsN;                            // Eq. 3
+  return s;
+}
+
+// ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3); fragments of
+// different connected components are never neighbours.
+float continuity(Surfel i, Surfel j, ivec2 d) {
+  if (i.comp != j.comp) return 1.0 / 0.0;
+  float predicted = i.z + dot(vec2(d), i.g);
+  float epsZ = abs(predicted - j.z) / uObjectRadius;  // Eq. 1
+  float epsN = 1.0 - dot(i.n, j.n);                   // Eq. 2
+  return uWz * epsZ + uWn * epsN;                     // Eq. 3
 }
 
 const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
 
+// ε ≥ wz·εz because εn = 1 − n_i·n_j ≥ 0 (up to rounding: kEpsNSlack covers a dot product of two
+// unit normals a few ulps above 1). So once wz·|Δz|/r_obj passes the best ε found, no fragment
+// further away in depth can match better: lists are sorted by depth, and the searches below walk
+// outwards from the predicted depth and stop there. Same result as comparing all pairs (ties go to
+// the lower index, as in a front-to-back scan), in O(log n + matches) instead of O(n) per query.
+const float kEpsNSlack = 1e-4;
+bool beyond(float depthGap, float bestEps) {
+  return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps + abs(bestEps) * 1e-5;
+}
+
+// First index in [head, head + count) whose depth is ≥ z. Neighbouring lists mostly hold the
+// same surfaces in the same order, so the answer is tried at `hint` (the layer being matched)
+// first, and found by binary search over the sorted list otherwise.
+bool isLowerBound(uint head, uint count, float z, uint k) {
+  return k <= count && (k == count || depthOf(head + k) >= z) && (k == 0u || depthOf(head + k - 1u) < z);
+}
+uint lowerBound(uint head, uint count, float z, uint hint) {
+  if (isLowerBound(head, count, z, hint)) return hint;
+  uint lo = 0u, hi = count;
+  while (lo < hi) {
+    uint mid = (lo + hi) >> 1;
+    if (depthOf(head + mid) < z) lo = mid + 1u;
+    else hi = mid;
+  }
+  return lo;
+}
+
+// Keeps j when it matches a better than the best so far (lower index on a tie), with its record.
+void consider(Surfel a, uint j, ivec2 d, inout uint best, inout float bestEps, inout Surfel bestSurfel) {
+  Surfel sj = surfel(j);
+  float e = continuity(a, sj, d);
+  if (e < bestEps || (e == bestEps && e < 1.0 / 0.0 && j < best)) {
+    bestEps = e;
+    best = j;
+    bestSurfel = sj;
+  }
+}
+
+// The best candidate for a among pixel q's list (Alg. 2's first half).
+uint bestCandidate(Surfel a, uint layer, uint headB, uint countB, ivec2 d, out float bestEps, out Surfel bestSurfel) {
+  uint best = NO_NEIGHBOR;
+  bestEps = 1.0 / 0.0;
+  bestSurfel = a;
+  float predicted = a.z + dot(vec2(d), a.g);
+  uint start = lowerBound(headB, countB, predicted, min(layer, countB));
+  for (uint k = start; k < countB && !beyond(depthOf(headB + k) - predicted, bestEps); ++k)
+    consider(a, headB + k, d, best, bestEps, bestSurfel);
+  for (uint k = start; k > 0u && !beyond(predicted - depthOf(headB + k - 1u), bestEps); --k)
+    consider(a, headB + k - 1u, d, best, bestEps, bestSurfel);
+  return best;
+}
+
 // Alg. 2: the best candidate for fragment a among the list of pixel q, unless some other fragment
-// of a's own list is an even better match for that candidate (the relation must be mutual).
-uint findNeighbor(uint a, uint headA, uint countA, uint headB, uint countB, ivec2 d) {
+// of a's own list is an even better match for that candidate (the relation must be mutual). The
+// other fragments predict with their own gradients, so their window in depth is widened by
+// maxStep = max |d·∇z| over a's list.
+uint findNeighbor(uint a, Surfel sa, uint headA, uint countA, uint headB, uint countB, ivec2 d, float maxStep) {
+#ifdef TLAB_ALL_PAIRS
+  // The reference: every pair, as Alg. 2 is written (tests check the search above against it).
   uint best = NO_NEIGHBOR;
   float bestEps = 1.0 / 0.0;
   for (uint k = 0u; k < countB; ++k) {
-    float e = continuity(a, headB + k, d);
+    float e = continuity(sa, surfel(headB + k), d);
     if (e < bestEps) {
       bestEps = e;
       best = headB + k;
     }
   }
   if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
-  for (uint k = 0u; k < countA; ++k) {
-    uint a2 = headA + k;
-    if (a2 != a && continuity(a2, best, d) < bestEps) return NO_NEIGHBOR;
-  }
+  Surfel sb = surfel(best);
+  for (uint k = 0u; k < countA; ++k)
+    if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
   return best;
+#else
+  float bestEps;
+  Surfel sb;
+  uint best = bestCandidate(sa, a - headA, headB, countB, d, bestEps, sb);
+  if (best == NO_NEIGHBOR) return NO_NEIGHBOR;
+  uint start = lowerBound(headA, countA, sb.z, a - headA);
+  for (uint k = start; k < countA && !beyond(depthOf(headA + k) - sb.z - maxStep, bestEps); ++k)
+    if (headA + k != a && continuity(surfel(headA + k), sb, d) < bestEps) return NO_NEIGHBOR;
+  for (uint k = start; k > 0u && !beyond(sb.z - depthOf(headA + k - 1u) - maxStep, bestEps); --k)
+    if (headA + k - 1u != a && continuity(surfel(headA + k - 1u), sb, d) < bestEps) return NO_NEIGHBOR;
+  return best;
+#endif
 }
+
+bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < uWidth && q.y < uHeight; }
 
 void main() {
   uint pixel = linearInvocation();
@@ -81,20 +167,36 @@ void main() {
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
 #if TLAB_PHASE == 1
+  vec4 maxStep = vec4(0.0);  // max |d·∇z| over this list, per direction
+  for (uint layer = 0u; layer < n; ++layer) {
+    vec2 g = abs(gradientOf(head + layer));
+    maxStep = max(maxStep, vec4(g.x, g.x, g.y, g.y));
+  }
+  uvec4 qHead = uvec4(0u), qCount = uvec4(0u);  // the 4 adjacent lists (empty beyond the image)
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = xy + kDirections[k];
+    if (!inside(q)) continue;
+    uint qp = uint(q.y * uWidth + q.x);
+    qHead[k] = pixelHead[qp];
+    qCount[k] = pixelCount[qp];
+  }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
+    Surfel sf = surfel(f);
     uint link[4];
-    for (int k = 0; k < 4; ++k) {
-      ivec2 q = xy + kDirections[k];
-      link[k] = NO_NEIGHBOR;
-      if (q.x < 0 || q.y < 0 || q.x >= uWidth || q.y >= uHeight) continue;
-      uint qp = uint(q.y * uWidth + q.x);
-      link[k] = findNeighbor(f, head, n, pixelHead[qp], pixelCount[qp], kDirections[k]);
-    }
+    for (int k = 0; k < 4; ++k)
+      link[k] = findNeighbor(f, sf, head, n, qHead[k], qCount[k], kDirections[k], maxStep[k]);
     links[f] = uvec4(link[0], link[1], link[2], link[3]);
   }
 #else
   float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+  uvec4 qHead = uvec4(0u);  // heads of the adjacent lists, to turn a link into a layer
+  uint outside = 0u;        // adjacent pixels beyond the image edge
+  for (int k = 0; k < 4; ++k) {
+    ivec2 q = xy + kDirections[k];
+    if (inside(q)) qHead[k] = pixelHead[uint(q.y * uWidth + q.x)];
+    else ++outside;
+  }
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
     uvec4 link = links[f];
@@ -109,8 +211,7 @@ void main() {
         continue;
       }
       ++found;
-      ivec2 q = xy + kDirections[k];
-      uint neighborLayer = j - pixelHead[uint(q.y * uWidth + q.x)];
+      uint neighborLayer = j - qHead[k];
       nextToSilhouette = nextToSilhouette || layer < neighborLayer;
       underSilhouette = underSilhouette || layer > neighborLayer;
     }
@@ -118,7 +219,9 @@ void main() {
     // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
     float b = 0.0, g = 0.0;
     uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;
-    if (found < 4u) { b = 1.0; free &= ~FREE_BETA; }          // boundary or silhouette (red)
+    // A neighbour beyond the image edge is unknown, not missing: the frame cuts the surface, it
+    // is no silhouette (issue #20: zoomed-in views drew the frame as one).
+    if (found + outside < 4u) { b = 1.0; free &= ~FREE_BETA; }  // boundary or silhouette (red)
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
     if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
     alpha[f] = alphaInit;

@@ -6,10 +6,12 @@
 namespace tlab::render {
 
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
-                                                     const SmartSettings& settings, float objectRadius) {
+                                                     const SmartSettings& settings, float objectRadius,
+                                                     NeighborSearch search) {
   auto fields = std::make_unique<TransparencyFields>(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   gpu::ShaderDefines defines = buffer.layout().defines();
   for (const auto& d : fields->defines()) defines.push_back(d);
+  if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
   buffer.bindSorted();
   fields->bindCurrent();
   for (const char* phase : {"1", "2"}) {

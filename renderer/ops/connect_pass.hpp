@@ -10,8 +10,13 @@
 
 namespace tlab::render {
 
+// How a fragment's neighbour is found in the adjacent list: by binary search from the predicted
+// depth with a bound on ε (the default), or by comparing all pairs (the reference for tests).
+enum class NeighborSearch { Bounded, AllPairs };
+
 // Allocates the fields for the buffer's fragments and runs the pass.
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
-                                                     const SmartSettings& settings, float objectRadius);
+                                                     const SmartSettings& settings, float objectRadius,
+                                                     NeighborSearch search = NeighborSearch::Bounded);
 
 }  // namespace tlab::render

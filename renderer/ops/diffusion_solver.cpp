@@ -1,12 +1,17 @@
 #include "renderer/ops/diffusion_solver.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
 #include "renderer/gpu/gl_error.hpp"
 
 namespace tlab::render {
 
 namespace {
 constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/field_bindings.glsl
-constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;
+constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;  // also the bits of the change record
+constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
   program.use();  // (callers may have set further uniforms on it already)
@@ -15,39 +20,64 @@ void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda
   gpu::dispatchLinear(fragments);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
+
+std::string fixed(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
 }  // namespace
 
 DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings)
     : settings_(settings),
       shaders_(shaders),
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
-      spreadDiffusion_(&shaders.compute("ops/spread_field.comp")) {}
+      spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
+      changed_(sizeof(std::uint32_t)) {}
 
-const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const {
+const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
   gpu::ShaderDefines d;
   if (jacobi) d.emplace_back("TLAB_JACOBI", "1");
-  if (fused) {
+  if (!settings_.diffusesAlpha()) d.emplace_back("TLAB_SKIP_ALPHA", "1");
+  if (fused.any()) {
     d.emplace_back("TLAB_FUSED_SPREAD", "1");
-    for (const auto& f : fields.defines()) d.push_back(f);
+    if (fused.beta) d.emplace_back("TLAB_HAS_BETA", "1");
+    if (fused.gamma) d.emplace_back("TLAB_HAS_GAMMA", "1");
   }
   const auto& program = shaders_.compute("ops/diffuse_alpha.comp", d);
-  if (fused) {
-    program.use();
+  program.use();
+  glUniform1i(program.uniform("uNormalized"), settings_.normalizedLaplacian ? 1 : 0);
+  if (fused.any()) {
     glUniform1f(program.uniform("uLambdaBeta"), static_cast<float>(settings_.lambdaBeta));
     glUniform1f(program.uniform("uLambdaGamma"), static_cast<float>(settings_.lambdaGamma));
   }
   return program;
 }
 
-void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const {
+int DiffusionSolver::alphaDispatches() const {
+  if (!settings_.diffusesAlpha()) return 0;
+  if (settings_.scheme == DiffusionScheme::Implicit) return settings_.jacobiSweeps;
+  if (settings_.scheme == DiffusionScheme::Explicit) return 1;
+  return substepsFor(settings_.lambdaAlpha, settings_.explicitBound());
+}
+
+void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, Spread fused) const {
   const std::size_t n = fields.fragments();
   const double lambda = settings_.lambdaAlpha;
+  const Spread none;
   // After the first dispatch of a fused step, β and γ are done: swap them to current.
   const auto afterFirst = [&](bool first) {
-    if (!(first && fusedSpread)) return;
-    if (fields.hasBeta()) fields.swap(Field::Beta);
-    if (fields.hasGamma()) fields.swap(Field::Gamma);
+    if (!first) return;
+    if (fused.beta) fields.swap(Field::Beta);
+    if (fused.gamma) fields.swap(Field::Gamma);
   };
+  if (!settings_.diffusesAlpha()) {  // α uniform: the spreading alone, in one dispatch
+    if (!fused.any()) return;
+    fields.bindCurrent();
+    run(alphaProgram(false, fused), n, lambda);
+    afterFirst(true);
+    return;
+  }
   if (settings_.scheme == DiffusionScheme::Implicit) {
     // Backward Euler (I + λL)α' = α: keep α in the scratch buffer, Jacobi sweeps from α.
     glCopyNamedBufferSubData(fields.current(Field::Alpha).id(), fields.scratch().id(), 0, 0,
@@ -55,17 +85,17 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     for (int sweep = 0; sweep < settings_.jacobiSweeps; ++sweep) {
       fields.bindCurrent();
-      run(alphaProgram(true, fusedSpread && sweep == 0, fields), n, lambda);
+      run(alphaProgram(true, sweep == 0 ? fused : none), n, lambda);
       fields.swap(Field::Alpha);
       afterFirst(sweep == 0);
     }
     return;
   }
-  // Explicit (λ ≤ 1/4) or sub-stepped: m steps of λ/m cover the same diffusion time λ.
-  const int m = settings_.scheme == DiffusionScheme::Explicit ? 1 : substepsFor(lambda);
+  // Explicit (λ within the bound) or sub-stepped: m steps of λ/m cover the same diffusion time λ.
+  const int m = alphaDispatches();
   for (int k = 0; k < m; ++k) {
     fields.bindCurrent();
-    run(alphaProgram(false, fusedSpread && k == 0, fields), n, lambda / m);
+    run(alphaProgram(false, k == 0 ? fused : none), n, lambda / m);
     fields.swap(Field::Alpha);
     afterFirst(k == 0);
   }
@@ -73,7 +103,7 @@ void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, bool fusedSpread)
 
 void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const {
   const std::size_t n = fields.fragments();
-  const int m = settings_.spreadByMax ? 1 : substepsFor(lambda);
+  const int m = settings_.spreadByMax ? 1 : substepsFor(lambda, kExplicitStableLambdaSum);
   for (int k = 0; k < m; ++k) {
     fields.bindPair(field, kFieldIn, kFieldOut);
     const auto& program = settings_.spreadByMax ? *spreadMax_ : *spreadDiffusion_;
@@ -84,29 +114,92 @@ void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lam
   }
 }
 
-void DiffusionSolver::step(TransparencyFields& fields) const {
+void DiffusionSolver::step(TransparencyFields& fields) const { step(fields, {fields.hasBeta(), fields.hasGamma()}); }
+
+void DiffusionSolver::step(TransparencyFields& fields, Spread spread) const {
   if (fields.fragments() == 0) return;
   // Eq. 9 spreading rides along with the first α dispatch; Eq. 8 spreading needs its own passes.
-  const bool fused = settings_.spreadByMax && (fields.hasBeta() || fields.hasGamma());
-  diffuseAlpha(fields, fused);
-  if (!fused) {
-    if (fields.hasBeta()) spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
-    if (fields.hasGamma()) spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
+  diffuseAlpha(fields, settings_.spreadByMax ? spread : Spread{});
+  if (!settings_.spreadByMax) {
+    if (spread.beta) this->spread(fields, Field::Beta, settings_.lambdaBeta, kFreeBeta);
+    if (spread.gamma) this->spread(fields, Field::Gamma, settings_.lambdaGamma, kFreeGamma);
   }
   gpu::checkGl("the diffusion solver");
 }
 
+// Eq. 9 settles after ⌈1/λ⌉ steps: a value carried over a longer path is 1 − λ·length ≤ 0, and
+// fields never drop below 0. Steps beyond that change nothing and are left out (λ = 0 never settles).
+int DiffusionSolver::spreadSteps(double lambda) const {
+  if (!settings_.spreadByMax || lambda <= 0) return settings_.iterations;
+  return std::min(settings_.iterations, static_cast<int>(std::ceil(1.0 / lambda - 1e-9)));
+}
+
+// Whether a fused step changed β (bit 2) or γ (bit 4) anywhere; clears the record for the next.
+unsigned DiffusionSolver::takeChanges() const {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t bits = 0;
+  changed_.download(&bits, sizeof bits);
+  changed_.clearToZero();
+  return bits;
+}
+
 void DiffusionSolver::solve(TransparencyFields& fields) const {
-  for (int i = 0; i < settings_.iterations; ++i) step(fields);
+  const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
+  const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
+  bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was
+  betaRun_ = gammaRun_ = 0;
+  changed_.clearToZero();
+  changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
+  for (int i = 0; i < settings_.iterations; ++i) {
+    const Spread spread{betaMoves && i < betaSteps, gammaMoves && i < gammaSteps};
+    if (!settings_.diffusesAlpha() && !spread.any()) break;
+    step(fields, spread);
+    betaRun_ += spread.beta ? 1 : 0;
+    gammaRun_ += spread.gamma ? 1 : 0;
+    // A step that changes nothing is a fixed point of Eq. 9: the next would not change it either.
+    // Checked after steps 1, 2, 4, 8, ... (each check waits for the GPU).
+    if (settings_.spreadByMax && spread.any() && (i & (i + 1)) == 0) {
+      const unsigned bits = takeChanges();
+      betaMoves = betaMoves && (!spread.beta || (bits & kFreeBeta) != 0);
+      gammaMoves = gammaMoves && (!spread.gamma || (bits & kFreeGamma) != 0);
+    }
+  }
 }
 
 int DiffusionSolver::dispatchesPerStep() const {
-  const int alpha = settings_.scheme == DiffusionScheme::Implicit ? settings_.jacobiSweeps
-                    : settings_.scheme == DiffusionScheme::Explicit ? 1
-                                                                    : substepsFor(settings_.lambdaAlpha);
-  if (settings_.spreadByMax) return alpha;  // fused into the first α dispatch
-  return alpha + (settings_.silhouettes ? substepsFor(settings_.lambdaBeta) : 0) +
-         (settings_.halos ? substepsFor(settings_.lambdaGamma) : 0);
+  const int alpha = alphaDispatches();
+  if (settings_.spreadByMax) return alpha > 0 ? alpha : (settings_.silhouettes || settings_.halos ? 1 : 0);
+  return alpha + (settings_.silhouettes ? substepsFor(settings_.lambdaBeta, kExplicitStableLambdaSum) : 0) +
+         (settings_.halos ? substepsFor(settings_.lambdaGamma, kExplicitStableLambdaSum) : 0);
+}
+
+std::vector<std::string> DiffusionSolver::operations() const {
+  std::vector<std::string> ops;
+  const std::string n = std::to_string(settings_.iterations) + " steps";
+  if (!settings_.diffusesAlpha()) {
+    ops.push_back("alpha diffusion skipped (" + std::string(settings_.iterations > 0 && settings_.lambdaAlpha > 0
+                                                                  ? "initial alpha uniform: alpha_init=constant"
+                                                                  : "no diffusion time") + ")");
+  } else {
+    const char* scheme = settings_.scheme == DiffusionScheme::Implicit ? "implicit"
+                         : settings_.scheme == DiffusionScheme::Explicit ? "explicit"
+                                                                         : "substep";
+    ops.push_back("alpha diffusion (Eq. 8, " + std::string(settings_.normalizedLaplacian ? "normalized" : "sum") +
+                  " Laplacian, " + scheme + ", lambda " + fixed(settings_.lambdaAlpha) + ", " + n + ", " +
+                  std::to_string(alphaDispatches()) + " dispatch(es) per step)");
+  }
+  const std::string how = settings_.spreadByMax ? "Eq. 9 max" : "Eq. 8 diffusion";
+  // Steps run (after a solve) or planned, of the n asked for.
+  const auto steps = [&](double lambda, int run) {
+    const int k = run >= 0 ? run : spreadSteps(lambda);
+    if (k == settings_.iterations) return n;
+    return std::to_string(k) + " of " + n + ": settled" + (run >= 0 ? "" : " after 1/lambda");
+  };
+  if (settings_.silhouettes) ops.push_back("beta spreading (" + how + ", " + steps(settings_.lambdaBeta, betaRun_) + ")");
+  if (settings_.halos) ops.push_back("gamma spreading (" + how + ", " + steps(settings_.lambdaGamma, gammaRun_) + ")");
+  if (!settings_.halos) ops.push_back("gamma skipped (halos=off)");
+  if (!settings_.silhouettes) ops.push_back("beta skipped (silhouettes=off)");
+  return ops;
 }
 
 }  // namespace tlab::render

@@ -1,7 +1,12 @@
 #pragma once
 // The solve pass (Carnecky Sec. 5.4): n steps of α diffusion (Eq. 8; explicit, sub-stepped or
 // implicit — see ops/diffuse_alpha.comp for the stability bound) and β/γ spreading (Eq. 9 or
-// Eq. 8), each step a ping-pong compute pass over all fragments.
+// Eq. 8), each step a ping-pong compute pass over all fragments. What a scene does not need is
+// left out: no α diffusion when α starts uniform (Eq. 4), no γ with halos off, no β without
+// silhouettes.
+#include <string>
+#include <vector>
+
 #include "renderer/gpu/shader_cache.hpp"
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
@@ -13,20 +18,38 @@ class DiffusionSolver {
   DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings& settings);
   // One of the n steps (time λα) on all fields.
   void step(TransparencyFields& fields) const;
+  // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps, or a
+  // step that changed nothing).
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
+  // What the solve does and leaves out (for --stats-json): one line per field, with the steps
+  // the last solve() ran (before any solve: the steps planned).
+  std::vector<std::string> operations() const;
+  // Whether a solve has anything to do (α to diffuse or β/γ to spread).
+  bool hasWork() const { return settings_.iterations > 0 && dispatchesPerStep() > 0; }
 
  private:
-  // α diffusion for one step; with `fusedSpread` the first dispatch also spreads β and γ.
-  void diffuseAlpha(TransparencyFields& fields, bool fusedSpread) const;
-  const gpu::ShaderProgram& alphaProgram(bool jacobi, bool fused, const TransparencyFields& fields) const;
+  // Which of β and γ a step spreads.
+  struct Spread {
+    bool beta = false, gamma = false;
+    bool any() const { return beta || gamma; }
+  };
+  void step(TransparencyFields& fields, Spread spread) const;
+  // α diffusion for one step; the first dispatch also spreads the fields of `fused` (Eq. 9).
+  void diffuseAlpha(TransparencyFields& fields, Spread fused) const;
+  int alphaDispatches() const;  // per step; 0 when α cannot change
+  int spreadSteps(double lambda) const;  // steps after which Eq. 9 spreading changes nothing
+  const gpu::ShaderProgram& alphaProgram(bool jacobi, Spread fused) const;
+  unsigned takeChanges() const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
+  mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
+  mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };
 
 }  // namespace tlab::render

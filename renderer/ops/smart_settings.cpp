@@ -5,13 +5,17 @@
 
 namespace tlab::render {
 
-int substepsFor(double lambda) {
-  return lambda <= kExplicitStableLambda ? 1 : static_cast<int>(std::ceil(lambda / kExplicitStableLambda - 1e-12));
+int substepsFor(double lambda, double bound) {
+  return lambda <= bound ? 1 : static_cast<int>(std::ceil(lambda / bound - 1e-12));
 }
 
-DiffusionScheme automaticScheme(double lambda) {
-  if (lambda <= kExplicitStableLambda) return DiffusionScheme::Explicit;
-  return substepsFor(lambda) <= kMaxAutoSubsteps ? DiffusionScheme::Substep : DiffusionScheme::Implicit;
+DiffusionScheme automaticScheme(double lambda, double bound) {
+  if (lambda <= bound) return DiffusionScheme::Explicit;
+  return substepsFor(lambda, bound) <= kMaxAutoSubsteps ? DiffusionScheme::Substep : DiffusionScheme::Implicit;
+}
+
+double SmartSettings::explicitBound() const {
+  return normalizedLaplacian ? kExplicitStableLambdaNormalized : kExplicitStableLambdaSum;
 }
 
 SmartSettings SmartSettings::from(const StyleParams& params) {
@@ -29,15 +33,19 @@ SmartSettings SmartSettings::from(const StyleParams& params) {
   s.silhouettes = params.is("silhouettes", "on");
   s.wz = params.number("wz");
   s.wn = params.number("wn");
+  s.normalizedLaplacian = params.is("laplacian", "normalized");
   const std::string& solver = params.choice("solver");
   s.jacobiSweeps = static_cast<int>(std::lround(params.number("jacobi_sweeps")));
   if (solver == "implicit") s.scheme = DiffusionScheme::Implicit;
   else if (solver == "explicit") s.scheme = DiffusionScheme::Explicit;
   else if (solver == "substep") s.scheme = DiffusionScheme::Substep;
-  else s.scheme = automaticScheme(s.lambdaAlpha);
-  if (s.scheme == DiffusionScheme::Explicit && s.lambdaAlpha > kExplicitStableLambda)
-    throw std::invalid_argument("style 'smart': solver=explicit is unstable for lambda_alpha > 0.25 (Eq. 8 needs "
-                                "lambda*4 <= 1 on the 4-neighbour graph); use solver=auto, substep or implicit");
+  else s.scheme = automaticScheme(s.lambdaAlpha, s.explicitBound());
+  if (s.scheme == DiffusionScheme::Explicit && s.lambdaAlpha > s.explicitBound())
+    throw std::invalid_argument(s.normalizedLaplacian
+                                    ? "style 'smart': solver=explicit is unstable for lambda_alpha > 1 with laplacian=normalized "
+                                      "(Eq. 8 needs lambda <= 1); use solver=auto, substep or implicit"
+                                    : "style 'smart': solver=explicit is unstable for lambda_alpha > 0.25 with laplacian=sum (Eq. 8 "
+                                      "needs lambda*4 <= 1 on the 4-neighbour graph); use solver=auto, substep or implicit");
   return s;
 }
 

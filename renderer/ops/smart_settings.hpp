@@ -21,22 +21,32 @@ struct SmartSettings {
   bool halos = true;              // γ field
   bool silhouettes = true;        // β field
   double wz = 1.0, wn = 1.0;      // Eq. 3
-  DiffusionScheme scheme = DiffusionScheme::Substep;
+  bool normalizedLaplacian = true;  // Eq. 8's Laplacian: mean of the neighbours − α, or their sum
+  DiffusionScheme scheme = DiffusionScheme::Explicit;
   int jacobiSweeps = 10;          // per implicit step
+
+  // The largest λα one explicit step of Eq. 8 takes without losing the maximum principle.
+  double explicitBound() const;
+  // Whether the α field can change at all: not when every fragment starts at the same α (Eq. 4),
+  // since a uniform field is a fixed point of Eq. 8 with Neumann boundaries.
+  bool diffusesAlpha() const { return iterations > 0 && lambdaAlpha > 0 && adaptiveAlpha; }
 
   static SmartSettings from(const StyleParams& params);
 };
 
-// The explicit scheme of Eq. 8 with the 4-neighbour graph Laplacian Σ_j (α_j − α_i) keeps the
-// maximum principle (no oscillation, values stay in [0, 1]) iff λ·deg ≤ 1: λ ≤ 1/4.
-constexpr double kExplicitStableLambda = 0.25;
+// The explicit scheme of Eq. 8 keeps the maximum principle (no oscillation, values stay in
+// [0, 1]) iff every fragment's weight of its neighbours sums to at most 1: λ ≤ 1 with the
+// normalised Laplacian (mean of the neighbours − α_i), λ ≤ 1/4 with the sum Σ_j (α_j − α_i) on
+// the 4-neighbour graph.
+constexpr double kExplicitStableLambdaNormalized = 1.0;
+constexpr double kExplicitStableLambdaSum = 0.25;
 
-// Sub-steps needed so that each explicit step has λ/m ≤ 1/4.
-int substepsFor(double lambda);
+// Sub-steps needed so that each explicit step has λ/m ≤ bound.
+int substepsFor(double lambda, double bound);
 
-// solver=auto: explicit for λ ≤ 1/4, sub-stepped up to kMaxAutoSubsteps sub-steps (λ ≤ 2), and
+// solver=auto: explicit up to the bound, sub-stepped up to kMaxAutoSubsteps sub-steps, and
 // implicit beyond, where sub-stepping would cost more passes than the Jacobi sweeps.
 constexpr int kMaxAutoSubsteps = 8;
-DiffusionScheme automaticScheme(double lambda);
+DiffusionScheme automaticScheme(double lambda, double bound);
 
 }  // namespace tlab::render

@@ -38,6 +38,8 @@ class RenderPass {
   virtual ~RenderPass() = default;
   virtual std::string name() const = 0;
   virtual void run(FrameContext& frame) = 0;
+  // What the pass computes and what it leaves out for these parameters (for --stats-json).
+  virtual std::vector<std::string> operations() const { return {}; }
 };
 
 // Reads an RGBA float SSBO of width*height texels in GL order (row 0 = bottom) into the image,

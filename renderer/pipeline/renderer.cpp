@@ -65,13 +65,18 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   }
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
                      scene_.background, buffer_.get(), image, shaders_, &drawOrder_, kbuffer_.get()};
-  for (const auto& pass : style.passes(params)) timer.time(pass->name(), [&] { pass->run(frame); });
+  std::vector<std::string> operations;
+  for (const auto& pass : style.passes(params)) {
+    timer.time(pass->name(), [&] { pass->run(frame); });
+    for (auto& op : pass->operations()) operations.push_back(pass->name() + ": " + op);
+  }
   gpu::checkGl("rendering style " + style.name());
 
   if (stats) {
     *stats = RenderStats{};
     stats->triangles = gpuScene_.triangleCount();
     stats->passMilliseconds = timer.passes();
+    stats->operations = std::move(operations);
     stats->camera = camera;
     stats->width = request.width;
     stats->height = request.height;

@@ -40,6 +40,7 @@ struct RenderStats {
   std::string fillMethod;
   std::vector<std::string> fragmentProperties;
   std::vector<std::pair<std::string, double>> passMilliseconds;  // in the order they ran
+  std::vector<std::string> operations;  // "pass: what it did or left out", where a pass says
   Camera camera;
   int width = 0, height = 0;
 };

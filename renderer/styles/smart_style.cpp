@@ -11,29 +11,41 @@ namespace {
 // What the three passes of one frame share.
 struct SmartFrame {
   SmartSettings settings;
+  bool solves = false;  // whether a solve pass follows the connect pass
   std::unique_ptr<TransparencyFields> fields;
 };
 
+// The links (Alg. 2), initial α and boundary conditions; when no solve pass is scheduled (nothing
+// to diffuse or spread) it reports what was left out.
 class ConnectRenderPass final : public RenderPass {
  public:
   explicit ConnectRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
   std::string name() const override { return "connect"; }
   void run(FrameContext& frame) override {
     frame_->fields = connectFragments(*frame.buffer, frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
+    if (!frame_->solves) operations_ = DiffusionSolver(frame.shaders, frame_->settings).operations();
   }
+  std::vector<std::string> operations() const override { return operations_; }
 
  private:
   std::shared_ptr<SmartFrame> frame_;
+  std::vector<std::string> operations_;
 };
 
 class SolveRenderPass final : public RenderPass {
  public:
   explicit SolveRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
   std::string name() const override { return "solve"; }
-  void run(FrameContext& frame) override { DiffusionSolver(frame.shaders, frame_->settings).solve(*frame_->fields); }
+  void run(FrameContext& frame) override {
+    const DiffusionSolver solver(frame.shaders, frame_->settings);
+    solver.solve(*frame_->fields);
+    operations_ = solver.operations();
+  }
+  std::vector<std::string> operations() const override { return operations_; }
 
  private:
   std::shared_ptr<SmartFrame> frame_;
+  std::vector<std::string> operations_;
 };
 
 class SmartComposePass final : public RenderPass {
@@ -64,8 +76,10 @@ std::vector<ParamSpec> SmartStyle::params() const {
       ParamSpec::choice("silhouettes", "on", {"on", "off"}, "the β field (silhouette highlights)"),
       ParamSpec::number("wz", 1, 0, 1e6, "weight of εz in Eq. 3"),
       ParamSpec::number("wn", 1, 0, 1e6, "weight of εn in Eq. 3"),
+      ParamSpec::choice("laplacian", "normalized", {"normalized", "sum"},
+                        "Eq. 8's Laplacian: mean of the neighbours − α (explicit up to λα = 1) or their sum (up to 1/4)"),
       ParamSpec::choice("solver", "auto", {"auto", "explicit", "substep", "implicit"},
-                        "α diffusion scheme: auto (explicit for λα ≤ 1/4, sub-stepped up to λα = 2, implicit beyond), or forced"),
+                        "α diffusion scheme: auto (explicit up to the reading's bound, sub-stepped up to 8 sub-steps, implicit beyond), or forced"),
       ParamSpec::number("jacobi_sweeps", 10, 1, 10000, "Jacobi sweeps per implicit step"),
   };
 }
@@ -86,7 +100,9 @@ std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& p
   frame->settings = SmartSettings::from(params);
   std::vector<std::unique_ptr<RenderPass>> p;
   p.push_back(std::make_unique<ConnectRenderPass>(frame));
-  if (frame->settings.iterations > 0) p.push_back(std::make_unique<SolveRenderPass>(frame));
+  frame->solves =
+      frame->settings.iterations > 0 && (frame->settings.diffusesAlpha() || frame->settings.silhouettes || frame->settings.halos);
+  if (frame->solves) p.push_back(std::make_unique<SolveRenderPass>(frame));
   p.push_back(std::make_unique<SmartComposePass>(frame));
   return p;
 }

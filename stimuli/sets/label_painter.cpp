@@ -55,13 +55,7 @@ void fillSegment(render::Image& image, glm::dvec2 a, glm::dvec2 b, double width,
 
 }  // namespace
 
-std::string LabelPainter::defaultFontPath() {
-#ifdef TLAB_LABEL_FONT
-  return TLAB_LABEL_FONT;
-#else
-  return "/usr/share/fonts/truetype/dejavu/DejaVuSans-Bold.ttf";
-#endif
-}
+std::string LabelPainter::defaultFontPath() { return render::dejavuFontPath("DejaVuSans-Bold.ttf"); }
 
 LabelPainter::LabelPainter(const std::string& fontPath) : font_(std::make_unique<Font>(fontPath)) {}
 

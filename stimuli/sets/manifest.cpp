@@ -36,7 +36,8 @@ nlohmann::json cameraJson(const render::Camera& c) {
 
 nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vector<render::Scene>& scenes,
                                    const std::vector<RenderedStimulus>& stimuli,
-                                   const std::vector<std::pair<std::size_t, std::string>>& floorPlans) {
+                                   const std::vector<std::pair<std::size_t, std::string>>& floorPlans,
+                                   const gpu::GpuInfo& gpu) {
   nlohmann::json styles = nlohmann::json::array();
   for (std::size_t i = 0; i < spec.styles.size(); ++i) styles.push_back({{"index", i + 1}, {"name", spec.styles[i].name}, {"settings", spec.styles[i].settings}});
   nlohmann::json sceneList = nlohmann::json::array();
@@ -76,6 +77,7 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
                    {"size", {spec.width, spec.height}},
                    {"seed", spec.seed},
                    {"booklet", spec.booklet}}},
+          {"gl", {{"backend", gpu.backend}, {"vendor", gpu.vendor}, {"renderer", gpu.renderer}, {"version", gpu.version}}},
           {"styles", styles},
           {"scenes", sceneList},
           {"stimuli", list}};

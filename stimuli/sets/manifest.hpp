@@ -1,7 +1,7 @@
 #pragma once
 // manifest.json of a stimulus set: the set's parameters and seeds, each scene, and per image its
 // style, view camera, probe positions (2-D pixel and 3-D world), question and ground truth (when
-// the probe source provides it) and SHA-256. No time stamps or absolute paths: the same inputs
+// the probe source provides it) and SHA-256, and the GL backend/vendor/renderer/version that drew them. No time stamps or absolute paths: the same inputs
 // give the same bytes.
 #include <string>
 #include <utility>
@@ -18,6 +18,7 @@ nlohmann::json cameraJson(const render::Camera& camera);
 
 nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vector<render::Scene>& scenes,
                                    const std::vector<RenderedStimulus>& stimuli,
-                                   const std::vector<std::pair<std::size_t, std::string>>& floorPlans);
+                                   const std::vector<std::pair<std::size_t, std::string>>& floorPlans,
+                                   const gpu::GpuInfo& gpu);
 
 }  // namespace tlab::stimuli

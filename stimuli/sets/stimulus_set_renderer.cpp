@@ -198,6 +198,7 @@ class SetJob {
     request.camera = cameras_[u.scene][u.view];
     request.timePasses = false;
     const render::Image image = worker.renderer->render(request);
+    recordGpu(*worker.context);
     const std::string stem = stimulusStem(u, sceneEntry, style);
     RenderedStimulus base;
     base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = *request.camera;
@@ -222,6 +223,16 @@ class SetJob {
     return out;
   }
 
+  // The GL that rendered the set, for the manifest (every worker runs the same --gl choice).
+  void recordGpu(const gpu::GpuContext& context) {
+    const std::lock_guard lock(gpuMutex_);
+    if (gpu_.renderer.empty()) gpu_ = context.info();
+  }
+
+ public:
+  gpu::GpuInfo gpu() const { return gpu_; }
+
+ private:
   RenderedStimulus save(RenderedStimulus s, const render::Image& image) {
     const std::vector<std::uint8_t> png = render::encodePng(image);
     s.image = "images/" + s.id + ".png";
@@ -236,6 +247,8 @@ class SetJob {
   const ProbeSource& probes_;
   fs::path out_;
   ProgressBar* progress_ = nullptr;
+  std::mutex gpuMutex_;
+  gpu::GpuInfo gpu_;
   std::vector<std::vector<render::Camera>> cameras_;                          // [scene][view]
   std::vector<std::vector<std::vector<std::vector<ProbeQuestion>>>> questions_;  // [scene][view][probe set]
   std::vector<Unit> probeUnits_, renderUnits_;
@@ -295,7 +308,8 @@ StimulusSetResult StimulusSetRenderer::render(const StimulusSetSpec& spec, const
   StimulusSetResult result;
   result.stimuli = job.results();
   const auto plans = writeFloorPlans(spec, out);
-  result.manifest = stimulusSetManifest(spec, scenes, result.stimuli, plans);
+  result.gpu = job.gpu();
+  result.manifest = stimulusSetManifest(spec, scenes, result.stimuli, plans, result.gpu);
   result.manifestPath = (out / "manifest.json").string();
   const std::string text = result.manifest.dump(2) + "\n";
   render::writeFileAtomically(result.manifestPath, std::vector<std::uint8_t>(text.begin(), text.end()));

@@ -9,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "renderer/gpu/gpu_context.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "stimuli/sets/probe_source.hpp"
 #include "stimuli/sets/stimulus_set_spec.hpp"
@@ -36,6 +37,7 @@ struct StimulusSetResult {
   std::vector<RenderedStimulus> stimuli;
   nlohmann::json manifest;
   std::string manifestPath, bookletPath;  // bookletPath empty when no booklet was asked for
+  gpu::GpuInfo gpu;                       // the GL that rendered it (empty when nothing was rendered)
 };
 
 class StimulusSetRenderer {

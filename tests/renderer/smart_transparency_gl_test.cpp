@@ -1,5 +1,6 @@
 // Smart transparency (Carnecky Secs. 4.4-5.5): neighbour links, boundary conditions, fields,
-// diffusion stability, compositing — against analytic or hand-computed expectations.
+// compositing — against analytic or hand-computed expectations. The solve is tested in
+// smart_diffusion_gl_test.cpp, the connect pass's search and the image edge in smart_connect_gl_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,81 +15,11 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/smart_style.hpp"
+#include "tests/renderer/smart_rig.hpp"
 #include "tests/support/gl_fixture.hpp"
 
 using namespace tlab::render;
-
-namespace {
-
-constexpr std::uint32_t kNone = 0xFFFFFFFFu;
-
-// The illustration buffer of a scene plus its connected transparency fields.
-struct SmartRig {
-  SmartRig(Scene s, int w, int h, const std::map<std::string, std::string>& settings = {})
-      : scene(std::move(s)), gpu(scene), width(w), height(h) {
-    const SmartStyle style;
-    params = style.resolve(settings);
-    smart = SmartSettings::from(params);
-    camera = scene.camera ? *scene.camera : fitCamera(scene.boundingSphere(), float(w) / float(h));
-    buffer = std::make_unique<FragmentBuffer>(shaders, w, h, FragmentLayout(style.properties(params, {gpu.componentCount()})),
-                                              FillMethod::CountScatter);
-    RasterUniforms u;
-    u.view = camera.view();
-    u.projection = camera.projection(float(w) / float(h));
-    PassTimer timer(false);
-    buffer->build(gpu, u, timer);
-    fields = connectFragments(*buffer, shaders, smart, scene.boundingSphere().radius);
-    counts = buffer->pixelCounts();
-    heads = buffer->pixelHeads();
-  }
-  // Fragment index of `layer` (0 = front) at pixel (x, y) in GL order (row 0 = bottom).
-  std::uint32_t fragment(int x, int y, int layer) const {
-    const std::size_t p = std::size_t(y) * width + x;
-    EXPECT_LT(std::uint32_t(layer), counts[p]) << "pixel " << x << "," << y;
-    return heads[p] + std::uint32_t(layer);
-  }
-
-  Scene scene;
-  GpuScene gpu;
-  tlab::gpu::ShaderCache shaders;
-  int width, height;
-  StyleParams params;
-  SmartSettings smart;
-  Camera camera;
-  std::unique_ptr<FragmentBuffer> buffer;
-  std::unique_ptr<TransparencyFields> fields;
-  std::vector<std::uint32_t> counts, heads;
-};
-
-// A large back quad at z = −1 and a front quad at z = 0 covering x < 0: a cross-section like
-// Carnecky Fig. 8, seen straight on; the front quad's edge lies between pixel columns 31 and 32.
-Scene occluderScene() {
-  Scene s;
-  SceneObject back;
-  back.name = "back";
-  back.mesh = makeQuad({0, 0, -1}, {20, 0, 0}, {0, 20, 0});
-  back.frontColor = {0.2f, 0.4f, 0.9f, 1};
-  SceneObject front;
-  front.name = "front";
-  front.mesh = makeQuad({-10, 0, 0}, {10, 0, 0}, {0, 20, 0});
-  front.frontColor = {0.9f, 0.5f, 0.1f, 1};
-  s.objects = {back, front};
-  s.camera = Camera{};
-  s.camera->eye = {0, 0, 5};
-  s.camera->nearPlane = 1;
-  s.camera->farPlane = 10;
-  return s;
-}
-
-double linkEnergy(const std::vector<float>& alpha, const std::vector<glm::uvec4>& links) {
-  double e = 0;
-  for (std::size_t i = 0; i < links.size(); ++i)
-    for (int k = 0; k < 4; ++k)
-      if (links[i][k] != kNone) e += std::pow(double(alpha[i]) - alpha[links[i][k]], 2);
-  return e;
-}
-
-}  // namespace
+using namespace tlab::testing;
 
 TEST(NeighborLinks, FlatQuadInteriorFragmentsHaveFourMutualNeighbours) {
   SmartRig rig(loadScene("builtin:quad-stack?n=1"), 40, 30);
@@ -242,76 +173,6 @@ TEST_P(AdaptiveAlpha, AccumulatesExactlyS) {
 }
 INSTANTIATE_TEST_SUITE_P(Layers, AdaptiveAlpha, ::testing::Values(1, 2, 3, 7, 16, 64));
 
-// Eq. 9 spreads β from the boundary so that 1 − β = λβ·d at graph distance d (until it reaches 0).
-TEST(FieldSpreading, MaxPropagationIsLinearInDistance) {
-  const int w = 40, h = 40, n = 12;
-  SmartRig rig(loadScene("builtin:quad-stack?n=1"), w, h,
-               {{"iterations", std::to_string(n)}, {"lambda_beta", "0.05"}, {"halos", "off"}});
-  DiffusionSolver(rig.shaders, rig.smart).solve(*rig.fields);
-  const auto beta = rig.fields->read(Field::Beta);
-  for (int y = 0; y < h; ++y)
-    for (int x = 0; x < w; ++x) {
-      const int d = std::min({x, y, w - 1 - x, h - 1 - y});
-      const float expected = d <= n ? 1.0f - 0.05f * d : 0.0f;
-      ASSERT_NEAR(beta[rig.fragment(x, y, 0)], expected, 1e-5) << x << "," << y;
-    }
-}
-
-// Stability of α diffusion for any λα and iteration count: fields stay in [0, 1], no NaN, and the
-// discrete energy Σ (α_i − α_j)² over the links never increases.
-class DiffusionStability : public ::testing::TestWithParam<std::tuple<double, std::string>> {};
-TEST_P(DiffusionStability, FieldsStayBoundedAndEnergyDecays) {
-  const auto [lambda, solver] = GetParam();
-  SmartRig rig(loadScene("builtin:open-cylinders?segments=48&rings=4"), 40, 40,
-               {{"lambda_alpha", std::to_string(lambda)}, {"solver", solver}, {"alpha_init", "adaptive"}, {"s", "0.7"}});
-  const DiffusionSolver solver_(rig.shaders, rig.smart);
-  // Forced sub-stepping at λα = 1000 costs 4000 passes per step (solver=auto goes implicit there):
-  // 20 steps of it are enough to check it.
-  const int steps = solver == "substep" && lambda > 10 ? 20 : 1000;
-  const auto links = rig.fields->readLinks();
-  double energy = linkEnergy(rig.fields->read(Field::Alpha), links);
-  ASSERT_GT(energy, 0.0);
-  for (int step = 1; step <= steps; ++step) {
-    solver_.step(*rig.fields);
-    if (step <= 20 || step == steps) {
-      const auto alpha = rig.fields->read(Field::Alpha);
-      for (float a : alpha) ASSERT_TRUE(a >= 0.0f && a <= 1.0f) << "step " << step << " alpha " << a;
-      const double e = linkEnergy(alpha, links);
-      ASSERT_LE(e, energy * (1 + 1e-5) + 1e-9) << "energy grew at step " << step;
-      energy = e;
-      for (float b : rig.fields->read(Field::Beta)) ASSERT_TRUE(b >= 0.0f && b <= 1.0f);
-      for (float g : rig.fields->read(Field::Gamma)) ASSERT_TRUE(g >= 0.0f && g <= 1.0f);
-    }
-  }
-}
-// Every scheme at every λα, except explicit above its bound (refused: see the next test).
-std::vector<std::tuple<double, std::string>> stabilityCases() {
-  std::vector<std::tuple<double, std::string>> cases;
-  for (double lambda : {0.0, 0.25, 1.0, 10.0, 1000.0})
-    for (const char* solver : {"auto", "explicit", "substep", "implicit"})
-      if (std::string(solver) != "explicit" || lambda <= kExplicitStableLambda) cases.emplace_back(lambda, solver);
-  return cases;
-}
-INSTANTIATE_TEST_SUITE_P(LambdaAndScheme, DiffusionStability, ::testing::ValuesIn(stabilityCases()),
-                         [](const auto& info) {
-                           const double l = std::get<0>(info.param);
-                           return "lambda_" + (l == 0.25 ? std::string("quarter") : std::to_string(int(l))) + "_" +
-                                  std::get<1>(info.param);
-                         });
-
-TEST(DiffusionStability, ExplicitAboveTheBoundIsRefusedWithTheReason) {
-  try {
-    SmartStyle().resolve({{"solver", "explicit"}, {"lambda_alpha", "1"}});
-    FAIL();
-  } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("unstable"), std::string::npos) << e.what();
-  }
-  EXPECT_EQ(automaticScheme(0.25), DiffusionScheme::Explicit);
-  EXPECT_EQ(automaticScheme(1.0), DiffusionScheme::Substep);
-  EXPECT_EQ(automaticScheme(1000.0), DiffusionScheme::Implicit);
-  EXPECT_EQ(substepsFor(1.0), 4);
-}
-
 // Degenerate inputs: an empty image, a pixel with one fragment, a one-pixel-wide strip, more than
 // 100 layers in a pixel; every image finite and within [0, 1].
 TEST(SmartTransparency, DegenerateScenesStayFinite) {
@@ -352,6 +213,23 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
   std::vector<std::string> ran;
   for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
   EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "solve", "compose"}));
+  // Initial α uniform (Eq. 4, the default): the solve only spreads β and γ, and says so; γ
+  // (λγ = 0.1) settles within 10 of the 20 steps.
+  ASSERT_EQ(stats.operations.size(), 3u);
+  EXPECT_EQ(stats.operations[0], "solve: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)");
+  EXPECT_EQ(stats.operations[1].rfind("solve: beta spreading (Eq. 9 max, ", 0), 0u) << stats.operations[1];
+  EXPECT_EQ(stats.operations[2].rfind("solve: gamma spreading (Eq. 9 max, ", 0), 0u) << stats.operations[2];
+  EXPECT_NE(stats.operations[2].find(" of 20 steps: settled)"), std::string::npos) << stats.operations[2];
+  // Nothing to solve at all: uniform α, no silhouettes, no halos.
+  r.settings = {{"halos", "off"}, {"silhouettes", "off"}};
+  renderer.render(r, &stats);
+  ran.clear();
+  for (const auto& p : stats.passMilliseconds) ran.push_back(p.first);
+  EXPECT_EQ(ran, (std::vector<std::string>{"fill", "sort", "connect", "compose"}));
+  EXPECT_EQ(stats.operations, (std::vector<std::string>{
+                                  "connect: alpha diffusion skipped (initial alpha uniform: alpha_init=constant)",
+                                  "connect: gamma skipped (halos=off)", "connect: beta skipped (silhouettes=off)"}));
+  r.settings = {};
   // One connected component: no component ids in the records.
   EXPECT_EQ(stats.fragmentProperties, (std::vector<std::string>{"depth", "triangle", "color", "normal", "depth_gradient"}));
   r.settings = {{"iterations", "0"}};

@@ -50,6 +50,10 @@ TEST_F(StimulusSetCli, WritesLabelledImagesManifestFloorPlanAndBooklet) {
   // open cylinders: 2 views × 2 styles × 1 question; walkthrough: 1 view × 2 styles unlabelled;
   // nested spheres: 1 view × 2 styles × 1 layer-index question.
   ASSERT_EQ(manifest["stimuli"].size(), 8u);
+  // The GL that drew the set (issue #19): backend and renderer strings of the context.
+  EXPECT_NE(manifest["gl"]["backend"].get<std::string>(), "");
+  EXPECT_NE(manifest["gl"]["renderer"].get<std::string>(), "");
+  EXPECT_NE(manifest["gl"]["version"].get<std::string>().find("4."), std::string::npos) << manifest["gl"];
   for (const auto& s : manifest["stimuli"]) {
     const std::string bytes = readText((root_ / "a" / s["image"].get<std::string>()).string());
     ASSERT_FALSE(bytes.empty());

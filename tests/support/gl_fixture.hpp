@@ -1,6 +1,7 @@
 #pragma once
-// One headless OSMesa context for a whole GL test binary (*_gl_test.cpp): created before the
-// first test, destroyed after the last.
+// One headless context for a whole GL test binary (*_gl_test.cpp): created before the first test,
+// destroyed after the last. TLAB_GL chooses it (ctest runs renderer_gl_tests through EGL and
+// through OSMesa: tests/renderer/CMakeLists.txt).
 #include <gtest/gtest.h>
 
 #include <memory>

@@ -1,0 +1,27 @@
+#pragma once
+// tlab bench render --scene (any scene, camera, styles, size) and tlab bench all (every style at
+// 512² and 1024² on the standard scenes, then the seeds' own comparisons): steady-state per-frame
+// and per-pass ms, fps, fragments and the GL that ran them — the table a lab runs on its own GPU.
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace tlab::app {
+
+struct SceneBenchOptions {
+  std::string scene;
+  std::string camera;
+  std::vector<std::string> styles = {"constant"};
+  std::vector<std::string> settings;  // --set key=value for every style
+  std::string size = "512x512";
+  int frames = 5;
+  bool json = false;
+};
+
+// One row per style; the last column is each style's frame time over the first style's.
+void runSceneBench(const SceneBenchOptions& o);
+
+void addBenchAll(CLI::App& bench);
+
+}  // namespace tlab::app

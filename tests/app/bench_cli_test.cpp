@@ -1,0 +1,64 @@
+// End to end: `tlab bench render --scene` and `tlab bench all` print the table a lab runs on its
+// GPU (structure only: speed is never asserted).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/support/run_command.hpp"
+
+using namespace tlab::testing;
+
+namespace {
+const std::string kTlab = TLAB_EXE;
+}  // namespace
+
+TEST(BenchCli, OneSceneInSeveralStylesWithTheGlAndWhatRan) {
+  const auto r = runCommand(kTlab + " bench render --scene builtin:nested-spheres?n=2 --style constant,smart --size 32x24 "
+                                    "--frames 2 --gl osmesa --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["gl"]["backend"], "osmesa");
+  EXPECT_NE(j["gl"]["renderer"].get<std::string>(), "");
+  ASSERT_EQ(j["rows"].size(), 2u);
+  const auto& constant = j["rows"][0];
+  const auto& smart = j["rows"][1];
+  EXPECT_EQ(constant["style"], "constant");
+  EXPECT_EQ(constant["ratio_to_reference"], 1.0);
+  EXPECT_EQ(constant["size"], "32x24");
+  EXPECT_GT(constant["fragments"].get<double>(), 0);
+  EXPECT_EQ(smart["fragments"], constant["fragments"]);
+  EXPECT_GT(smart["frame_ms"].get<double>(), 0);
+  EXPECT_TRUE(smart["pass_ms"].contains("connect")) << smart;
+  EXPECT_FALSE(smart["operations"].empty()) << smart;
+}
+
+TEST(BenchCli, AllStylesOnTheGivenScenes) {
+  const auto r = runCommand(kTlab + " bench all --scenes builtin:sphere --sizes 16x16 --frames 1 --comparisons dynamic --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto styles = runCommand(kTlab + " render --help").out;
+  ASSERT_GE(j["rows"].size(), 8u);
+  EXPECT_EQ(j["rows"][0]["style"], "constant");
+  for (const auto& row : j["rows"]) {
+    EXPECT_EQ(row["scene"], "builtin:sphere");
+    EXPECT_NE(styles.find("  " + row["style"].get<std::string>() + ":"), std::string::npos) << row;
+    EXPECT_FALSE(row.contains("error")) << row;
+  }
+  // The seed's comparison ran with the same GL: Elmqvist's dynamic against opaque.
+  ASSERT_TRUE(j["comparisons"].contains("dynamic")) << j["comparisons"];
+  EXPECT_GT(j["comparisons"]["dynamic"]["ratio"].get<double>(), 0);
+  EXPECT_FALSE(j["comparisons"].contains("peel"));
+}
+
+TEST(BenchCli, SceneOptionsWithoutASceneAndUnknownStylesAreOneLine) {
+  for (const auto& [args, part] : {std::pair{"bench render --quick --size 64x64", "--size needs --scene"},
+                                   std::pair{"bench render --scene builtin:sphere --style constant,glass", "unknown style 'glass'"},
+                                   std::pair{"bench render --scene builtin:sphere --size 12", "--size"},
+                                   std::pair{"bench all --scenes builtin:sphere --sizes 8x8 --frames 1 --comparisons peel,fast",
+                                             "'fast' is not buckets, dynamic or peel"}}) {
+    const auto r = runCommand(kTlab + " " + args);
+    EXPECT_EQ(r.exitCode, 1) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+  }
+}
