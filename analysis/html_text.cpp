@@ -10,7 +10,7 @@
 #include <string_view>
 
 #include "analysis/analysis_error.hpp"
-#include "analysis/document_text.hpp"
+#include "analysis/document_module.hpp"
 
 namespace tlab::analysis {
 
@@ -71,7 +71,7 @@ void appendText(const xmlNode* root, std::string& out) {
 
 }  // namespace
 
-std::string htmlText(std::string_view html, const std::string& source) {
+std::string htmlTextWithLibxml2(std::string_view html, const std::string& source) {
   const int options = HTML_PARSE_RECOVER | HTML_PARSE_NOERROR | HTML_PARSE_NOWARNING | HTML_PARSE_NONET;
   const std::unique_ptr<xmlDoc, DocFree> doc(
       htmlReadMemory(html.data(), static_cast<int>(html.size()), source.c_str(), nullptr, options));

@@ -49,7 +49,8 @@ void run(const RunCommandOptions& o) {
   study::Store& store = *storeOwner;
   const study::RunOptions run{o.participant, o.resume, TLAB_VERSION "+" TLAB_GIT_REVISION};
   study::checkParticipant(store, e, run);  // refuse before opening a window
-  auto window = openParticipantWindow(width, height, "tlab run - " + e.id);
+  // The title bar is seen by the participant: the participant title, never the experiment's id or title.
+  auto window = openParticipantWindow(width, height, "tlab run - " + (e.participantTitle.empty() ? std::string("study") : e.participantTitle));
   if (o.fullscreen) study::makeFullscreen(*window);
   study::TextPainter painter;
   study::StimulusLibrary stimuli(study::stimulusDirectoryFor(o.db), sceneCatalog(), painter);

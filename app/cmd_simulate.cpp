@@ -133,6 +133,8 @@ void run(const SimulateOptions& o) {
   s.paceSeconds = o.pace;
   s.observerSeed = e.seed;
   s.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  const gpu::GpuInfo gl = context->info();
+  s.renderer = study::DisplayInfo{gl.backend, gl.vendor, gl.renderer, gl.version, 0, 0, 0, 0, 0, 0};
   s.log = [](const std::string& line) {
     std::printf("%s\n", line.c_str());
     std::fflush(stdout);

@@ -5,7 +5,8 @@
 namespace tlab::study {
 
 std::string DisplayInfo::json() const {
-  return nlohmann::json{{"gl_vendor", glVendor},
+  return nlohmann::json{{"gl_backend", glBackend},
+                        {"gl_vendor", glVendor},
                         {"gl_renderer", glRenderer},
                         {"gl_version", glVersion},
                         {"window", {windowWidth, windowHeight}},

@@ -33,6 +33,7 @@ struct Feedback {
 
 // The display a window session runs on (stored with the session as JSON).
 struct DisplayInfo {
+  std::string glBackend;  // "glfw" for a window; the headless backend (egl/osmesa) that rendered a simulated session's stimuli
   std::string glVendor, glRenderer, glVersion;
   int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
   int refreshHz = 0;     // the monitor's, as GLFW reports it (0: unknown)

@@ -50,6 +50,9 @@ class SimulatedObserver final : public Responder {
   bool showFeedback(const TrialView&, const Feedback&) override { return true; }
   bool takeBreak(const BreakSpec& spec) override;
   std::vector<ResponderEvent> takeEvents() override;
+  // The headless GL that rendered what the observer sees, recorded with its session (no window).
+  void setRenderer(std::optional<DisplayInfo> renderer) { renderer_ = std::move(renderer); }
+  std::optional<DisplayInfo> display() const override { return renderer_; }
 
   double skill() const { return skill_; }
   // The model's decision for one question (pure given the seed).
@@ -64,6 +67,7 @@ class SimulatedObserver final : public Responder {
   std::int64_t clockNs_ = 0;
   int questionnaires_ = 0;
   std::vector<ResponderEvent> events_;
+  std::optional<DisplayInfo> renderer_;
 };
 
 }  // namespace tlab::study

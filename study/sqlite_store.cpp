@@ -113,7 +113,16 @@ SqliteStore::SqliteStore(const std::string& path, OpenMode mode) : path_(path) {
   if (mode == OpenMode::Write || (mode == OpenMode::Create && existing)) requireSqliteFile(path);
   db_ = std::make_unique<Database>(path, mode);
   // Everything before the first write only reads: a foreign, damaged or newer file stays untouched.
-  const int version = requireStudyDatabase();
+  int version = 0;
+  try {
+    version = requireStudyDatabase();
+  } catch (const StoreError& e) {
+    // A log with changes not yet in the file, in a folder we may not write: SQLite cannot replay it.
+    if (mode == OpenMode::Read && (e.code() & 0xff) == SQLITE_CANTOPEN && std::filesystem::exists(path + "-wal"))
+      throw StoreError(path + ": its write-ahead log (" + path + "-wal) holds changes that must be replayed, and the folder is "
+                       "read-only: copy " + path + " and " + path + "-wal together to a writable folder and read the copy", e.code());
+    throw;
+  }
   checkIntegrity();
   if (mode == OpenMode::Read) {
     if (version < kSchemaVersion) {

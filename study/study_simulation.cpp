@@ -27,6 +27,7 @@ SimulationResult simulateStudy(const Experiment& experiment, Store& store, Stimu
                        "'; continue with --resume or use a new database");
     if (existing && existing->status != "active") continue;
     SimulatedObserver observer(experiment.observer, options.observerSeed, id, options.paceSeconds);
+    observer.setRenderer(options.renderer);
     const SessionResult r = runner.run({id, existing.has_value(), options.tlabVersion}, observer);
     result.participantsRun += 1;
     result.trialsAnswered += r.answeredNow;

@@ -21,6 +21,7 @@ struct SimulationOptions {
   double paceSeconds = 0.0;         // real seconds slept per simulated second
   std::uint64_t observerSeed = 0;   // seeds the observers (power analysis: one per replicate)
   std::string tlabVersion = "unknown";
+  std::optional<DisplayInfo> renderer;  // the headless GL that rendered the stimuli (stored with each session)
   std::function<void(const std::string&)> log;        // participant-level lines
   std::function<void(const TrialProgress&)> progress;  // after each committed response
 };

@@ -26,6 +26,10 @@ std::string displayText(const std::string& json) {
   const auto size = [](const nlohmann::json& v) {
     return v.is_array() && v.size() == 2 ? std::to_string(v[0].get<int>()) + "x" + std::to_string(v[1].get<int>()) : std::string("?");
   };
+  const auto window = d.value("window", nlohmann::json());
+  if (!window.is_array() || window.size() != 2 || window[0].get<int>() == 0)
+    return "no window (simulated); stimuli rendered by " + d.value("gl_renderer", std::string("?")) + " (" +
+           d.value("gl_backend", std::string("?")) + ", GL " + d.value("gl_version", std::string("?")) + ")";
   const int hz = d.value("refresh_hz", 0);
   return d.value("gl_renderer", std::string("?")) + " (" + d.value("gl_vendor", std::string("?")) + ", GL " +
          d.value("gl_version", std::string("?")) + "); window " + size(d.value("window", nlohmann::json())) + ", framebuffer " +

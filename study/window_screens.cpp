@@ -252,6 +252,7 @@ bool WindowResponder::takeBreak(const BreakSpec& spec) {
 
 std::optional<DisplayInfo> WindowResponder::display() const {
   DisplayInfo d;
+  d.glBackend = "glfw";
   auto text = [](GLenum name) {
     const auto* s = reinterpret_cast<const char*>(glGetString(name));
     return std::string(s ? s : "");

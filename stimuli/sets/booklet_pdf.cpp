@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "stimuli/sets/booklet_code.hpp"
 #include <cairo-pdf.h>
 
 #include "renderer/image/image.hpp"
@@ -106,15 +107,16 @@ void writeBookletPdf(const std::string& path, const StimulusSetSpec& spec, const
     return CAIRO_STATUS_SUCCESS;
   };
   cairo_surface_t* surface = cairo_pdf_surface_create_for_stream(append, &bytes, kPageWidth, kPageHeight);
-  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, spec.name.c_str());
+  cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_TITLE, "Stimulus booklet");  // the set's name may name conditions
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATOR, "tlab stimuli");
   cairo_pdf_surface_set_metadata(surface, CAIRO_PDF_METADATA_CREATE_DATE, "2000-01-01T00:00:00Z");
   cairo_t* cr = cairo_create(surface);
   for (std::size_t i = 0; i < stimuli.size(); ++i) {
     const RenderedStimulus& s = stimuli[i];
     cairo_set_source_rgb(cr, 0, 0, 0);
-    text(cr, kMargin, kMargin, spec.name + "  —  stimulus " + std::to_string(i + 1) + " of " + std::to_string(stimuli.size()), 14, true);
-    text(cr, kMargin, kMargin + 16, s.id, 8);
+    // Nothing on a page names a condition: a page number and a neutral code the manifest maps back.
+    text(cr, kMargin, kMargin, "Page " + std::to_string(i + 1) + " of " + std::to_string(stimuli.size()), 14, true);
+    text(cr, kMargin, kMargin + 16, "code " + bookletCode(s.sha256), 8);
     double imageHeight = 0.0;
     drawImage(cr, (std::filesystem::path(folder) / s.image).string(), kMargin, kMargin + 26, kPageWidth - 2 * kMargin, 430, &imageHeight);
     double y = kMargin + 26 + imageHeight + 24;

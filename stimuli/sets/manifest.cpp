@@ -1,5 +1,7 @@
 #include "stimuli/sets/manifest.hpp"
 
+#include "stimuli/sets/booklet_code.hpp"
+
 #include <filesystem>
 
 namespace tlab::stimuli {
@@ -57,6 +59,7 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
     nlohmann::json item = {{"id", s.id},
                            {"image", s.image},
                            {"sha256", s.sha256},
+                           {"booklet_code", bookletCode(s.sha256)},
                            {"scene", s.scene + 1},
                            {"style", s.style + 1},
                            {"view", {{"index", s.view + 1}, {"azimuth", view.azimuthDegrees}, {"elevation", view.elevationDegrees},

@@ -2,6 +2,10 @@
 // byte-identical across runs and across --jobs; errors naming the set file's line.
 #include <gtest/gtest.h>
 
+#include <set>
+
+#include "analysis/document_text.hpp"
+
 #include <filesystem>
 
 #include <nlohmann/json.hpp>
@@ -82,6 +86,18 @@ TEST_F(StimulusSetCli, WritesLabelledImagesManifestFloorPlanAndBooklet) {
   EXPECT_FALSE(task["question"]["probes"].empty());
   const std::string pdf = readText((root_ / "a" / "booklet.pdf").string());
   EXPECT_EQ(pdf.substr(0, 5), "%PDF-");
+  // Nothing on a page names a condition: each page shows a neutral code that the manifest maps back.
+  const std::string pages = tlab::analysis::pdfText((root_ / "a" / "booklet.pdf").string());
+  std::set<std::string> codes;
+  for (const auto& item : manifest["stimuli"]) {
+    const std::string code = item["booklet_code"];
+    EXPECT_EQ(code.size(), 8u);
+    codes.insert(code);
+    EXPECT_NE(pages.find("code " + code), std::string::npos) << code;
+    EXPECT_EQ(pages.find(item["id"].get<std::string>()), std::string::npos) << "the page names " << item["id"];
+  }
+  EXPECT_EQ(codes.size(), manifest["stimuli"].size());
+  for (const char* style : {"constant", "smart", "opaque"}) EXPECT_EQ(pages.find(style), std::string::npos) << style;
 }
 
 TEST_F(StimulusSetCli, SameInputsGiveTheSameBytesForAnyNumberOfJobs) {
