@@ -50,20 +50,6 @@ void onCursor(GLFWwindow* w, double x, double y) {
 }
 void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close, 0, 0, 0, 0, monotonicNs()}); }
 
-std::string encodeUtf8(char32_t c) {
-  std::string s;
-  if (c < 0x80) s += char(c);
-  else if (c < 0x800) s += {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
-  else if (c < 0x10000) s += {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
-  else s += {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
-  return s;
-}
-
-void popLastCodepoint(std::string& s) {
-  while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();
-  if (!s.empty()) s.pop_back();
-}
-
 std::string hint(tasks::AnswerKind kind) {
   using tasks::AnswerKind;
   switch (kind) {
@@ -397,7 +383,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
           pausedNs += monotonicNs() - start;
           dirty = true;
         } else if (in.key == GLFW_KEY_BACKSPACE) {
-          popLastCodepoint(typed);
+          dropLastCodepoint(typed);
           dirty = true;
         } else if (in.key == GLFW_KEY_ENTER || in.key == GLFW_KEY_KP_ENTER) {
           std::string text = typed;
@@ -423,7 +409,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
           dirty = true;
         }
       } else if (in.kind == Input::Kind::Char) {
-        const std::string ch = encodeUtf8(in.codepoint);
+        const std::string ch = utf8(in.codepoint);
         if (q.answerKind == tasks::AnswerKind::Letter && ch.size() == 1 &&
             tasks::patternLetters().find(char(std::toupper(ch[0]))) != std::string::npos)
           answer = submit(std::string(1, char(std::toupper(ch[0]))), in.tNs);

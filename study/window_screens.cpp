@@ -19,20 +19,6 @@ namespace tlab::study {
 
 namespace {
 
-std::string utf8(char32_t c) {
-  std::string s;
-  if (c < 0x80) s += char(c);
-  else if (c < 0x800) s += {char(0xC0 | (c >> 6)), char(0x80 | (c & 0x3F))};
-  else if (c < 0x10000) s += {char(0xE0 | (c >> 12)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
-  else s += {char(0xF0 | (c >> 18)), char(0x80 | ((c >> 12) & 0x3F)), char(0x80 | ((c >> 6) & 0x3F)), char(0x80 | (c & 0x3F))};
-  return s;
-}
-
-void dropLastCodepoint(std::string& s) {
-  while (!s.empty() && (static_cast<unsigned char>(s.back()) & 0xC0) == 0x80) s.pop_back();
-  if (!s.empty()) s.pop_back();
-}
-
 nlohmann::json buttonCentres(const std::vector<Button>& buttons) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& b : buttons) j[b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
