@@ -13,8 +13,8 @@
 #include "analysis/text_table.hpp"
 #include "app/analysis_text.hpp"
 #include "app/commands.hpp"
-#include "study/study_analysis.hpp"
-#include "study/open_store.hpp"
+#include "study/store/study_analysis.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

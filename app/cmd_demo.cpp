@@ -10,7 +10,7 @@
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
-#include "study/study_demo.hpp"
+#include "study/simulate/study_demo.hpp"
 
 namespace tlab::app {
 

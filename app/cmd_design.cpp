@@ -7,10 +7,10 @@
 
 #include "analysis/text_table.hpp"
 #include "app/commands.hpp"
-#include "study/counterbalancing.hpp"
-#include "study/experiment_file.hpp"
-#include "study/session_plan.hpp"
-#include "study/open_store.hpp"
+#include "study/design/counterbalancing.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/design/session_plan.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

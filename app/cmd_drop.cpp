@@ -6,8 +6,8 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "study/study_table.hpp"
-#include "study/open_store.hpp"
+#include "study/store/study_table.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

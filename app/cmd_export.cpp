@@ -5,8 +5,8 @@
 #include <memory>
 
 #include "app/commands.hpp"
-#include "study/csv_export.hpp"
-#include "study/open_store.hpp"
+#include "study/store/csv_export.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

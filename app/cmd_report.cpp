@@ -14,9 +14,9 @@
 #include "analysis/report_html.hpp"
 #include "analysis/report_markdown.hpp"
 #include "app/commands.hpp"
-#include "study/study_analysis.hpp"
-#include "study/open_store.hpp"
-#include "study/study_record_tables.hpp"
+#include "study/store/study_analysis.hpp"
+#include "study/store/open_store.hpp"
+#include "study/store/study_record_tables.hpp"
 
 namespace tlab::app {
 

@@ -8,11 +8,11 @@
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/window_context.hpp"
-#include "study/experiment_file.hpp"
-#include "study/simulated_observer.hpp"
-#include "study/trial_runner.hpp"
-#include "study/window_responder.hpp"
-#include "study/open_store.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/simulate/simulated_observer.hpp"
+#include "study/run/trial_runner.hpp"
+#include "study/run/window_responder.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

@@ -3,7 +3,7 @@
 // lines per participant (--trials: per committed response), then trials per second. With
 // --replicate R: a power analysis — the study repeated R times, and for each planned test how
 // often it is significant. With --calibrate carnecky|FILE.csv: the observer's parameters fitted to
-// published results by maximum likelihood (study/observer_calibration.hpp), nothing simulated.
+// published results by maximum likelihood (study/simulate/observer_calibration.hpp), nothing simulated.
 #include <unistd.h>
 
 #include <cstdio>
@@ -14,12 +14,12 @@
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
-#include "study/experiment_file.hpp"
-#include "study/observer_calibration.hpp"
-#include "study/simulated_observer.hpp"
-#include "study/power_analysis.hpp"
-#include "study/study_simulation.hpp"
-#include "study/open_store.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/simulate/observer_calibration.hpp"
+#include "study/simulate/simulated_observer.hpp"
+#include "study/simulate/power_analysis.hpp"
+#include "study/simulate/study_simulation.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 

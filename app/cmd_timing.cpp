@@ -6,8 +6,8 @@
 
 #include "analysis/text_table.hpp"
 #include "app/commands.hpp"
-#include "study/open_store.hpp"
-#include "study/timing_tables.hpp"
+#include "study/store/open_store.hpp"
+#include "study/store/timing_tables.hpp"
 
 namespace tlab::app {
 

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/styles/style.hpp"
-#include "study/scene_catalog.hpp"
+#include "study/design/scene_catalog.hpp"
 
 namespace tlab::app {
 

@@ -6,12 +6,12 @@
 
 #include <filesystem>
 
-#include "study/counterbalancing.hpp"
-#include "study/experiment_file.hpp"
-#include "study/graeco_latin_square.hpp"
-#include "study/session_plan.hpp"
-#include "study/open_store.hpp"
-#include "study/williams_design.hpp"
+#include "study/design/counterbalancing.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/design/graeco_latin_square.hpp"
+#include "study/design/session_plan.hpp"
+#include "study/store/open_store.hpp"
+#include "study/design/williams_design.hpp"
 
 using namespace tlab::study;
 

@@ -1,4 +1,4 @@
-#include "study/camera_navigator.hpp"
+#include "study/run/camera_navigator.hpp"
 
 #include <gtest/gtest.h>
 

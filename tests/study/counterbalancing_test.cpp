@@ -7,12 +7,12 @@
 #include <map>
 #include <set>
 
-#include "study/counterbalancing.hpp"
-#include "study/experiment_file.hpp"
-#include "study/graeco_latin_square.hpp"
-#include "study/order_permutations.hpp"
-#include "study/session_plan.hpp"
-#include "study/williams_design.hpp"
+#include "study/design/counterbalancing.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/design/graeco_latin_square.hpp"
+#include "study/design/order_permutations.hpp"
+#include "study/design/session_plan.hpp"
+#include "study/design/williams_design.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace tlab::study;

@@ -2,8 +2,8 @@
 // field for every kind of bad input.
 #include <gtest/gtest.h>
 
-#include "study/experiment_file.hpp"
-#include "study/form_field.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/design/form_field.hpp"
 #include "tests/study/study_test_support.hpp"
 
 using namespace tlab::study;

@@ -3,8 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "renderer/scene/builtin_scenes.hpp"
-#include "study/floor_plan.hpp"
-#include "study/screen_layout.hpp"
+#include "study/run/floor_plan.hpp"
+#include "study/run/screen_layout.hpp"
 
 using namespace tlab::study;
 

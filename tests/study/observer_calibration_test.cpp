@@ -1,6 +1,6 @@
 // The simulated observer's closed-form prediction and its calibration to published results
 // (`tlab simulate --calibrate`, issue 15 part 7). Expected values: closed forms of the model in
-// study/observer_prediction.hpp; Carnecky Table 1 for the built-in published results.
+// study/simulate/observer_prediction.hpp; Carnecky Table 1 for the built-in published results.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -10,7 +10,7 @@
 #include <sstream>
 
 #include "analysis/summary_likelihood.hpp"
-#include "study/observer_calibration.hpp"
+#include "study/simulate/observer_calibration.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 

@@ -15,7 +15,7 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
-#include "study/sqlite_database.hpp"
+#include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 
@@ -36,7 +36,9 @@ std::int64_t count(const std::string& db, const std::string& sql) {
   return s.step() ? s.integer(0) : -1;
 }
 
-// An Xvfb display of its own for the life of the object.
+// An Xvfb display of its own for the life of the object. Each test takes its own hundred display
+// numbers (window_cli_test 90-189, window_run_test 300-499, these 900-1399), so tests running in
+// parallel never share a server.
 struct Display {
   std::string name, env;
   pid_t xvfb = -1;
@@ -99,7 +101,7 @@ TEST(SessionFlowWindow, DeclinedConsentStoresOnlyTheDecision) {
   if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
   const auto dir = freshDir("flow_decline");
   const std::string db = (dir / "study.db").string();
-  Display display(dir, 400);
+  Display display(dir, 900);
   const pid_t tlab = spawnProcess(runArgs(db, "P-decline", false), (dir / "run.out").string(), (dir / "run.err").string(), {display.env});
   const auto found = runCommand(display.env + " timeout 60 xdotool search --sync --name 'tlab run' | head -1");
   const std::string window = found.out.substr(0, found.out.find('\n'));
@@ -122,11 +124,78 @@ TEST(SessionFlowWindow, DeclinedConsentStoresOnlyTheDecision) {
   EXPECT_EQ(count(db, "SELECT min(slot) FROM assignments"), 0);
 }
 
+// A participant at the keyboard (xdotool, through X and GLFW's callbacks): agrees, fills in the
+// information, trains with feedback, takes the break, answers every questionnaire item kind,
+// confirms and reads the completion code.
+TEST(SessionFlowWindow, ParticipantAcceptsAndFinishesAtTheKeyboard) {
+  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
+  const auto dir = freshDir("flow_keyboard");
+  const std::string db = (dir / "study.db").string();
+  Display display(dir, 1300);
+  const pid_t tlab = spawnProcess(runArgs(db, "P-keys", false), (dir / "run.out").string(), (dir / "run.err").string(), {display.env});
+  const auto found = runCommand(display.env + " timeout 60 xdotool search --sync --name 'tlab run' | head -1");
+  const std::string window = found.out.substr(0, found.out.find('\n'));
+  ASSERT_FALSE(window.empty()) << readText((dir / "run.err").string());
+  pause(1500);
+  const auto key = [&](const std::string& k) {
+    runCommand(display.env + " xdotool key --window " + window + " " + k);
+    pause(350);
+  };
+  const auto type = [&](const std::string& text) {
+    runCommand(display.env + " xdotool type --window " + window + " " + text);
+    key("Return");
+  };
+  key("space");  // welcome
+  key("1");      // consent: agree
+  type("34");    // age
+  key("1");      // gender: female
+  key("2");      // vision: corrected
+  key("2");      // handedness: right
+  key("Return");  // confirm the information
+  key("space");   // training instructions
+  // The plan is stored once the participant agreed: the right answers are read from it.
+  std::vector<std::string> truths;
+  {
+    Database d(db, false);
+    auto s = d.prepare("SELECT truth_json FROM trials ORDER BY sequence");
+    while (s.step()) truths.push_back(s.text(0));
+  }
+  ASSERT_EQ(truths.size(), std::size_t(kTrials));
+  type(truths[0]);
+  key("space");  // feedback
+  type(truths[1]);
+  key("space");  // feedback
+  key("space");  // training is over
+  type(truths[2]);
+  type(truths[3]);
+  pause(1200);   // the break's minimum second
+  key("space");  // continue after the break
+  type(truths[4]);
+  type(truths[5]);
+  key("4");          // ease (likert 1-5)
+  key("2");          // strategy: the shading
+  type("15");        // minutes
+  type("none");      // comments
+  key("Return");     // confirm the answers
+  key("space");      // debrief with the completion code
+  ASSERT_EQ(waitProcess(tlab), 0) << readText((dir / "run.err").string());
+  EXPECT_NE(readText((dir / "run.out").string()).find("session finished: 6 of 6 trials answered"), std::string::npos);
+  EXPECT_EQ(count(db, "SELECT count(*) FROM responses WHERE correct = 1"), kTrials);
+  EXPECT_EQ(count(db, "SELECT count(*) FROM participant_info WHERE (field = 'age' AND value = '34') OR "
+                      "(field = 'gender' AND value = 'female') OR (field = 'handedness' AND value = 'right')"),
+            3);
+  EXPECT_EQ(count(db, "SELECT count(*) FROM questionnaire_answers WHERE (item = 'ease' AND value = 4) OR (item = 'strategy' AND "
+                      "answer = 'the shading') OR (item = 'minutes' AND value = 15) OR (item = 'comments' AND answer = 'none')"),
+            4);
+  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'feedback' AND detail LIKE '%\"correct\":true%'"), 2);
+  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'break-end'"), 1);
+}
+
 TEST(SessionFlowWindow, AutopilotWalksTheWholeSessionAndTimingIsRecorded) {
   if (!haveTool("Xvfb")) GTEST_SKIP() << "needs Xvfb (scripts/setup.sh installs it)";
   const auto dir = freshDir("flow_autopilot");
   const std::string db = (dir / "study.db").string();
-  Display display(dir, 500);
+  Display display(dir, 1000);
   std::string command = display.env;
   for (const auto& a : runArgs(db, "P-auto", true)) command += " " + quoted(a);
   const auto r = runCommand(command);
@@ -149,7 +218,7 @@ TEST(SessionFlowWindow, KilledDuringABreakResumesAfterIt) {
   if (!haveTool("Xvfb")) GTEST_SKIP() << "needs Xvfb (scripts/setup.sh installs it)";
   const auto dir = freshDir("flow_break_kill");
   const std::string db = (dir / "study.db").string();
-  Display display(dir, 600);
+  Display display(dir, 1100);
   const pid_t first = spawnProcess(runArgs(db, "P-break", true), (dir / "a.out").string(), (dir / "a.err").string(),
                                    {display.env, "TLAB_STOP_AT=break:1"});
   ASSERT_TRUE(stoppedAtFaultPoint(first)) << readText((dir / "a.err").string());
@@ -174,7 +243,7 @@ TEST(SessionFlowWindow, TrainingFeedbackIsVisibleInAScreenshot) {
   if (!haveTool("Xvfb") || !haveTool("import")) GTEST_SKIP() << "needs Xvfb and ImageMagick's import (scripts/setup.sh installs both)";
   const auto dir = freshDir("flow_feedback_screenshot");
   const std::string db = (dir / "study.db").string();
-  Display display(dir, 700);
+  Display display(dir, 1200);
   const pid_t p = spawnProcess(runArgs(db, "P-feedback", true), (dir / "run.out").string(), (dir / "run.err").string(),
                                {display.env, "TLAB_STOP_AT=feedback:1"});
   ASSERT_TRUE(stoppedAtFaultPoint(p)) << readText((dir / "run.err").string());

@@ -9,10 +9,10 @@
 #include <filesystem>
 #include <thread>
 
-#include "study/csv_export.hpp"
-#include "study/experiment_file.hpp"
-#include "study/sqlite_store.hpp"
-#include "study/study_table.hpp"
+#include "study/store/csv_export.hpp"
+#include "study/design/experiment_file.hpp"
+#include "study/store/sqlite_store.hpp"
+#include "study/store/study_table.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 

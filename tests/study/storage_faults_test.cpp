@@ -11,9 +11,9 @@
 #include <filesystem>
 #include <map>
 
-#include "study/schema_migrations.hpp"
-#include "study/sqlite_store.hpp"
-#include "study/sqlite_database.hpp"
+#include "study/store/schema_migrations.hpp"
+#include "study/store/sqlite_store.hpp"
+#include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 

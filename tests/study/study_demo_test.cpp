@@ -1,13 +1,13 @@
-#include "study/study_demo.hpp"
+#include "study/simulate/study_demo.hpp"
 
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 
-#include "study/counterbalancing.hpp"
-#include "study/example_experiments.hpp"
-#include "study/experiment_file.hpp"
+#include "study/design/counterbalancing.hpp"
+#include "study/design/example_experiments.hpp"
+#include "study/design/experiment_file.hpp"
 
 namespace tlab::study {
 namespace {

@@ -9,7 +9,7 @@
 #include <fstream>
 #include <set>
 
-#include "study/sqlite_database.hpp"
+#include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 

@@ -12,9 +12,9 @@
 
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/stimulus_scenes.hpp"
-#include "study/floor_plan.hpp"
-#include "study/screen_layout.hpp"
-#include "study/sqlite_database.hpp"
+#include "study/run/floor_plan.hpp"
+#include "study/run/screen_layout.hpp"
+#include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 

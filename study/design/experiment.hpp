@@ -1,0 +1,175 @@
+#pragma once
+// An experiment as the experiment file describes it: factors and their levels (each level may set
+// the scene, the style, style settings or the camera of the stimulus), the counterbalancing of the
+// condition blocks, the tasks run in each block, training, instructions, questionnaires, the
+// analysis plan and the simulated observer's parameters. Built by ExperimentFile; pure data.
+#include <cstdint>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "study/run/camera_navigator.hpp"
+
+namespace tlab::study {
+
+enum class FactorKind { Within, Between };
+
+struct Level {
+  std::string name;
+  std::optional<std::string> scene;   // scene source (builtin:NAME?..., glTF path); "{trial}" is replaced
+  std::optional<std::string> style;   // renderer style
+  std::optional<std::string> camera;  // "eye=... target=..." (tlab render --camera)
+  std::vector<std::string> renderSettings;  // style key=value
+};
+
+struct Factor {
+  std::string name;
+  FactorKind kind = FactorKind::Within;
+  std::vector<Level> levels;
+  int levelIndex(const std::string& levelName) const;  // -1 if none
+};
+
+// How the order of the condition blocks varies between participants.
+enum class Counterbalancing {
+  Fixed,        // every participant: the conditions in factor order
+  LatinSquare,  // cyclic Latin square over the within conditions
+  Williams,     // balanced Latin square (first-order carry-over balanced; doubled for odd n)
+  GraecoLatin,  // two within factors with n levels each at once: n blocks, each level of each once
+  Permutation,  // every order of the within conditions
+  Random,       // a seeded random order per participant slot
+};
+const char* counterbalancingName(Counterbalancing c);
+
+// Which tasks a block runs.
+enum class BlockTasks {
+  All,         // every task whose `when` matches the block's condition, in task order
+  ByPosition,  // block k runs task k (Carnecky Sec. 8: tasks in a fixed order, one per block)
+};
+
+struct TaskSpec {
+  std::string id;        // name in the database and reports ("T1", "layer-index")
+  std::string task;      // tasks/ module name
+  int trials = 1;        // trials per block (each on its own scene instance when the scene uses {trial})
+  int questions = 1;     // questions (probe sets) per trial
+  int trainingTrials = 0;
+  double timeLimitSeconds = 120.0;           // per question
+  std::optional<double> trialTimeLimitSeconds;  // for all questions of a trial together (Carnecky)
+  std::vector<std::string> settings;         // task settings key=value
+  std::map<std::string, std::string> when;   // factor → level; empty: every block
+  std::optional<std::string> scene;          // overrides the condition's scene for this task ("{trial}" replaced)
+  std::string instructions;
+  // Interactive trials (Elmqvist): the window renders the scene live and the participant orbits
+  // (ABSTRACT) or walks (WALKTHROUGH); simulated observers see the start view.
+  Navigation navigation = Navigation::None;
+};
+
+// One question of a form: a participant-information field or a questionnaire item.
+enum class FieldKind { Likert, Choice, Number, Text };
+const char* fieldKindName(FieldKind kind);
+
+struct FormField {
+  std::string id;
+  std::string text;
+  FieldKind kind = FieldKind::Likert;
+  int points = 7;                    // Likert: 1..points
+  std::string lowAnchor = "strongly disagree";
+  std::string highAnchor = "strongly agree";
+  std::vector<std::string> options;  // Choice
+  double minimum = 0.0;              // Number
+  double maximum = 1e9;
+  bool integer = false;              // Number: whole numbers only
+  bool required = true;              // Choice/Number/Text: an empty answer is refused
+};
+
+struct Questionnaire {
+  std::string id;
+  std::string when = "end";  // "start", "end" or "after-block"
+  std::string title;         // shown above the items ("" → "Questionnaire")
+  std::vector<FormField> items;
+};
+
+// [consent]: shown before anything else; a decline ends the session and stores only the decline.
+struct ConsentSpec {
+  std::string text;
+  std::string accept = "I agree to take part";
+  std::string decline = "I do not agree";
+};
+
+// [breaks]: a pause screen every N test trials or blocks, at least min_seconds long.
+struct BreakSpec {
+  int every = 0;          // 0: no breaks
+  bool blocks = false;    // count blocks rather than trials
+  double minSeconds = 0.0;
+  std::string text = "Take a short break. Continue when you are ready.";
+};
+
+// [debrief]: the last screen; an optional completion code (Prolific and the like) is shown on it.
+struct DebriefSpec {
+  std::string text = "Thank you. The session is complete.";
+  std::string completionCode;
+};
+
+struct AnalysisSpec {
+  std::string title;
+  std::vector<std::string> tasks;  // task ids to include; empty: all
+  std::vector<std::string> dependentVariables;  // columns of the trial table: correct, score, rt, error, ...
+  std::vector<std::string> within;
+  std::vector<std::string> between;
+  std::vector<std::string> tests = {"anova", "t-tests", "rank-tests"};
+  double alpha = 0.05;
+};
+
+// The simulated observer (study/simulate/simulated_observer.hpp documents every parameter).
+struct ObserverParams {
+  double contrastReference = 0.15;   // local RMS contrast at which a probe counts as fully visible
+  double sensitivity = 4.0;          // slope of the logistic in visibility
+  double threshold = 0.35;           // visibility giving half the above-chance accuracy
+  double skillSpread = 0.25;         // sd of the per-participant log skill
+  double lapse = 0.03;               // probability of a random answer
+  double layerPenalty = 0.15;        // layer-index: visibility lost per layer behind the first
+  double baseSeconds = 6.0;          // median response time at full visibility
+  double slowSeconds = 12.0;         // added median time at zero visibility
+  double rtSigma = 0.35;             // lognormal sd of response times
+  double giveUpShare = 0.02;         // probability of no answer (missing)
+};
+
+struct Stimulus {
+  std::string scene = "builtin:open-cylinders";
+  std::string style = "constant";
+  std::string camera;
+  std::vector<std::string> renderSettings;
+  int width = 512;
+  int height = 512;
+};
+
+struct Experiment {
+  std::string path;         // file it was read from
+  std::string text;         // the file's text, stored in the database
+  std::string id;
+  std::string title;             // for the researcher (reports); never shown to participants
+  std::string participantTitle;  // shown on the participant's screens ("" → "Welcome")
+  std::uint64_t seed = 1;
+  int participants = 1;
+  std::vector<Factor> factors;
+  Counterbalancing counterbalancing = Counterbalancing::Fixed;
+  BlockTasks blockTasks = BlockTasks::All;
+  Stimulus stimulus;
+  std::vector<TaskSpec> tasks;
+  std::string welcome;
+  std::optional<ConsentSpec> consent;
+  std::vector<FormField> info;     // [[info]]: participant information (age, vision, ...)
+  bool trainingFeedback = false;   // [training] feedback = true
+  BreakSpec breaks;
+  DebriefSpec debrief;
+  std::vector<Questionnaire> questionnaires;
+  std::vector<AnalysisSpec> analyses;
+  ObserverParams observer;
+
+  std::vector<const Factor*> withinFactors() const;
+  std::vector<const Factor*> betweenFactors() const;
+  const Factor* factor(const std::string& name) const;
+  const TaskSpec* task(const std::string& id) const;
+};
+
+}  // namespace tlab::study

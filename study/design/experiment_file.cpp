@@ -1,0 +1,360 @@
+#include "study/design/experiment_file.hpp"
+
+#include <algorithm>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml++/toml.h>
+
+#include "renderer/scene/scene_source.hpp"
+#include "renderer/styles/style.hpp"
+#include "study/design/counterbalancing.hpp"
+#include "study/design/field_reader.hpp"
+#include "study/design/session_flow_file.hpp"
+#include "study/design/scene_catalog.hpp"
+#include "tasks/task_registry.hpp"
+
+namespace tlab::study {
+
+namespace {
+
+std::pair<int, int> parseSizeField(const FieldReader& r, const toml::table& t, const std::string& where, std::pair<int, int> fallback) {
+  const toml::node* n = t.get("size");
+  if (!n) return fallback;
+  int w = 0, h = 0;
+  char x = 0, extra = 0;
+  const std::string text = n->is_string() ? n->as_string()->get() : "";
+  std::istringstream s(text);
+  if (!(s >> w >> x >> h) || x != 'x' || (s >> extra) || w < 16 || h < 16 || w > 8192 || h > 8192)
+    r.fail(n, FieldReader::name(where, "size"), "expected \"WxH\" between 16x16 and 8192x8192");
+  return {w, h};
+}
+
+Level readLevel(const FieldReader& r, const toml::node& node, const std::string& where) {
+  Level level;
+  if (node.is_string()) {
+    level.name = node.as_string()->get();
+  } else if (const toml::table* t = node.as_table()) {
+    r.checkKeys(*t, where, {"name", "scene", "style", "camera", "settings"});
+    level.name = r.string(*t, "name", where, true);
+    if (t->get("scene")) level.scene = r.string(*t, "scene", where, true);
+    if (t->get("style")) level.style = r.string(*t, "style", where, true);
+    if (t->get("camera")) level.camera = r.string(*t, "camera", where, true);
+    level.renderSettings = r.strings(*t, "settings", where);
+  } else {
+    r.fail(&node, where, "a level is a name or a table { name = ..., scene/style/camera/settings = ... }");
+  }
+  if (level.name.empty()) r.fail(&node, where, "empty level name");
+  return level;
+}
+
+const std::set<std::string> kReservedNames = {"participant", "task", "task_id", "trial", "block", "question", "phase",
+                                              "correct", "score", "rt", "error", "partial_credit", "answered", "slot"};
+
+std::vector<Factor> readFactors(const FieldReader& r, const toml::table& root) {
+  std::vector<Factor> factors;
+  const auto tables = r.tables(root, "factors");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "factors[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"name", "kind", "levels"});
+    Factor f;
+    f.name = r.string(t, "name", where, true);
+    if (f.name.empty() || kReservedNames.count(f.name)) r.fail(t.get("name"), where + ".name", "'" + f.name + "' is empty or reserved");
+    for (const auto& g : factors)
+      if (g.name == f.name) r.fail(t.get("name"), where + ".name", "factor '" + f.name + "' is defined twice");
+    const std::string kind = r.string(t, "kind", where, false, "within");
+    if (kind == "within") f.kind = FactorKind::Within;
+    else if (kind == "between") f.kind = FactorKind::Between;
+    else r.fail(t.get("kind"), where + ".kind", "expected \"within\" or \"between\", got '" + kind + "'");
+    const toml::array* levels = t.get("levels") ? t.get("levels")->as_array() : nullptr;
+    if (!levels) r.fail(t.get("levels") ? t.get("levels") : &t, where + ".levels", "an array of at least two levels is required");
+    for (std::size_t k = 0; k < levels->size(); ++k) {
+      Level level = readLevel(r, *levels->get(k), where + ".levels[" + std::to_string(k + 1) + "]");
+      if (f.levelIndex(level.name) >= 0)
+        r.fail(levels->get(k), where + ".levels", "level '" + level.name + "' is listed twice");
+      f.levels.push_back(std::move(level));
+    }
+    if (f.levels.size() < 2) r.fail(levels, where + ".levels", "a factor needs at least two levels");
+    factors.push_back(std::move(f));
+  }
+  return factors;
+}
+
+Counterbalancing parseCounterbalancing(const FieldReader& r, const toml::table& root) {
+  const std::string text = r.string(root, "counterbalancing", "", false, "latin-square");
+  for (const auto c : {Counterbalancing::Fixed, Counterbalancing::LatinSquare, Counterbalancing::Williams,
+                       Counterbalancing::GraecoLatin, Counterbalancing::Permutation, Counterbalancing::Random})
+    if (text == counterbalancingName(c)) return c;
+  r.fail(root.get("counterbalancing"), "counterbalancing",
+         "expected fixed, latin-square, williams, graeco-latin, permutation or random, got '" + text + "'");
+}
+
+std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, const std::vector<Factor>& factors) {
+  std::vector<TaskSpec> specs;
+  const auto tables = r.tables(root, "tasks");
+  if (tables.empty()) r.fail(&root, "tasks", "at least one [[tasks]] table is required");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "tasks[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"id", "task", "trials", "questions", "training_trials", "time_limit", "trial_time_limit", "settings",
+                           "when", "instructions", "scene", "navigation"});
+    TaskSpec s;
+    s.task = r.string(t, "task", where, true);
+    s.id = r.string(t, "id", where, false, s.task);
+    for (const auto& o : specs)
+      if (o.id == s.id) r.fail(&t, where + ".id", "task id '" + s.id + "' is used twice");
+    try {
+      const auto task = tasks::makeTask(s.task);
+      s.settings = r.strings(t, "settings", where);
+      task->settings(s.settings);
+    } catch (const std::invalid_argument& e) {
+      r.fail(t.get("settings") ? t.get("settings") : t.get("task"), where, e.what());
+    }
+    s.trials = int(r.integer(t, "trials", where, 1, 1));
+    s.questions = int(r.integer(t, "questions", where, 1, 1));
+    s.trainingTrials = int(r.integer(t, "training_trials", where, 0, 0));
+    s.timeLimitSeconds = r.number(t, "time_limit", where, 120.0, 0.5, 86400.0);
+    if (t.get("trial_time_limit")) s.trialTimeLimitSeconds = r.number(t, "trial_time_limit", where, 120.0, 0.5, 86400.0);
+    s.instructions = r.string(t, "instructions", where, false);
+    if (t.get("scene")) s.scene = r.string(t, "scene", where, true);
+    if (t.get("navigation")) {
+      try {
+        s.navigation = parseNavigation(r.string(t, "navigation", where, true));
+      } catch (const std::invalid_argument& e) {
+        r.fail(t.get("navigation"), where + ".navigation", e.what());
+      }
+      // Marks and labels are drawn on the still picture: only search tasks can move the camera.
+      if (s.navigation != Navigation::None && s.task != "counting" && s.task != "pattern" && s.task != "target-discovery")
+        r.fail(t.get("navigation"), where + ".navigation",
+               "only counting, pattern and target-discovery trials can be explored live (task '" + s.task + "' marks points on the picture)");
+    }
+    if (const toml::table* when = r.table(t, "when", where)) {
+      for (auto&& [key, value] : *when) {
+        const std::string factorName(key.str());
+        const auto f = std::find_if(factors.begin(), factors.end(), [&](const Factor& x) { return x.name == factorName; });
+        if (f == factors.end()) r.fail(&value, where + ".when." + factorName, "no factor of that name");
+        if (!value.is_string() || f->levelIndex(value.as_string()->get()) < 0)
+          r.fail(&value, where + ".when." + factorName, "must name a level of factor '" + factorName + "'");
+        s.when[factorName] = value.as_string()->get();
+      }
+    }
+    specs.push_back(std::move(s));
+  }
+  return specs;
+}
+
+const std::set<std::string> kDependentVariables = {"correct", "score", "rt", "error", "partial_credit", "answered"};
+
+std::vector<AnalysisSpec> readAnalyses(const FieldReader& r, const toml::table& root, const Experiment& e) {
+  std::vector<AnalysisSpec> out;
+  const auto tables = r.tables(root, "analysis");
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    const toml::table& t = *tables[i];
+    const std::string where = "analysis[" + std::to_string(i + 1) + "]";
+    r.checkKeys(t, where, {"title", "tasks", "dv", "within", "between", "tests", "alpha"});
+    AnalysisSpec a;
+    a.title = r.string(t, "title", where, false, e.title.empty() ? e.id : e.title);
+    a.tasks = r.strings(t, "tasks", where);
+    for (const auto& id : a.tasks)
+      if (!e.task(id)) r.fail(t.get("tasks"), where + ".tasks", "no task with id '" + id + "'");
+    a.dependentVariables = r.strings(t, "dv", where);
+    if (a.dependentVariables.empty()) r.fail(&t, where + ".dv", "at least one dependent variable is required");
+    for (const auto& dv : a.dependentVariables)
+      if (!kDependentVariables.count(dv))
+        r.fail(t.get("dv"), where + ".dv", "'" + dv + "' is not one of correct, score, rt, error, partial_credit, answered");
+    a.within = r.strings(t, "within", where);
+    a.between = r.strings(t, "between", where);
+    for (const auto& list : {a.within, a.between})
+      for (const auto& f : list)
+        if (!e.factor(f)) r.fail(t.get("within"), where, "no factor named '" + f + "'");
+    if (t.get("tests")) a.tests = r.strings(t, "tests", where);
+    for (const auto& test : a.tests)
+      if (test != "anova" && test != "t-tests" && test != "rank-tests")
+        r.fail(t.get("tests"), where + ".tests", "'" + test + "' is not one of anova, t-tests, rank-tests");
+    a.alpha = r.number(t, "alpha", where, 0.05, 1e-6, 0.5);
+    out.push_back(std::move(a));
+  }
+  return out;
+}
+
+ObserverParams readObserver(const FieldReader& r, const toml::table& root) {
+  ObserverParams p;
+  const toml::table* t = r.table(root, "observer", "");
+  if (!t) return p;
+  r.checkKeys(*t, "observer", {"contrast_reference", "sensitivity", "threshold", "skill_spread", "lapse", "layer_penalty",
+                               "base_seconds", "slow_seconds", "rt_sigma", "give_up_share"});
+  p.contrastReference = r.number(*t, "contrast_reference", "observer", p.contrastReference, 1e-4, 1.0);
+  p.sensitivity = r.number(*t, "sensitivity", "observer", p.sensitivity, 0.0, 100.0);
+  p.threshold = r.number(*t, "threshold", "observer", p.threshold, 0.0, 1.0);
+  p.skillSpread = r.number(*t, "skill_spread", "observer", p.skillSpread, 0.0, 3.0);
+  p.lapse = r.number(*t, "lapse", "observer", p.lapse, 0.0, 1.0);
+  p.layerPenalty = r.number(*t, "layer_penalty", "observer", p.layerPenalty, 0.0, 1.0);
+  p.baseSeconds = r.number(*t, "base_seconds", "observer", p.baseSeconds, 0.01, 3600.0);
+  p.slowSeconds = r.number(*t, "slow_seconds", "observer", p.slowSeconds, 0.0, 3600.0);
+  p.rtSigma = r.number(*t, "rt_sigma", "observer", p.rtSigma, 0.0, 3.0);
+  p.giveUpShare = r.number(*t, "give_up_share", "observer", p.giveUpShare, 0.0, 1.0);
+  return p;
+}
+
+Stimulus readStimulus(const FieldReader& r, const toml::table& root) {
+  Stimulus s;
+  const toml::table* t = r.table(root, "stimulus", "");
+  if (!t) return s;
+  r.checkKeys(*t, "stimulus", {"scene", "style", "camera", "settings", "size"});
+  s.scene = r.string(*t, "scene", "stimulus", false, s.scene);
+  s.style = r.string(*t, "style", "stimulus", false, s.style);
+  s.camera = r.string(*t, "camera", "stimulus", false);
+  s.renderSettings = r.strings(*t, "settings", "stimulus");
+  std::tie(s.width, s.height) = parseSizeField(r, *t, "stimulus", {s.width, s.height});
+  return s;
+}
+
+void checkDesign(const FieldReader& r, const toml::table& root, const Experiment& e) {
+  try {
+    const Design design = makeDesign(e);
+    if (e.blockTasks == BlockTasks::ByPosition && design.blocksPerRow() != e.tasks.size())
+      r.fail(root.get("block_tasks"), "block_tasks",
+             "\"by-position\" needs one task per block: " + std::to_string(design.blocksPerRow()) + " blocks but " +
+                 std::to_string(e.tasks.size()) + " tasks");
+  } catch (const DesignError& error) {
+    r.fail(root.get("counterbalancing") ? root.get("counterbalancing") : &root, "counterbalancing", error.what());
+  }
+}
+
+// Where one part of a stimulus was set: the field's name and node, for file:line messages.
+struct StimulusSource {
+  const toml::node* node = nullptr;
+  std::string field;
+};
+
+struct StimulusParts {
+  std::string scene, style;
+  std::vector<std::string> settings;
+  StimulusSource sceneFrom, styleFrom;
+  std::vector<std::pair<std::string, StimulusSource>> settingsFrom;  // each setting and where it was set
+};
+
+const toml::node* nodeAt(const toml::table& root, const std::vector<std::string>& path, const std::vector<std::size_t>& index) {
+  const toml::node* n = &root;
+  for (std::size_t i = 0; i < path.size() && n; ++i) {
+    n = n->as_table() ? n->as_table()->get(path[i]) : nullptr;
+    if (n && i < index.size() && index[i] > 0) n = n->as_array() ? n->as_array()->get(index[i] - 1) : nullptr;
+  }
+  return n;
+}
+
+// The node of `key` inside a table node (the table itself when the key is absent).
+const toml::node* keyNode(const toml::node* table, const char* key) {
+  const toml::node* n = table && table->as_table() ? table->as_table()->get(key) : nullptr;
+  return n ? n : table;
+}
+
+void applyLevel(StimulusParts& p, const toml::table& root, const Level& level, std::size_t f, std::size_t l) {
+  const std::string where = "factors[" + std::to_string(f + 1) + "].levels[" + std::to_string(l + 1) + "]";
+  const toml::node* node = nodeAt(root, {"factors", "levels"}, {f + 1, l + 1});
+  if (level.scene) p.scene = *level.scene, p.sceneFrom = {keyNode(node, "scene"), where + ".scene"};
+  if (level.style) p.style = *level.style, p.styleFrom = {keyNode(node, "style"), where + ".style"};
+  for (const auto& s : level.renderSettings) p.settingsFrom.push_back({s, {keyNode(node, "settings"), where + ".settings"}});
+}
+
+// The renderer's own checks of one stimulus (scene source, style, settings), with the field that set the failing part.
+void checkStimulus(const FieldReader& r, const StimulusParts& p) {
+  std::string scene = p.scene;  // checked as the first trial's instance
+  for (auto at = scene.find("{trial}"); at != std::string::npos; at = scene.find("{trial}")) scene.replace(at, 7, "1");
+  try {
+    render::checkSceneSource(scene, sceneCatalog());
+  } catch (const std::exception& e) {
+    r.fail(p.sceneFrom.node, p.sceneFrom.field, e.what());
+  }
+  try {
+    std::map<std::string, std::string> settings;
+    for (const auto& [s, from] : p.settingsFrom) render::addSetting(settings, s);
+    render::findStyle(p.style).resolve(settings);
+  } catch (const std::exception& e) {
+    const std::string message = e.what();
+    StimulusSource blamed = p.styleFrom;
+    for (const auto& [s, from] : p.settingsFrom)
+      if (message.find("'" + s.substr(0, s.find('=')) + "'") != std::string::npos || s.find('=') == std::string::npos) blamed = from;
+    r.fail(blamed.node, blamed.field, message);
+  }
+}
+
+// Every stimulus the design can ask for — each combination of levels, with each task's scene —
+// passes the renderer's checks, so `tlab design` catches what `simulate` or `run` would fail on.
+void checkStimuli(const FieldReader& r, const toml::table& root, const Experiment& e) {
+  StimulusParts base;
+  base.scene = e.stimulus.scene;
+  base.style = e.stimulus.style;
+  const toml::node* stimulus = root.get("stimulus") ? root.get("stimulus") : &root;
+  base.sceneFrom = {keyNode(stimulus, "scene"), "stimulus.scene"};
+  base.styleFrom = {keyNode(stimulus, "style"), "stimulus.style"};
+  for (const auto& s : e.stimulus.renderSettings) base.settingsFrom.push_back({s, {keyNode(stimulus, "settings"), "stimulus.settings"}});
+  std::vector<std::size_t> level(e.factors.size(), 0);
+  for (int combinations = 0; combinations < 4096; ++combinations) {
+    StimulusParts parts = base;
+    for (std::size_t f = 0; f < e.factors.size(); ++f) applyLevel(parts, root, e.factors[f].levels[level[f]], f, level[f]);
+    checkStimulus(r, parts);
+    for (std::size_t t = 0; t < e.tasks.size(); ++t)
+      if (e.tasks[t].scene) {
+        StimulusParts withTask = parts;
+        withTask.scene = *e.tasks[t].scene;
+        withTask.sceneFrom = {keyNode(nodeAt(root, {"tasks"}, {t + 1}), "scene"), "tasks[" + std::to_string(t + 1) + "].scene"};
+        checkStimulus(r, withTask);
+      }
+    std::size_t f = 0;  // the next combination, like an odometer
+    while (f < level.size() && ++level[f] == e.factors[f].levels.size()) level[f++] = 0;
+    if (f == level.size()) return;
+  }
+}
+
+}  // namespace
+
+Experiment parseExperiment(const std::string& text, const std::string& path, StimulusChecks checks) {
+  const FieldReader r(path);
+  toml::table root;
+  try {
+    root = toml::parse(text, path);
+  } catch (const toml::parse_error& error) {
+    throw ExperimentFileError(path + ":" + std::to_string(error.source().begin.line) + ": " + std::string(error.description()));
+  }
+  r.checkKeys(root, "", {"id", "title", "participant_title", "seed", "participants", "counterbalancing", "block_tasks", "welcome",
+                         "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "stimulus", "factors", "tasks",
+                         "questionnaires", "analysis", "observer"});
+  Experiment e;
+  e.path = path;
+  e.text = text;
+  e.id = r.string(root, "id", "", true);
+  if (e.id.empty()) r.fail(root.get("id"), "id", "must not be empty");
+  e.title = r.string(root, "title", "", false, e.id);
+  e.seed = std::uint64_t(r.integer(root, "seed", "", 1, 0));
+  e.participants = int(r.integer(root, "participants", "", 1, 1, true));
+  e.welcome = r.string(root, "welcome", "", false);
+  readSessionFlow(r, root, e);
+  e.stimulus = readStimulus(r, root);
+  e.factors = readFactors(r, root);
+  e.counterbalancing = parseCounterbalancing(r, root);
+  const std::string blockTasks = r.string(root, "block_tasks", "", false, "all");
+  if (blockTasks == "all") e.blockTasks = BlockTasks::All;
+  else if (blockTasks == "by-position") e.blockTasks = BlockTasks::ByPosition;
+  else r.fail(root.get("block_tasks"), "block_tasks", "expected \"all\" or \"by-position\", got '" + blockTasks + "'");
+  e.tasks = readTasks(r, root, e.factors);
+  e.questionnaires = readQuestionnaires(r, root);
+  checkBreaks(r, root, e);
+  e.analyses = readAnalyses(r, root, e);
+  e.observer = readObserver(r, root);
+  checkDesign(r, root, e);
+  if (checks == StimulusChecks::Run) checkStimuli(r, root, e);
+  return e;
+}
+
+Experiment readExperimentFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ExperimentFileError(path + ": cannot open the experiment file");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return parseExperiment(s.str(), path);
+}
+
+}  // namespace tlab::study

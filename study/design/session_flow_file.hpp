@@ -1,0 +1,18 @@
+#pragma once
+// The experiment file's sections for the participant's session flow: participant_title, welcome,
+// [consent], [[info]] (and standard_info = true: age, gender, vision), [training] feedback,
+// [breaks], [debrief] (text, completion_code; `goodbye` is its older name) and
+// [[questionnaires]] with items of kinds likert, choice, number and text.
+#include <toml++/toml.h>
+
+#include "study/design/experiment.hpp"
+#include "study/design/field_reader.hpp"
+
+namespace tlab::study {
+
+void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& e);
+std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root);
+// Breaks every N blocks need more than N blocks to ever show; checked against the design.
+void checkBreaks(const FieldReader& r, const toml::table& root, const Experiment& e);
+
+}  // namespace tlab::study

@@ -1,0 +1,157 @@
+#include "study/run/stimulus_library.hpp"
+
+#include "study/run/fault_point.hpp"
+
+#include <filesystem>
+#include <sstream>
+
+#include "renderer/pipeline/renderer.hpp"
+#include "renderer/scene/scene_source.hpp"
+#include "renderer/styles/style.hpp"
+#include "renderer/image/sha256.hpp"
+#include "tasks/task_registry.hpp"
+
+namespace tlab::study {
+
+namespace {
+
+std::string numberText(double v) {
+  std::ostringstream s;
+  s << v;
+  return s.str();
+}
+
+render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key) {
+  const render::BoundingSphere sphere = scene.boundingSphere();
+  const render::Camera base = scene.camera ? *scene.camera : render::fitCamera(sphere, float(key.width) / float(key.height));
+  if (key.camera.empty()) return base;
+  const render::Camera c = render::parseCamera(key.camera, base);
+  const bool clipGiven = key.camera.find("near=") != std::string::npos || key.camera.find("far=") != std::string::npos;
+  return clipGiven ? c : render::fitClipPlanes(c, sphere);
+}
+
+}  // namespace
+
+bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
+
+Canvas markQuestion(const render::Image& picture, const tasks::Question& question, TextPainter& painter) {
+  Canvas canvas(picture);
+  const float textSize = std::max(12.0f, float(picture.height) / 32.0f);
+  for (const auto& p : question.points) {
+    if (!isMarkedPoint(p)) continue;
+    const double x = p.pixel.x, y = p.pixel.y;
+    canvas.strokeCircle(x, y, 4.0, 3.5, {255, 255, 255, 255});
+    canvas.strokeCircle(x, y, 4.0, 1.5, {0, 0, 0, 255});
+    const int tx = int(x) + 6, ty = int(y) - int(textSize) - 2;
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy) painter.drawLine(canvas, p.label, tx + dx, ty + dy, textSize, {255, 255, 255, 255});
+    painter.drawLine(canvas, p.label, tx, ty, textSize, {0, 0, 0, 255});
+  }
+  return canvas;
+}
+
+std::string stimulusDirectoryFor(const std::string& databasePath) {
+  const std::filesystem::path db(databasePath);
+  return (db.parent_path() / (db.stem().string() + "-stimuli")).string();
+}
+
+std::vector<std::string> effectiveTaskSettings(const PlannedTrial& trial) {
+  std::vector<std::string> settings = trial.taskSettings;
+  bool hasLimit = false;
+  for (const auto& s : settings) hasLimit = hasLimit || s.rfind("time-limit=", 0) == 0;
+  if (!hasLimit) settings.push_back("time-limit=" + numberText(trial.timeLimitSeconds));
+  return settings;
+}
+
+StimulusLibrary::StimulusLibrary(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, TextPainter& painter)
+    : directory_(std::move(directory)), catalog_(std::move(catalog)), painter_(painter) {}
+
+const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& key) {
+  const std::string id = key.text();
+  const auto found = pictures_.find(id);
+  if (found != pictures_.end()) return found->second;
+  auto scene = std::make_shared<render::Scene>(render::loadScene(key.scene, catalog_));
+  render::requireTriangles(*scene, key.scene);
+  render::RenderRequest request;
+  request.width = key.width;
+  request.height = key.height;
+  render::findStyle(key.style);
+  request.style = key.style;
+  for (const auto& s : key.renderSettings) render::addSetting(request.settings, s);
+  request.camera = resolveCamera(*scene, key);
+  request.timePasses = false;
+  render::Renderer renderer(*scene);
+  auto picture = std::make_shared<render::Image>(renderer.render(request));
+  return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), *request.camera}).first->second;
+}
+
+const std::vector<tasks::Question>& StimulusLibrary::questions(const PlannedTrial& trial) {
+  const auto settings = effectiveTaskSettings(trial);
+  // Questions depend on the geometry and view only: every style of a scene asks the same ones.
+  std::string id = trial.stimulus.viewText() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | " +
+                   std::to_string(trial.questionsInTrial);
+  for (const auto& s : settings) id += " " + s;
+  const auto found = questions_.find(id);
+  if (found != questions_.end()) return found->second;
+  const Rendered& r = rendered(trial.stimulus);
+  const auto task = tasks::makeTask(trial.task);
+  const tasks::ProbeRequest request{*r.scene, r.camera, trial.stimulus.width, trial.stimulus.height, trial.questionsInTrial,
+                                    trial.probeSeed, task->settings(settings)};
+  try {
+    return questions_.emplace(id, task->probe(request)).first->second;
+  } catch (const std::exception& e) {
+    throw std::runtime_error("task " + trial.taskId + " on " + trial.stimulus.scene + ": " + e.what());
+  }
+}
+
+const std::pair<FloorPlan, std::shared_ptr<const Canvas>>& StimulusLibrary::floorPlan(const StimulusKey& key) {
+  const std::string id = key.scene + " | " + std::to_string(key.width) + "x" + std::to_string(key.height);
+  const auto found = plans_.find(id);
+  if (found != plans_.end()) return found->second;
+  const Rendered& r = rendered(key);
+  FloorPlan plan = makeFloorPlan(*r.scene, key.width, key.height);
+  render::RenderRequest request;
+  request.width = key.width;
+  request.height = key.height;
+  request.style = "opaque";
+  request.camera = plan.camera;
+  request.timePasses = false;
+  render::Renderer renderer(*r.scene);
+  auto image = std::make_shared<const Canvas>(renderer.render(request));
+  return plans_.emplace(id, std::make_pair(plan, std::move(image))).first->second;
+}
+
+PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
+  PreparedTrial p;
+  p.question = questions(trial).at(std::size_t(trial.question - 1));
+  const Rendered& r = rendered(trial.stimulus);
+  p.picture = r.picture;
+  p.scene = r.scene;
+  p.camera = r.camera;
+  const std::string id = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | q" +
+                         std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
+  auto found = written_.find(id);
+  if (found == written_.end()) {
+    auto canvas = std::make_shared<const Canvas>(markQuestion(*p.picture, p.question, painter_));
+    const std::vector<std::uint8_t> png = render::encodePng(canvas->toImage());
+    const std::string sha = render::sha256Hex(png);
+    const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
+    if (!std::filesystem::exists(path)) {
+      std::filesystem::create_directories(directory_);  // made with its first stimulus: a failed start leaves no folder
+      render::writeFileAtomically(path, png);
+    }
+    found = written_.emplace(id, std::make_pair(sha, std::move(canvas))).first;
+  }
+  p.stimulusSha256 = found->second.first;
+  p.stimulus = found->second.second;
+  p.stimulusPath = (std::filesystem::path(directory_) / (p.stimulusSha256 + ".png")).string();
+  if (p.question.answerKind == tasks::AnswerKind::FloorPoint) {
+    const auto& [plan, image] = floorPlan(trial.stimulus);
+    p.floorPlan = plan;
+    p.floorPlanImage = image;
+  }
+  faultPoint("prepare", ++prepared_);
+  return p;
+}
+
+}  // namespace tlab::study
