@@ -210,17 +210,9 @@ bool WindowResponder::showMessage(const std::string& title, const std::string& t
   present(c);
   inputs_.clear();
   script({{Input::Kind::Key, GLFW_KEY_SPACE, 0, 0, 0, 0}}, 0.2);
-  while (!closed_) {
-    waitForInput(0.1);
-    while (!inputs_.empty()) {
-      const Input in = inputs_.front();
-      inputs_.pop_front();
-      if (in.kind == Input::Kind::Close) closed_ = true;
-      else if (in.kind == Input::Kind::Click || (in.kind == Input::Kind::Key && (in.key == GLFW_KEY_SPACE || in.key == GLFW_KEY_ENTER)))
-        return true;
-    }
-    present(c);  // keep the window's content after expose events
-  }
+  while (const auto in = nextInput(c))
+    if (in->kind == Input::Kind::Click || (in->kind == Input::Kind::Key && (in->key == GLFW_KEY_SPACE || in->key == GLFW_KEY_ENTER)))
+      return true;
   return false;
 }
 
