@@ -5,6 +5,7 @@
 // impossible. libcsv (libcsv-dev) would do, but is not installed and would add a dependency for
 // ~100 lines. RFC 4180 is a small regular language, parsed here by a four-state machine.
 #include "analysis/csv_reader.hpp"
+#include "core/file_text.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -143,11 +144,9 @@ Table parseCsv(std::string_view text, const std::string& source) {
 }
 
 Table readCsvFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw AnalysisError(path + ": cannot open file");
-  std::ostringstream buffer;
-  buffer << in.rdbuf();
-  return parseCsv(buffer.str(), path);
+  const auto text = core::readFileText(path);
+  if (!text) throw AnalysisError(path + ": cannot open file");
+  return parseCsv(*text, path);
 }
 
 }  // namespace tlab::analysis

@@ -17,7 +17,7 @@
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/ops/connect_pass.hpp"
 #include "renderer/ops/diffusion_solver.hpp"
 #include "renderer/scene/scene_source.hpp"
@@ -140,7 +140,7 @@ void runDiffusionBench(const DiffusionBenchOptions& o) {
            std::to_string(r.maxError) + "," + std::to_string(r.rmsError) + "\n";
   const auto csvPath = (std::filesystem::path(o.out) / "diffusion.csv").string();
   const auto svgPath = (std::filesystem::path(o.out) / "diffusion.svg").string();
-  render::writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
+  core::writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
   analysis::LinePlot plot;
   plot.title = "alpha diffusion to time " + std::to_string(int(T)) + ": error vs. run time";
   plot.xLabel = "solve time [ms]";
@@ -158,7 +158,7 @@ void runDiffusionBench(const DiffusionBenchOptions& o) {
     it->y.push_back(std::max(r.maxError, 1e-9));
   }
   const std::string svg = analysis::renderLinePlotSvg(plot);
-  render::writeFileAtomically(svgPath, std::vector<std::uint8_t>(svg.begin(), svg.end()));
+  core::writeFileAtomically(svgPath, std::vector<std::uint8_t>(svg.begin(), svg.end()));
   if (o.json) {
     nlohmann::json j = nlohmann::json::array();
     for (const auto& r : runs)

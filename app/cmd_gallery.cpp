@@ -5,7 +5,7 @@
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
 #include "stimuli/sets/label_painter.hpp"
@@ -28,16 +28,16 @@ void runGallery(const GalleryOptions& o) {
   // Every style to its own PNG, and all of them on one labelled contact sheet (4 per row).
   const auto styles = render::styleNames();
   const int columns = 4, rows = int((styles.size() + columns - 1) / columns);
-  render::Image sheet(columns * w, rows * h, glm::vec4(1.0f));
+  core::Image sheet(columns * w, rows * h, glm::vec4(1.0f));
   const stimuli::LabelPainter painter;
   for (std::size_t i = 0; i < styles.size(); ++i) {
     render::RenderRequest q;
     q.width = w;
     q.height = h;
     q.style = styles[i];
-    const render::Image image = renderer.render(q);
+    const core::Image image = renderer.render(q);
     const auto path = (std::filesystem::path(o.out) / (styles[i] + ".png")).string();
-    render::writeFileAtomically(path, render::encodePng(image));
+    core::writeFileAtomically(path, core::encodePng(image));
     std::cout << "  " << styles[i] << ": " << path << "  (" << render::findStyle(styles[i]).description() << ")\n";
     const int x0 = int(i % columns) * w, y0 = int(i / columns) * h;
     for (int y = 0; y < h; ++y)
@@ -45,7 +45,7 @@ void runGallery(const GalleryOptions& o) {
     painter.drawText(sheet, x0 + 6, y0 + 6, styles[i], h * 0.07, glm::vec4(0, 0, 0, 1));
   }
   const auto sheetPath = (std::filesystem::path(o.out) / "gallery.png").string();
-  render::writeFileAtomically(sheetPath, render::encodePng(sheet));
+  core::writeFileAtomically(sheetPath, core::encodePng(sheet));
   std::cout << "  contact sheet: " << sheetPath << "\n";
   std::cout << "gallery of " << render::styleNames().size() << " styles on " << o.scene << " written to " << o.out << "/\n";
 }

@@ -10,7 +10,7 @@
 #include "app/stats_json.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/gpu/window_context.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/peel/peeling_renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
@@ -40,11 +40,11 @@ std::string styleListing() {
 }
 
 // Depth peeling (IRIS Sec. 5.1) instead of the illustration buffer, for the local styles.
-render::Image renderPeeled(render::Scene scene, const render::RenderRequest& request, render::RenderStats& stats,
+core::Image renderPeeled(render::Scene scene, const render::RenderRequest& request, render::RenderStats& stats,
                            int& iterations) {
   render::PeelingRenderer peeler(std::move(scene));
   render::PeelStats peel;
-  render::Image image = peeler.render(request, &peel);
+  core::Image image = peeler.render(request, &peel);
   stats.triangles = peeler.scene().triangleCount();
   stats.passMilliseconds = peel.passMilliseconds;
   stats.camera = peel.camera;
@@ -72,7 +72,7 @@ void runRender(const RenderOptions& o) {
   render::RenderStats stats;
   int peelIterations = 0;
   std::optional<render::Renderer> renderer;
-  render::Image image;
+  core::Image image;
   if (o.renderer == "peel") {
     image = renderPeeled(std::move(scene), request, stats, peelIterations);
   } else {
@@ -80,9 +80,9 @@ void runRender(const RenderOptions& o) {
     image = renderer->render(request, &stats);
   }
   std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files;  // written all or none
-  if (!o.output.empty()) files.emplace_back(o.output, render::encodePng(image));
+  if (!o.output.empty()) files.emplace_back(o.output, core::encodePng(image));
   if (!o.layersOut.empty())
-    files.emplace_back(o.layersOut, render::encodePgm16(renderer->layerCounts(), image.width, image.height));
+    files.emplace_back(o.layersOut, core::encodePgm16(renderer->layerCounts(), image.width, image.height));
   if (!o.statsJson.empty()) {
     nlohmann::json j = statsToJson(stats, context->info());
     j["style"] = request.style;
@@ -93,10 +93,10 @@ void runRender(const RenderOptions& o) {
     const std::string text = j.dump(2) + "\n";
     files.emplace_back(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
   }
-  render::writeFilesAtomically(files);
+  core::writeFilesAtomically(files);
   if (!o.output.empty()) std::cout << "wrote " << o.output << " (" << image.width << "x" << image.height << ")\n";
   if (window) {
-    const auto rgba = render::toRgba8(image);
+    const auto rgba = core::toRgba8(image);
     window->showUntilClosed(rgba.data(), image.width, image.height);
   }
 }

@@ -9,7 +9,7 @@
 
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "stimuli/bench/integrator_benchmark.hpp"
 #include "stimuli/sets/probe_source.hpp"
 #include "stimuli/sets/stimulus_set_file.hpp"
@@ -35,7 +35,7 @@ void runIntegrateBench(const IntegrateBenchOptions& o) {
   const std::string csvPath = (std::filesystem::path(o.out) / "integrate.csv").string();
   const std::string svgPath = (std::filesystem::path(o.out) / "integrate.svg").string();
   const std::string csv = stimuli::integratorBenchmarkCsv(rows);
-  render::writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
+  core::writeFileAtomically(csvPath, std::vector<std::uint8_t>(csv.begin(), csv.end()));
   stimuli::writeIntegratorBenchmarkSvg(rows, svgPath);
   if (o.json) {
     nlohmann::json j = nlohmann::json::array();

@@ -4,7 +4,7 @@
 #include <numeric>
 #include <stdexcept>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "tasks/boundary_arc.hpp"
 #include "tasks/boundary_loops.hpp"
 #include "tasks/probe_helpers.hpp"
@@ -43,7 +43,7 @@ bool placeMark(const std::vector<BoundaryLoop>& loops, std::size_t loop, double 
   return true;
 }
 
-std::size_t pickByLength(const std::vector<BoundaryLoop>& loops, const std::vector<std::size_t>& among, render::SeededRandom& random) {
+std::size_t pickByLength(const std::vector<BoundaryLoop>& loops, const std::vector<std::size_t>& among, core::SeededRandom& random) {
   double total = 0.0;
   for (const auto i : among) total += loops[i].length();
   double u = double(random.uniform()) * total;
@@ -75,7 +75,7 @@ std::vector<Question> FollowBoundaryTask::probe(const ProbeRequest& request) con
     if (loops[i].length() > 0.0) usable.push_back(i);
   if (usable.empty()) throw std::runtime_error(name() + ": the scene has no surface boundary (no open surface)");
 
-  render::SeededRandom random(request.seed);
+  core::SeededRandom random(request.seed);
   std::vector<Question> questions;
   const std::string labelNames = "CDEFGHJKLMNPQRSTUVWXYZ";
   for (int q = 0; q < request.count; ++q) {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "tasks/layer_ground_truth.hpp"
 #include "tasks/probe_helpers.hpp"
 #include "tasks/ray_layer_caster.hpp"
@@ -35,7 +35,7 @@ class SilhouetteSampler {
     for (const auto& e : edges_) cumulative_.push_back(sum += e.length());
   }
   bool empty() const { return cumulative_.empty() || cumulative_.back() <= 0.0; }
-  Candidate sample(render::SeededRandom& random) const {
+  Candidate sample(core::SeededRandom& random) const {
     const double u = double(random.uniform()) * cumulative_.back();
     const auto it = std::upper_bound(cumulative_.begin(), cumulative_.end(), u);
     const auto& e = edges_[std::min<std::size_t>(std::size_t(it - cumulative_.begin()), edges_.size() - 1)];
@@ -64,7 +64,7 @@ std::vector<Question> LayerIndexTask::probe(const ProbeRequest& request) const {
   const RayLayerCaster caster(request.scene);
   const LayerGroundTruth truth(caster, view, double(request.scene.boundingSphere().radius));
 
-  render::SeededRandom random(request.seed);
+  core::SeededRandom random(request.seed);
   std::vector<Question> questions;
   std::vector<glm::dvec2> taken;
   for (int q = 0; q < request.count; ++q) {

@@ -5,7 +5,7 @@
 #include <limits>
 #include <optional>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "tasks/geodesic_distances.hpp"
 #include "tasks/probe_helpers.hpp"
 
@@ -66,7 +66,7 @@ struct Choice {
 // that are all ≥ (1 + margin) × d(g) away along the surface; with a trap, one of the others is
 // Euclidean-nearest by the same margin, else g is also Euclidean-nearest.
 std::optional<Choice> chooseCandidates(std::vector<PoolPoint> pool, int count, double margin, bool wantTrap,
-                                       double pixelGap, render::SeededRandom& random) {
+                                       double pixelGap, core::SeededRandom& random) {
   for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[random.below(std::uint32_t(i))]);
   const auto apart = [&](const PoolPoint& p, const std::vector<PoolPoint>& chosen) {
     for (const auto& c : chosen)
@@ -146,7 +146,7 @@ std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const
   }
   if (totalArea <= 0.0) throw std::runtime_error(name() + ": the scene has no surface area");
 
-  render::SeededRandom random(request.seed);
+  core::SeededRandom random(request.seed);
   const auto pickObject = [&] {
     double u = double(random.uniform()) * totalArea;
     for (std::size_t o = 0; o < samplers.size(); ++o) {

@@ -16,7 +16,7 @@ SurfaceSampler::SurfaceSampler(const WeldedMesh& mesh) {
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) cumulativeArea_.push_back(sum += mesh.area(t));
 }
 
-SurfacePoint SurfaceSampler::sample(render::SeededRandom& random) const {
+SurfacePoint SurfaceSampler::sample(core::SeededRandom& random) const {
   if (totalArea() <= 0.0) throw std::runtime_error("cannot sample a surface of zero area");
   // Two uniforms with 24 bits each pick the triangle; then the standard √ warp (Turk 1990).
   const double u = (double(random.bits() >> 8) + double(random.bits() >> 8) / 16777216.0) / 16777216.0;

@@ -6,7 +6,7 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "tasks/welded_mesh.hpp"
 
 namespace tlab::tasks {
@@ -23,7 +23,7 @@ class SurfaceSampler {
  public:
   explicit SurfaceSampler(const WeldedMesh& mesh);
   double totalArea() const { return cumulativeArea_.empty() ? 0.0 : cumulativeArea_.back(); }
-  SurfacePoint sample(render::SeededRandom& random) const;
+  SurfacePoint sample(core::SeededRandom& random) const;
 
  private:
   std::vector<double> cumulativeArea_;

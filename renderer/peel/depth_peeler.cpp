@@ -91,7 +91,7 @@ void DepthPeeler::blend(const IllustrativeSettings& settings) {
   glBindTextureUnit(1, 0);
 }
 
-Image DepthPeeler::render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
+core::Image DepthPeeler::render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
                           glm::vec4 background, PassTimer& timer) {
   const std::size_t pixels = std::size_t(width_) * height_;
   const std::vector<glm::vec4> start(pixels, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));  // c = 0, T = 1
@@ -106,7 +106,7 @@ Image DepthPeeler::render(const GpuScene& scene, const RasterUniforms& uniforms,
   }
   std::vector<glm::vec4> accum(pixels);
   accum_.download(accum.data(), accum.size() * sizeof(glm::vec4));
-  Image image(width_, height_);
+  core::Image image(width_, height_);
   for (int y = 0; y < height_; ++y)
     for (int x = 0; x < width_; ++x) {
       const glm::vec4 a = accum[std::size_t(height_ - 1 - y) * width_ + x];

@@ -11,7 +11,7 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/pipeline/pass_timer.hpp"
 #include "renderer/styles/illustrative_settings.hpp"
@@ -24,7 +24,7 @@ class DepthPeeler {
   DepthPeeler(gpu::ShaderCache& shaders, int width, int height, int maxIterations = 4096);
 
   // Peels and blends every layer; returns the picture (row 0 = top). Timed as "peel" and "blend".
-  Image render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
+  core::Image render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
                glm::vec4 background, PassTimer& timer);
 
   int width() const { return width_; }

@@ -9,7 +9,7 @@ namespace tlab::render {
 
 PeelingRenderer::PeelingRenderer(Scene scene) : scene_(std::move(scene)), gpuScene_(scene_) {}
 
-Image PeelingRenderer::render(const RenderRequest& request, PeelStats* stats) {
+core::Image PeelingRenderer::render(const RenderRequest& request, PeelStats* stats) {
   if (request.width <= 0 || request.height <= 0 || request.width > 16384 || request.height > 16384)
     throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
   const Style& style = findStyle(request.style);
@@ -26,7 +26,7 @@ Image PeelingRenderer::render(const RenderRequest& request, PeelStats* stats) {
   if (!peeler_ || peeler_->width() != request.width || peeler_->height() != request.height)
     peeler_ = std::make_unique<DepthPeeler>(shaders_, request.width, request.height);
   PassTimer timer(request.timePasses);
-  Image image = peeler_->render(gpuScene_, raster, settings, scene_.background, timer);
+  core::Image image = peeler_->render(gpuScene_, raster, settings, scene_.background, timer);
   gpu::checkGl("depth peeling style " + style.name());
   if (stats) {
     stats->iterations = peeler_->iterations();

@@ -21,7 +21,7 @@ class PeelingRenderer {
   explicit PeelingRenderer(Scene scene);
   const Scene& scene() const { return scene_; }
   // request.fill, initialPoolFragments and allProperties do not apply.
-  Image render(const RenderRequest& request, PeelStats* stats = nullptr);
+  core::Image render(const RenderRequest& request, PeelStats* stats = nullptr);
 
  private:
   Scene scene_;

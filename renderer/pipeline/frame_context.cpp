@@ -4,7 +4,7 @@
 
 namespace tlab::render {
 
-void readOutputBuffer(const gpu::Buffer& output, Image& image) {
+void readOutputBuffer(const gpu::Buffer& output, core::Image& image) {
   const std::size_t w = std::size_t(image.width), h = std::size_t(image.height);
   std::vector<glm::vec4> gl(w * h);
   output.download(gl.data(), gl.size() * sizeof(glm::vec4));

@@ -6,7 +6,7 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/gpu/shader_cache.hpp"
 #include "renderer/ops/group_draw_order.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/pipeline/pass_timer.hpp"
 #include "renderer/scene/scene.hpp"
@@ -26,7 +26,7 @@ struct FrameContext {
   int height;
   glm::vec4 background;
   FragmentBuffer* buffer;  // null for styles without fragment lists
-  Image& image;            // the frame's result, row 0 = top
+  core::Image& image;            // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
   BucketedKBuffer* kbuffer = nullptr;  // the bucketed k-buffer, for styles that fill with it
@@ -44,6 +44,6 @@ class RenderPass {
 
 // Reads an RGBA float SSBO of width*height texels in GL order (row 0 = bottom) into the image,
 // flipping so that row 0 is the top.
-void readOutputBuffer(const gpu::Buffer& output, Image& image);
+void readOutputBuffer(const gpu::Buffer& output, core::Image& image);
 
 }  // namespace tlab::render

@@ -24,7 +24,7 @@ Camera Renderer::resolveCamera(const RenderRequest& request) const {
   return fitCamera(scene_.boundingSphere(), float(request.width) / float(request.height));
 }
 
-Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
+core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   if (request.width <= 0 || request.height <= 0 || request.width > 16384 || request.height > 16384)
     throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
   const Style& style = findStyle(request.style);
@@ -35,7 +35,7 @@ Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   raster.projection = camera.projection(float(request.width) / float(request.height));
   raster.lighting = lightingModel(params);
 
-  Image image(request.width, request.height, scene_.background);
+  core::Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
   std::optional<KBufferSettings> kBufferSettings = style.kBufferFill(params);
   if (kBufferSettings) {

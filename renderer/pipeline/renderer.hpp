@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "renderer/buffer/fragment_buffer.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
@@ -66,7 +66,7 @@ class Renderer {
   // The camera a request resolves to (given, the scene's own, or fitted to the bounding sphere).
   Camera resolveCamera(const RenderRequest& request) const;
 
-  Image render(const RenderRequest& request, RenderStats* stats = nullptr);
+  core::Image render(const RenderRequest& request, RenderStats* stats = nullptr);
 
   // After render(): per-pixel fragment counts (row 0 = top) and one pixel's sorted list (x, y with
   // row 0 = top). Both need a style with fragment lists.

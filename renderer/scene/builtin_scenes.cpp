@@ -7,8 +7,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "renderer/scene/seeded_random.hpp"
-#include "renderer/util/parse_number.hpp"
+#include "core/seeded_random.hpp"
+#include "core/parse_number.hpp"
 
 namespace tlab::render {
 
@@ -114,7 +114,7 @@ Scene quadStackScene(const std::map<std::string, double>& p) {
   Scene s;
   s.name = "quad-stack";
   const int n = asInt(p, "n"), m = asInt(p, "m");
-  SeededRandom rng(static_cast<std::uint64_t>(p.at("seed")));
+  core::SeededRandom rng(static_cast<std::uint64_t>(p.at("seed")));
   std::set<float> used;
   for (int i = 0; i < n; ++i) {
     float z;
@@ -271,7 +271,7 @@ std::pair<const BuiltinSceneSpec*, std::map<std::string, double>> parseBuiltinSc
         throw std::invalid_argument("built-in scene '" + name + "' has no parameter '" + key + "' (known: " + known + ")");
       }
       const std::string text = eq == std::string::npos ? "" : pair.substr(eq + 1);
-      const auto parsed = parseFiniteNumber(text);
+      const auto parsed = core::parseFiniteNumber(text);
       if (!parsed)
         throw std::invalid_argument("built-in scene '" + name + "' parameter '" + key + "': '" + text + "' is not a number");
       const double v = *parsed;

@@ -7,7 +7,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "renderer/util/parse_number.hpp"
+#include "core/parse_number.hpp"
 
 namespace tlab::render {
 
@@ -49,7 +49,7 @@ Camera orbit(const Camera& camera, float azimuthDegrees, float elevationDegrees)
 namespace {
 
 float parseFloat(const std::string& s, const std::string& field) {
-  const auto v = parseFiniteNumber(s);
+  const auto v = core::parseFiniteNumber(s);
   if (!v) throw std::invalid_argument("--camera field '" + field + "': '" + s + "' is not a number");
   return static_cast<float>(*v);
 }

@@ -4,7 +4,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "renderer/util/parse_number.hpp"
+#include "core/parse_number.hpp"
 
 namespace tlab::render {
 
@@ -49,7 +49,7 @@ std::string joined(const std::vector<std::string>& words) {
 }
 
 double parseNumber(const std::string& style, const ParamSpec& spec, const std::string& text) {
-  const auto parsed = parseFiniteNumber(text);
+  const auto parsed = core::parseFiniteNumber(text);
   if (!parsed)
     throw std::invalid_argument("style '" + style + "' parameter '" + spec.name + "': '" + text + "' is not a number");
   const double v = *parsed;

@@ -10,7 +10,7 @@
 #define STBI_ONLY_PNG
 #include <stb/stb_image.h>
 
-#include "renderer/util/parse_number.hpp"
+#include "core/parse_number.hpp"
 
 namespace tlab::render {
 
@@ -25,7 +25,7 @@ std::vector<std::string> split(const std::string& text, char separator) {
 }
 
 double number(const std::string& text, const std::string& spec) {
-  const auto v = parseFiniteNumber(text);
+  const auto v = core::parseFiniteNumber(text);
   if (!v) throw std::invalid_argument("transfer function '" + spec + "': '" + text + "' is not a number");
   return *v;
 }

@@ -14,8 +14,8 @@
 
 #include <cairo-svg.h>
 
-#include "renderer/image/image.hpp"
-#include "renderer/scene/seeded_random.hpp"
+#include "core/image.hpp"
+#include "core/seeded_random.hpp"
 #include "stimuli/fields/abc_flow.hpp"
 #include "stimuli/fields/double_gyre.hpp"
 #include "stimuli/fields/linear_saddle.hpp"
@@ -59,7 +59,7 @@ std::vector<BenchmarkCase> benchmarkCases(bool quick) {
 }
 
 std::vector<glm::dvec3> startPoints(const BenchmarkCase& c, int n) {
-  render::SeededRandom random(17);
+  core::SeededRandom random(17);
   std::vector<glm::dvec3> points;
   for (int i = 0; i < n; ++i)
     points.push_back(c.center + c.spread * glm::dvec3(random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f)));
@@ -243,7 +243,7 @@ void writeIntegratorBenchmarkSvg(const std::vector<IntegratorBenchmarkRow>& rows
   const cairo_status_t status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(path + ": cannot draw the SVG plot (" + cairo_status_to_string(status) + ")");
-  render::writeFileAtomically(path, bytes);
+  core::writeFileAtomically(path, bytes);
 }
 
 }  // namespace tlab::stimuli

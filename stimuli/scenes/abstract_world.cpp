@@ -6,7 +6,7 @@
 
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "stimuli/scenes/shape_primitives.hpp"
 
 namespace tlab::stimuli {
@@ -28,7 +28,7 @@ const char* kindName(ShapeKind k) {
 }
 
 // A random primitive of `kind`, centred at the origin, randomly oriented (cones stay upright).
-render::TriangleMesh randomShape(render::SeededRandom& random, ShapeKind kind) {
+render::TriangleMesh randomShape(core::SeededRandom& random, ShapeKind kind) {
   switch (kind) {
     case ShapeKind::Sphere: return render::makeUvSphere(random.uniform(2.5f, 6.0f), 24, 12);
     case ShapeKind::Cone: {
@@ -47,7 +47,7 @@ render::TriangleMesh randomShape(render::SeededRandom& random, ShapeKind kind) {
   return {};
 }
 
-glm::vec4 greenOrBlue(render::SeededRandom& random) {
+glm::vec4 greenOrBlue(core::SeededRandom& random) {
   return random.below(2) == 0 ? glm::vec4(0.15f, 0.7f, 0.25f, 1.0f) : glm::vec4(0.15f, 0.35f, 0.9f, 1.0f);
 }
 
@@ -75,7 +75,7 @@ class WorldBuilder {
   }
 
   // Tries random positions until the shape fits; returns false after many failures.
-  bool addRandom(render::SeededRandom& random, ShapeKind kind, glm::vec4 color, render::Role roles) {
+  bool addRandom(core::SeededRandom& random, ShapeKind kind, glm::vec4 color, render::Role roles) {
     for (int attempt = 0; attempt < 200; ++attempt) {
       const render::TriangleMesh shape = randomShape(random, kind);
       const glm::vec3 at(random.uniform(0.0f, size_), random.uniform(0.0f, size_), random.uniform(0.0f, size_));
@@ -123,7 +123,7 @@ bool insideBoundingSphere(const render::TriangleMesh& inner, const render::Trian
 }
 
 render::Scene abstractWorldScene(const AbstractWorldParams& p) {
-  render::SeededRandom random(p.seed);
+  core::SeededRandom random(p.seed);
   render::Scene scene;
   scene.name = "abstract";
   const int lo = int(std::ceil(p.minTargetShare * p.objects)), hi = int(std::floor(p.maxTargetShare * p.objects));
@@ -142,7 +142,7 @@ render::Scene abstractWorldScene(const AbstractWorldParams& p) {
 }
 
 render::Scene abstractPatternScene(const AbstractPatternParams& p, const std::vector<glm::ivec2>& cells) {
-  render::SeededRandom random(p.seed);
+  core::SeededRandom random(p.seed);
   render::Scene scene;
   scene.name = "abstract-pattern";
   WorldBuilder builder(scene, p.worldSize);

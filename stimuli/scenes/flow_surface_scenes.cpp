@@ -1,7 +1,7 @@
 #include "stimuli/scenes/flow_surface_scenes.hpp"
 
 #include "renderer/pipeline/renderer.hpp"
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "stimuli/fields/hills_spherical_vortex.hpp"
 #include "stimuli/fields/swirling_jet.hpp"
 #include "stimuli/fields/vortex_ring.hpp"
@@ -11,7 +11,7 @@ namespace tlab::stimuli {
 namespace {
 
 // A reproducible jitter of a seed point, at most `amount` per coordinate.
-glm::dvec3 jitter(render::SeededRandom& random, const glm::dvec3& p, double amount) {
+glm::dvec3 jitter(core::SeededRandom& random, const glm::dvec3& p, double amount) {
   return p + amount * glm::dvec3(random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f));
 }
 
@@ -69,7 +69,7 @@ render::SceneObject integralSurfaceObject(const std::string& name, const Integra
 }
 
 render::Scene pretzelScene(const FlowSurfaceParams& p) {
-  render::SeededRandom random(p.seed);
+  core::SeededRandom random(p.seed);
   const HillsSphericalVortex field({1.0, 1.0, 1.5});
   const SeedCurve seed = SeedCurve::line(jitter(random, {0.3, 0.0, -0.3}, 0.03), jitter(random, {0.8, 0.0, 0.3}, 0.03));
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.035, 0.04, 9.6, p));
@@ -77,7 +77,7 @@ render::Scene pretzelScene(const FlowSurfaceParams& p) {
 }
 
 render::Scene bubbleScene(const FlowSurfaceParams& p) {
-  render::SeededRandom random(p.seed);
+  core::SeededRandom random(p.seed);
   const SwirlingJet field;
   const SeedCurve seed = SeedCurve::line(jitter(random, {-0.6, 0.08, -2.6}, 0.03), jitter(random, {0.6, 0.08, -2.6}, 0.03));
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.05, 0.04, 5.0, p));
@@ -85,7 +85,7 @@ render::Scene bubbleScene(const FlowSurfaceParams& p) {
 }
 
 render::Scene toroidScene(const FlowSurfaceParams& p) {
-  render::SeededRandom random(p.seed);
+  core::SeededRandom random(p.seed);
   const VortexRing field({1.0, 0.35, 4.0, 0.0, 2.0, 1.6});  // particles streaming away leave the domain
   const SeedCurve seed = SeedCurve::line(jitter(random, {0.7, 0.0, -0.03}, 0.02), jitter(random, {1.3, 0.0, 0.03}, 0.02));
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.06, 0.025, 4.5, p));

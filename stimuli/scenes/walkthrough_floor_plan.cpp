@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <deque>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 
 namespace tlab::stimuli {
 
@@ -15,7 +15,7 @@ WalkthroughFloorPlan WalkthroughFloorPlan::random(std::uint64_t seed, int column
   const std::size_t n = std::size_t(columns) * std::size_t(rows);
   plan.doorEast_.assign(n, false);
   plan.doorSouth_.assign(n, false);
-  render::SeededRandom random(seed);
+  core::SeededRandom random(seed);
   // Randomized depth-first search: a spanning tree, so every room is reachable.
   std::vector<bool> visited(n, false);
   std::vector<glm::ivec2> stack{{0, 0}};
@@ -71,9 +71,9 @@ std::size_t WalkthroughFloorPlan::reachableRooms() const {
   return count;
 }
 
-render::Image floorPlanImage(const WalkthroughFloorPlan& plan, int ppr) {
+core::Image floorPlanImage(const WalkthroughFloorPlan& plan, int ppr) {
   const int border = ppr / 2;
-  render::Image image(plan.columns() * ppr + 2 * border, plan.rows() * ppr + 2 * border, glm::vec4(1.0f));
+  core::Image image(plan.columns() * ppr + 2 * border, plan.rows() * ppr + 2 * border, glm::vec4(1.0f));
   const glm::vec4 wall(0.0f, 0.0f, 0.0f, 1.0f);
   const int thick = std::max(1, ppr / 12), door = ppr / 3;
   const auto fill = [&](int x0, int y0, int x1, int y1) {

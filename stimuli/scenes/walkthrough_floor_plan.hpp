@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 namespace tlab::stimuli {
 
@@ -34,6 +34,6 @@ class WalkthroughFloorPlan {
 
 // The top-down plan for answering (Elmqvist T3): white floor, black walls with doorway gaps, x to
 // the right and z downward (the tasks' floor-plan convention), `pixelsPerRoom` per room.
-render::Image floorPlanImage(const WalkthroughFloorPlan& plan, int pixelsPerRoom = 32);
+core::Image floorPlanImage(const WalkthroughFloorPlan& plan, int pixelsPerRoom = 32);
 
 }  // namespace tlab::stimuli

@@ -7,7 +7,7 @@
 
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "stimuli/scenes/shape_primitives.hpp"
 #include "stimuli/scenes/walkthrough_objects.hpp"
 
@@ -45,7 +45,7 @@ render::SceneObject structure(std::string name, render::TriangleMesh mesh, glm::
 
 // The multiset of kinds: 1 trophy, 6–10 of the counted kind, the rest spread over the other kinds
 // with at least two of each (so only the trophy is unique).
-std::vector<std::string> chooseKinds(render::SeededRandom& random, const WalkthroughParams& p) {
+std::vector<std::string> chooseKinds(core::SeededRandom& random, const WalkthroughParams& p) {
   std::vector<std::string> others;
   for (const auto& k : walkthroughObjectKinds())
     if (k != "trophy" && k != p.countedKind) others.push_back(k);
@@ -101,7 +101,7 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
   scene.objects.push_back(structure("ceiling", render::makeQuad({0.5f * width, h, 0.5f * depth}, {0.5f * width, 0, 0}, {0, 0, 0.5f * depth}),
                                     {0.9f, 0.9f, 0.95f, 1}, render::Role::Transparent | render::Role::Distractor));
   // Objects in distinct rooms: a partial Fisher–Yates shuffle of the rooms.
-  render::SeededRandom random(p.seed * 7919u + 13u);
+  core::SeededRandom random(p.seed * 7919u + 13u);
   const std::vector<std::string> kinds = chooseKinds(random, p);
   std::vector<int> rooms(std::size_t(plan.columns() * plan.rows()));
   std::iota(rooms.begin(), rooms.end(), 0);
@@ -122,7 +122,7 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
   return scene;
 }
 
-std::optional<render::Image> walkthroughFloorPlanForSource(const std::string& source) {
+std::optional<core::Image> walkthroughFloorPlanForSource(const std::string& source) {
   static const std::regex pattern(R"(^builtin:walkthrough(\?.*)?$)");
   std::smatch m;
   if (!std::regex_match(source, m, pattern)) return std::nullopt;

@@ -29,6 +29,6 @@ WalkthroughFloorPlan walkthroughFloorPlan(const WalkthroughParams& params);
 render::Scene walkthroughScene(const WalkthroughParams& params);
 
 // For `builtin:walkthrough[?seed=S...]`: the floor-plan image of that scene; nothing otherwise.
-std::optional<render::Image> walkthroughFloorPlanForSource(const std::string& source);
+std::optional<core::Image> walkthroughFloorPlanForSource(const std::string& source);
 
 }  // namespace tlab::stimuli

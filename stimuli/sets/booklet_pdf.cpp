@@ -6,7 +6,7 @@
 #include "stimuli/sets/booklet_code.hpp"
 #include <cairo-pdf.h>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 namespace tlab::stimuli {
 
@@ -131,7 +131,7 @@ void writeBookletPdf(const std::string& path, const StimulusSetSpec& spec, const
   const cairo_status_t status = cairo_surface_status(surface);
   cairo_surface_destroy(surface);
   if (status != CAIRO_STATUS_SUCCESS) throw std::runtime_error(path + ": cannot draw the booklet (" + cairo_status_to_string(status) + ")");
-  render::writeFileAtomically(path, bytes);
+  core::writeFileAtomically(path, bytes);
 }
 
 }  // namespace tlab::stimuli

@@ -1,6 +1,6 @@
 #include "stimuli/sets/label_painter.hpp"
 
-#include "renderer/image/font_rasterizer.hpp"
+#include "core/font_rasterizer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -13,13 +13,13 @@ namespace tlab::stimuli {
 
 struct LabelPainter::Font {
   explicit Font(const std::string& path) : rasterizer(path) {}
-  render::FontRasterizer rasterizer;
+  core::FontRasterizer rasterizer;
 };
 
 namespace {
 
 // Source-over blending of `color` with coverage `alpha` into a pixel.
-void blend(render::Image& image, int x, int y, glm::vec4 color, float alpha) {
+void blend(core::Image& image, int x, int y, glm::vec4 color, float alpha) {
   if (x < 0 || y < 0 || x >= image.width || y >= image.height || alpha <= 0.0f) return;
   glm::vec4& p = image.at(x, y);
   const float a = std::clamp(alpha * color.a, 0.0f, 1.0f);
@@ -27,7 +27,7 @@ void blend(render::Image& image, int x, int y, glm::vec4 color, float alpha) {
 }
 
 // A filled disk (anti-aliased by coverage of the distance to the edge).
-void fillDisk(render::Image& image, glm::dvec2 c, double radius, glm::vec4 color) {
+void fillDisk(core::Image& image, glm::dvec2 c, double radius, glm::vec4 color) {
   for (int y = int(std::floor(c.y - radius - 1)); y <= int(std::ceil(c.y + radius + 1)); ++y)
     for (int x = int(std::floor(c.x - radius - 1)); x <= int(std::ceil(c.x + radius + 1)); ++x) {
       const double d = glm::distance(glm::dvec2(x + 0.5, y + 0.5), c);
@@ -35,12 +35,12 @@ void fillDisk(render::Image& image, glm::dvec2 c, double radius, glm::vec4 color
     }
 }
 
-void fillRect(render::Image& image, double x0, double y0, double x1, double y1, glm::vec4 color) {
+void fillRect(core::Image& image, double x0, double y0, double x1, double y1, glm::vec4 color) {
   for (int y = int(std::floor(y0)); y < int(std::ceil(y1)); ++y)
     for (int x = int(std::floor(x0)); x < int(std::ceil(x1)); ++x) blend(image, x, y, color, 1.0f);
 }
 
-void fillSegment(render::Image& image, glm::dvec2 a, glm::dvec2 b, double width, glm::vec4 color) {
+void fillSegment(core::Image& image, glm::dvec2 a, glm::dvec2 b, double width, glm::vec4 color) {
   const glm::dvec2 lo = glm::min(a, b) - width, hi = glm::max(a, b) + width;
   const glm::dvec2 ab = b - a;
   const double len2 = std::max(glm::dot(ab, ab), 1e-12);
@@ -55,7 +55,7 @@ void fillSegment(render::Image& image, glm::dvec2 a, glm::dvec2 b, double width,
 
 }  // namespace
 
-std::string LabelPainter::defaultFontPath() { return render::dejavuFontPath("DejaVuSans-Bold.ttf"); }
+std::string LabelPainter::defaultFontPath() { return core::dejavuFontPath("DejaVuSans-Bold.ttf"); }
 
 LabelPainter::LabelPainter(const std::string& fontPath) : font_(std::make_unique<Font>(fontPath)) {}
 
@@ -67,12 +67,12 @@ double LabelPainter::textWidth(const std::string& text, double pixelHeight) cons
   return width;
 }
 
-void LabelPainter::drawText(render::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const {
-  const render::FontRasterizer& font = font_->rasterizer;
+void LabelPainter::drawText(core::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const {
+  const core::FontRasterizer& font = font_->rasterizer;
   const int baseline = int(std::lround(y + font.ascent(float(pixelHeight))));
   double penX = x;
   for (const char ch : text) {
-    const render::GlyphBitmap g = font.glyph(char32_t(static_cast<unsigned char>(ch)), float(pixelHeight));
+    const core::GlyphBitmap g = font.glyph(char32_t(static_cast<unsigned char>(ch)), float(pixelHeight));
     const int left = int(std::lround(penX)) + g.xoff;
     for (int row = 0; row < g.height; ++row)
       for (int col = 0; col < g.width; ++col)
@@ -81,7 +81,7 @@ void LabelPainter::drawText(render::Image& image, double x, double y, const std:
   }
 }
 
-void LabelPainter::paint(render::Image& image, const std::vector<ProbeMark>& marks) const {
+void LabelPainter::paint(core::Image& image, const std::vector<ProbeMark>& marks) const {
   const double unit = std::max(12.0, image.height / 40.0);  // letter height
   const glm::vec4 dark(0.05f, 0.05f, 0.05f, 1.0f), white(1.0f), accent(1.0f, 0.85f, 0.0f, 1.0f);
   for (const auto& m : marks) {

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "stimuli/sets/probe_source.hpp"
 
 namespace tlab::stimuli {
@@ -22,9 +22,9 @@ class LabelPainter {
   static std::string defaultFontPath();
 
   // Draws every mark; sizes scale with the image (letters about 1/40 of its height).
-  void paint(render::Image& image, const std::vector<ProbeMark>& marks) const;
+  void paint(core::Image& image, const std::vector<ProbeMark>& marks) const;
   // Draws `text` with its top-left corner at (x, y), `pixelHeight` tall.
-  void drawText(render::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const;
+  void drawText(core::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const;
   // Width in pixels of `text` at `pixelHeight`.
   double textWidth(const std::string& text, double pixelHeight) const;
 

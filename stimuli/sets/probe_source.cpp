@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 
 namespace tlab::stimuli {
 
@@ -39,7 +39,7 @@ std::vector<ProbeQuestion> SurfacePointProbes::probe(const ProbeView& view, cons
       cumulativeArea.push_back(total);
     }
   if (triangles.empty() || !(total > 0.0)) throw std::runtime_error("points: the scene has no surface to mark");
-  render::SeededRandom random(spec.seed);
+  core::SeededRandom random(spec.seed);
   const double margin = 0.06 * std::min(view.width, view.height);
   const double spacing = 0.08 * std::min(view.width, view.height);
   ProbeQuestion q;

@@ -1,4 +1,5 @@
 #include "stimuli/sets/stimulus_set_file.hpp"
+#include "core/file_text.hpp"
 
 #include <fstream>
 #include <regex>
@@ -214,11 +215,9 @@ StimulusSetSpec parseStimulusSet(const std::string& text, const std::string& fil
 }
 
 StimulusSetSpec readStimulusSetFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw StimulusSetError(path + ": cannot read the stimulus-set file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseStimulusSet(text.str(), path);
+  const auto text = core::readFileText(path);
+  if (!text) throw StimulusSetError(path + ": cannot read the stimulus-set file");
+  return parseStimulusSet(*text, path);
 }
 
 }  // namespace tlab::stimuli

@@ -18,7 +18,7 @@
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
 #include "stimuli/sets/progress_bar.hpp"
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 
 namespace tlab::stimuli {
 
@@ -197,7 +197,7 @@ class SetJob {
     request.settings = style.settings;
     request.camera = cameras_[u.scene][u.view];
     request.timePasses = false;
-    const render::Image image = worker.renderer->render(request);
+    const core::Image image = worker.renderer->render(request);
     recordGpu(*worker.context);
     const std::string stem = stimulusStem(u, sceneEntry, style);
     RenderedStimulus base;
@@ -216,7 +216,7 @@ class SetJob {
         s.question = int(q);
         s.probes = probeSets[p][q];
         s.id = stem + "_p" + std::to_string(p + 1) + "_q" + std::to_string(q + 1);
-        render::Image labelled = image;
+        core::Image labelled = image;
         worker.painter->paint(labelled, visibleMarks(s.probes.marks));
         out.push_back(save(s, labelled));
       }
@@ -233,11 +233,11 @@ class SetJob {
   gpu::GpuInfo gpu() const { return gpu_; }
 
  private:
-  RenderedStimulus save(RenderedStimulus s, const render::Image& image) {
-    const std::vector<std::uint8_t> png = render::encodePng(image);
+  RenderedStimulus save(RenderedStimulus s, const core::Image& image) {
+    const std::vector<std::uint8_t> png = core::encodePng(image);
     s.image = "images/" + s.id + ".png";
-    s.sha256 = render::sha256Hex(png);
-    render::writeFileAtomically((out_ / s.image).string(), png);
+    s.sha256 = core::sha256Hex(png);
+    core::writeFileAtomically((out_ / s.image).string(), png);
     progress_->advance();
     return s;
   }
@@ -287,7 +287,7 @@ std::vector<std::pair<std::size_t, std::string>> writeFloorPlans(const StimulusS
     if (!image) continue;
     const std::string path = "floor-plans/s" + twoDigits(s + 1) + "-" + shortName(spec.scenes[s].source) + ".png";
     fs::create_directories(out / "floor-plans");
-    render::writeFileAtomically((out / path).string(), render::encodePng(*image));
+    core::writeFileAtomically((out / path).string(), core::encodePng(*image));
     plans.emplace_back(s, path);
   }
   return plans;
@@ -312,7 +312,7 @@ StimulusSetResult StimulusSetRenderer::render(const StimulusSetSpec& spec, const
   result.manifest = stimulusSetManifest(spec, scenes, result.stimuli, plans, result.gpu);
   result.manifestPath = (out / "manifest.json").string();
   const std::string text = result.manifest.dump(2) + "\n";
-  render::writeFileAtomically(result.manifestPath, std::vector<std::uint8_t>(text.begin(), text.end()));
+  core::writeFileAtomically(result.manifestPath, std::vector<std::uint8_t>(text.begin(), text.end()));
   if (spec.booklet) {
     result.bookletPath = (out / "booklet.pdf").string();
     writeBookletPdf(result.bookletPath, spec, result.stimuli, out.string());

@@ -2,7 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 
 namespace tlab::study {
 
@@ -51,7 +51,7 @@ std::string designFingerprint(const Experiment& e) {
   d["consent"] = e.consent.has_value();
   d["breaks"] = {e.breaks.every, e.breaks.blocks, e.breaks.minSeconds};
   d["training_feedback"] = e.trainingFeedback;
-  return render::sha256Hex(d.dump());
+  return core::sha256Hex(d.dump());
 }
 
 }  // namespace tlab::study

@@ -1,4 +1,5 @@
 #include "study/design/experiment_file.hpp"
+#include "core/file_text.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -350,11 +351,9 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
 }
 
 Experiment readExperimentFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ExperimentFileError(path + ": cannot open the experiment file");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return parseExperiment(s.str(), path);
+  const auto text = core::readFileText(path);
+  if (!text) throw ExperimentFileError(path + ": cannot open the experiment file");
+  return parseExperiment(*text, path);
 }
 
 }  // namespace tlab::study

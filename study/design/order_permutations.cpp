@@ -4,7 +4,7 @@
 #include <numeric>
 #include <string>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "study/design/design_error.hpp"
 
 namespace tlab::study {
@@ -22,7 +22,7 @@ OrderTable allPermutations(int n) {
 std::vector<int> seededRandomOrder(int n, std::uint64_t seed) {
   std::vector<int> order(std::size_t(std::max(n, 0)));
   std::iota(order.begin(), order.end(), 0);
-  render::SeededRandom random(seed);
+  core::SeededRandom random(seed);
   for (int i = n - 1; i > 0; --i) std::swap(order[std::size_t(i)], order[random.below(std::uint32_t(i + 1))]);
   return order;
 }

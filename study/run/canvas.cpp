@@ -9,8 +9,8 @@ Canvas::Canvas(int width, int height, Rgba fill) : width_(width), height_(height
   this->fill(fill);
 }
 
-Canvas::Canvas(const render::Image& image) : Canvas(image.width, image.height) {
-  rgba_ = render::toRgba8(image);
+Canvas::Canvas(const core::Image& image) : Canvas(image.width, image.height) {
+  rgba_ = core::toRgba8(image);
 }
 
 void Canvas::fill(Rgba color) { fillRect({0, 0, width_, height_}, color); }
@@ -68,8 +68,8 @@ void Canvas::drawCanvas(const Canvas& source, const Rect& target) {
   }
 }
 
-render::Image Canvas::toImage() const {
-  render::Image image(width_, height_);
+core::Image Canvas::toImage() const {
+  core::Image image(width_, height_);
   for (std::size_t i = 0; i < image.pixels.size(); ++i)
     image.pixels[i] = glm::vec4(rgba_[4 * i], rgba_[4 * i + 1], rgba_[4 * i + 2], rgba_[4 * i + 3]) / 255.0f;
   return image;

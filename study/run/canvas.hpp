@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 namespace tlab::study {
 
@@ -20,7 +20,7 @@ struct Rect {
 class Canvas {
  public:
   Canvas(int width, int height, Rgba fill = {255, 255, 255, 255});
-  explicit Canvas(const render::Image& image);  // 8-bit copy of a rendered image
+  explicit Canvas(const core::Image& image);  // 8-bit copy of a rendered image
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -37,7 +37,7 @@ class Canvas {
   // Copies `source` scaled (nearest) into `target`.
   void drawCanvas(const Canvas& source, const Rect& target);
 
-  render::Image toImage() const;
+  core::Image toImage() const;
 
  private:
   int width_, height_;

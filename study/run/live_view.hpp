@@ -17,6 +17,7 @@ class LiveView {
   LiveView(std::shared_ptr<const render::Scene> scene, const StimulusKey& stimulus, Navigation navigation, const render::Camera& start);
 
   CameraNavigator& navigator() { return navigator_; }
+  const CameraNavigator& navigator() const { return navigator_; }
   // The cursor over the picture, in fractions of it ((0, 0) = top left): with the dynamic style in
   // active mode (Elmqvist Sec. V), its lens follows the cursor.
   // Returns whether the picture changes.

@@ -8,7 +8,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {
@@ -34,7 +34,7 @@ render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key)
 
 bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
 
-Canvas markQuestion(const render::Image& picture, const tasks::Question& question, TextPainter& painter) {
+Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter) {
   Canvas canvas(picture);
   const float textSize = std::max(12.0f, float(picture.height) / 32.0f);
   for (const auto& p : question.points) {
@@ -81,7 +81,7 @@ const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& ke
   request.camera = resolveCamera(*scene, key);
   request.timePasses = false;
   render::Renderer renderer(*scene);
-  auto picture = std::make_shared<render::Image>(renderer.render(request));
+  auto picture = std::make_shared<core::Image>(renderer.render(request));
   return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), *request.camera}).first->second;
 }
 
@@ -133,12 +133,12 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   auto found = written_.find(id);
   if (found == written_.end()) {
     auto canvas = std::make_shared<const Canvas>(markQuestion(*p.picture, p.question, painter_));
-    const std::vector<std::uint8_t> png = render::encodePng(canvas->toImage());
-    const std::string sha = render::sha256Hex(png);
+    const std::vector<std::uint8_t> png = core::encodePng(canvas->toImage());
+    const std::string sha = core::sha256Hex(png);
     const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
     if (!std::filesystem::exists(path)) {
       std::filesystem::create_directories(directory_);  // made with its first stimulus: a failed start leaves no folder
-      render::writeFileAtomically(path, png);
+      core::writeFileAtomically(path, png);
     }
     found = written_.emplace(id, std::make_pair(sha, std::move(canvas))).first;
   }

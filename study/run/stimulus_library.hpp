@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/camera.hpp"
 #include "study/run/canvas.hpp"
@@ -23,7 +23,7 @@ namespace tlab::study {
 
 struct PreparedTrial {
   tasks::Question question;
-  std::shared_ptr<const render::Image> picture;  // the rendering without marks (the observer looks here)
+  std::shared_ptr<const core::Image> picture;  // the rendering without marks (the observer looks here)
   std::shared_ptr<const render::Scene> scene;    // its scene and camera (interactive trials render live from here)
   render::Camera camera;
   std::shared_ptr<const Canvas> stimulus;        // as shown: picture + marks
@@ -38,7 +38,7 @@ struct PreparedTrial {
 bool isMarkedPoint(const tasks::ProbePoint& point);
 
 // Draws the marks of a question's points (ring + label) onto a copy of the picture.
-Canvas markQuestion(const render::Image& picture, const tasks::Question& question, TextPainter& painter);
+Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter);
 
 class StimulusLibrary {
  public:
@@ -49,7 +49,7 @@ class StimulusLibrary {
 
  private:
   struct Rendered {
-    std::shared_ptr<const render::Image> picture;
+    std::shared_ptr<const core::Image> picture;
     std::shared_ptr<render::Scene> scene;
     render::Camera camera;
   };

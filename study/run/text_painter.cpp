@@ -5,13 +5,13 @@
 #include <iterator>
 #include <stdexcept>
 
-#include "renderer/image/font_rasterizer.hpp"
+#include "core/font_rasterizer.hpp"
 
 namespace tlab::study {
 
 struct TextPainter::FontInfo {
   explicit FontInfo(const std::string& path) : rasterizer(path) {}
-  render::FontRasterizer rasterizer;
+  core::FontRasterizer rasterizer;
 };
 
 std::u32string decodeUtf8(std::string_view text) {
@@ -33,7 +33,7 @@ std::u32string decodeUtf8(std::string_view text) {
   return out;
 }
 
-std::string defaultFont() { return render::dejavuFontPath("DejaVuSans.ttf"); }
+std::string defaultFont() { return core::dejavuFontPath("DejaVuSans.ttf"); }
 
 TextPainter::TextPainter(const std::string& fontPath) : font_(new FontInfo(fontPath)) {}
 
@@ -43,7 +43,7 @@ const TextPainter::Glyph& TextPainter::glyph(char32_t codepoint, float pixelHeig
   const auto key = std::make_pair(codepoint, int(pixelHeight * 4));
   const auto found = cache_.find(key);
   if (found != cache_.end()) return found->second;
-  render::GlyphBitmap b = font_->rasterizer.glyph(codepoint, pixelHeight);
+  core::GlyphBitmap b = font_->rasterizer.glyph(codepoint, pixelHeight);
   Glyph g;
   g.width = b.width;
   g.height = b.height;

@@ -10,7 +10,7 @@
 
 namespace tlab::study {
 
-// DejaVu Sans, from $TLAB_FONT_DIR when set (renderer/image/font_rasterizer.hpp).
+// DejaVu Sans, from $TLAB_FONT_DIR when set (core/font_rasterizer.hpp).
 std::string defaultFont();
 
 class TextPainter {

@@ -171,7 +171,7 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
   if (plan.trialTimeLimitSeconds) limit = std::min(limit, *plan.trialTimeLimitSeconds - s.usedSeconds[key]);
 
   const auto [position, total] = phasePosition(s.plan, index);
-  TrialView view{plan, prepared, limit, position, total};
+  TrialView view{plan, prepared, limit, position, total, {}};
   Response response;
   if (limit <= 0.0) {
     response.note = "trial time limit reached";  // never shown: missing, which counts as wrong

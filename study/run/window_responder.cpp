@@ -1,6 +1,7 @@
 #include "study/run/window_responder.hpp"
 
 #include "study/run/live_view.hpp"
+#include "study/run/trial_screen.hpp"
 #include "study/simulate/simulated_observer.hpp"
 
 #include <algorithm>
@@ -50,25 +51,7 @@ void onCursor(GLFWwindow* w, double x, double y) {
 }
 void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close, 0, 0, 0, 0, monotonicNs()}); }
 
-std::string hint(tasks::AnswerKind kind) {
-  using tasks::AnswerKind;
-  switch (kind) {
-    case AnswerKind::LayerNumber: return "Type the layer number (1 = front) and press Enter.";
-    case AnswerKind::Count: return "Type the number and press Enter.";
-    case AnswerKind::Label: return "Click the label (or type it and press Enter).";
-    case AnswerKind::LabelSet: return "Click labels to select them, then press Enter (Enter with none selected: none).";
-    case AnswerKind::Letter: return "Click the letter (or press its key).";
-    case AnswerKind::FloorPoint: return "Click the place on the floor plan (right), or type x,z and press Enter.";
-  }
-  return "";
-}
 
-std::string formatCountdown(double seconds) {
-  const int s = std::max(0, int(std::ceil(seconds)));
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%d:%02d", s / 60, s % 60);
-  return buf;
-}
 
 }  // namespace
 
@@ -216,231 +199,123 @@ bool WindowResponder::showMessage(const std::string& title, const std::string& t
   return false;
 }
 
+// One input of a trial, handled by the screen (answers, selections, camera moves) or here (pause,
+// close). `answer` is the text it submits, if any.
+WindowResponder::TrialInput WindowResponder::trialInput(TrialScreen& screen, const Input& in) {
+  TrialInput r;
+  const bool arrow = in.key == GLFW_KEY_UP || in.key == GLFW_KEY_DOWN || in.key == GLFW_KEY_LEFT || in.key == GLFW_KEY_RIGHT;
+  switch (in.kind) {
+    case Input::Kind::Close:
+      closed_ = true;
+      event(in.tNs, "close", "");
+      r.closed = true;
+      break;
+    case Input::Kind::Key:
+      if (arrow && screen.live()) {
+        screen.arrow(in.key == GLFW_KEY_UP ? 1 : in.key == GLFW_KEY_DOWN ? -1 : 0, in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
+        event(in.tNs, "camera", screen.cameraText());
+      } else if (in.key == GLFW_KEY_ESCAPE) {
+        const std::int64_t start = monotonicNs();
+        r.closed = !pause();
+        r.pausedNs = monotonicNs() - start;
+      } else if (in.key == GLFW_KEY_BACKSPACE) {
+        screen.backspace();
+      } else if (in.key == GLFW_KEY_ENTER || in.key == GLFW_KEY_KP_ENTER) {
+        r.answer = screen.enter();
+      }
+      break;
+    case Input::Kind::Char: r.answer = screen.typedChar(utf8(in.codepoint)); break;
+    case Input::Kind::Click: r.answer = screen.click(in.x, in.y); break;
+    case Input::Kind::Move: screen.moveTo(in.x, in.y); break;
+    case Input::Kind::Drag:
+      if (screen.live()) {
+        screen.drag(in.x, in.y);
+        event(in.tNs, "camera", screen.cameraText());
+      }
+      break;
+  }
+  return r;
+}
+
+// The stimulus is on screen from the swap after its first frame (the onset, committed at once
+// through view.onset); then frames are presented at the refresh rate (PsychoPy's frame record:
+// every swap interval is known, and frames over 1.5 refresh intervals count as late) until an
+// answer parses or the limit passes. Paused time is left out of the RT and the countdown.
 std::optional<Response> WindowResponder::respond(const TrialView& view) {
   if (closed_) return std::nullopt;
   const tasks::Question& q = view.prepared.question;
-  const Canvas& stimulus = *view.prepared.stimulus;
-  Canvas base = blank();
-  const bool floorAnswer = q.answerKind == tasks::AnswerKind::FloorPoint && view.prepared.floorPlan;
-  // Interactive trials render the scene live in the stimulus area (Elmqvist: orbit / walk).
-  std::optional<LiveView> live;
-  if (view.plan.navigation != Navigation::None && view.prepared.scene)
-    live.emplace(view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera);
-  const ScreenLayout layout = floorAnswer ? makeScreenLayoutWithPlan(base.width(), base.height(), stimulus.width(), stimulus.height())
-                                          : makeScreenLayout(base.width(), base.height(), stimulus.width(), stimulus.height());
-  base.fillRect(layout.header, kBand);
-  base.fillRect(layout.answer, kBand);
-  base.drawCanvas(stimulus, layout.stimulus);
-  if (floorAnswer) {
-    base.drawCanvas(*view.prepared.floorPlanImage, *layout.plan);
-    base.strokeRect(*layout.plan, kInk, 1);
-  }
-  painter_.drawLine(base, q.text, 16, 12, 22.0f, kInk);
-  painter_.drawLine(base, hint(q.answerKind), 16, layout.answer.y + 8, 18.0f, kMuted);
-  char counter[64];
-  std::snprintf(counter, sizeof counter, "%s %d/%d", view.plan.phase == Phase::Training ? "training" : "trial", view.index, view.total);
-  painter_.drawLine(base, counter, base.width() - 260, 12, 18.0f, kMuted);
-
-  std::vector<std::string> labels;
-  std::vector<glm::dvec2> screenPoints;
-  nlohmann::json layoutJson = {{"stimulus", {layout.stimulus.x, layout.stimulus.y, layout.stimulus.width, layout.stimulus.height}},
-                               {"canvas", {base.width(), base.height()}}};
-  for (const auto& p : q.points) {
-    if (!isMarkedPoint(p)) continue;
-    if (q.answerKind == tasks::AnswerKind::Label && p.role != "candidate") continue;
-    if (q.answerKind == tasks::AnswerKind::LabelSet && p.role != "mark") continue;
-    labels.push_back(p.label);
-    screenPoints.push_back(layout.toScreen(p.pixel));
-    layoutJson["labels"][p.label] = {screenPoints.back().x, screenPoints.back().y};
-  }
-  std::vector<Button> buttons;
-  if (q.answerKind == tasks::AnswerKind::Letter) {
-    std::vector<std::string> letters;
-    for (const char l : tasks::patternLetters()) letters.push_back(std::string(1, l));
-    buttons = buttonRow(layout.answer, letters);
-  }
-  for (const auto& b : buttons) layoutJson["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
-  if (floorAnswer) layoutJson["plan"] = {layout.plan->x, layout.plan->y, layout.plan->width, layout.plan->height};
-
-  std::string typed, error;
-  std::set<std::string> selected;
-  std::int64_t pausedNs = 0;
-  std::int64_t onsetNs = 0;
-  int shownSecond = -1;
-  bool dirty = true;
-  auto elapsed = [&](std::int64_t t) { return (t - onsetNs - pausedNs) / 1e9; };
-  auto frame = [&]() {
-    Canvas c = base;
-    if (live) c.drawCanvas(live->frame(), layout.stimulus);
-    const double left = onsetNs ? view.limitSeconds - elapsed(monotonicNs()) : view.limitSeconds;
-    const std::string countdown = formatCountdown(left);
-    painter_.drawLine(c, countdown, base.width() - 100, 12, 24.0f, left < 10 ? kWarn : kInk);
-    for (std::size_t i = 0; i < labels.size(); ++i)
-      if (selected.count(labels[i])) c.strokeCircle(screenPoints[i].x, screenPoints[i].y, 10.0, 3.0, kAccent);
-    for (const auto& b : buttons) drawButton(c, painter_, b, false);
-    const std::string shown = q.answerKind == tasks::AnswerKind::LabelSet && typed.empty()
-                                  ? "selected: " + (selected.empty() ? std::string("none") : [&] {
-                                      std::string s;
-                                      for (const auto& l : selected) s += (s.empty() ? "" : ",") + l;
-                                      return s;
-                                    }())
-                                  : "answer: " + typed + "_";
-    painter_.drawLine(c, shown, 16, layout.answer.y + 40, 22.0f, kInk);
-    if (!error.empty()) painter_.drawLine(c, error, 16, layout.answer.y + 70, 16.0f, kWarn);
-    return c;
-  };
-
+  TrialScreen screen(view, blank(), painter_);
   inputs_.clear();
-  // Frames are presented at the refresh rate throughout the trial (PsychoPy's frame record): the
-  // interval of every swap is known, and frames over 1.5 refresh intervals count as late.
   const double refreshMs = 1000.0 / (refreshHz() > 0 ? refreshHz() : 60);
+  std::int64_t onsetNs = 0, pausedNs = 0, lastSwapNs = 0;
   std::optional<double> onsetFrameMs;
   int lateFrames = 0;
-  std::int64_t lastSwapNs = 0;
-  Canvas current = frame();
-  auto show = [&](const Canvas& c) {
-    const std::int64_t swap = present(c);
-    const double interval = (swap - lastSwapNs) / 1e6;
-    if (lastSwapNs == onsetNs && !onsetFrameMs) onsetFrameMs = interval;
-    if (interval > 1.5 * refreshMs) ++lateFrames;
-    lastSwapNs = swap;
-  };
-  auto timed = [&](Response r) {
+  auto elapsed = [&](std::int64_t t) { return (t - onsetNs - pausedNs) / 1e9; };
+  auto response = [&](std::optional<std::string> text, std::int64_t t, std::string note) {
+    Response r;
+    r.text = std::move(text);
+    r.onsetNs = onsetNs;
+    r.responseNs = t;
+    if (r.text) r.rtSeconds = std::max(0.0, elapsed(t));
+    r.note = std::move(note);
     r.onsetFrameMs = onsetFrameMs;
     r.lateFrames = lateFrames;
     r.onsetToSwapMs = lastPresentOnsetMs_;
     return r;
   };
+  Canvas current = screen.frame(view.limitSeconds);
   {
-    const Canvas& first = current;
     const std::int64_t before = monotonicNs();
-    onsetNs = present(first);
-    lastSwapNs = onsetNs;
+    onsetNs = lastSwapNs = present(current);
     lastPresentOnsetMs_ = (onsetNs - before) / 1e6;
     if (autopilot_) {
       const ObserverDecision d = autopilot_->decide(view);
       scriptText(d.typed, q.answerKind != tasks::AnswerKind::Letter, std::min(d.seconds * autopilotPace_, view.limitSeconds / 2));
     }
     ++onsets_;
-    const double onsetMs = (onsetNs - before) / 1e6;
-    onsetSumMs_ += onsetMs;
-    onsetMaxMs_ = std::max(onsetMaxMs_, onsetMs);
-    layoutJson["present_ms"] = onsetMs;
-    if (view.onset) view.onset(onsetNs, layoutJson.dump());  // committed now, before any answer
-    else event(onsetNs, "onset", layoutJson.dump());
+    onsetSumMs_ += lastPresentOnsetMs_;
+    onsetMaxMs_ = std::max(onsetMaxMs_, lastPresentOnsetMs_);
+    nlohmann::json layout = screen.layoutJson();
+    layout["present_ms"] = lastPresentOnsetMs_;
+    if (view.onset) view.onset(onsetNs, layout.dump());  // committed now, before any answer
+    else event(onsetNs, "onset", layout.dump());
   }
-  auto submit = [&](const std::string& text, std::int64_t t) -> std::optional<Response> {
-    try {
-      tasks::parseAnswer(q, text);
-    } catch (const tasks::AnswerFormatError& e) {
-      error = e.what();
-      typed.clear();
-      dirty = true;
-      event(t, "invalid-answer", text);
-      return std::nullopt;
-    }
-    Response r;
-    r.text = text;
-    r.onsetNs = onsetNs;
-    r.responseNs = t;
-    r.rtSeconds = elapsed(t);
-    return r;
-  };
-
+  int shownSecond = -1;
   while (true) {
     const double left = view.limitSeconds - elapsed(monotonicNs());
     if (left <= 0) {
-      Response r;
-      r.onsetNs = onsetNs;
-      r.responseNs = monotonicNs();
-      r.note = "time limit";
-      event(r.responseNs, "timeout", "");
-      return timed(r);
+      event(monotonicNs(), "timeout", "");
+      return response(std::nullopt, monotonicNs(), "time limit");
     }
     waitForInput(std::min(0.005, left), true);
     while (!inputs_.empty()) {
       const Input in = inputs_.front();
       inputs_.pop_front();
-      std::optional<Response> answer;
-      if (in.kind == Input::Kind::Close) {
-        closed_ = true;
-        event(in.tNs, "close", "");
-        return std::nullopt;
-      }
-      const bool arrow = in.key == GLFW_KEY_UP || in.key == GLFW_KEY_DOWN || in.key == GLFW_KEY_LEFT || in.key == GLFW_KEY_RIGHT;
-      if (in.kind == Input::Kind::Key && !(live && arrow)) {
-        if (in.key == GLFW_KEY_ESCAPE) {
-          const std::int64_t start = monotonicNs();
-          if (!pause()) return std::nullopt;
-          pausedNs += monotonicNs() - start;
-          dirty = true;
-        } else if (in.key == GLFW_KEY_BACKSPACE) {
-          dropLastCodepoint(typed);
-          dirty = true;
-        } else if (in.key == GLFW_KEY_ENTER || in.key == GLFW_KEY_KP_ENTER) {
-          std::string text = typed;
-          if (q.answerKind == tasks::AnswerKind::LabelSet && text.empty()) {
-            for (const auto& l : selected) text += (text.empty() ? "" : ",") + l;
-            if (text.empty()) text = "none";
-          }
-          if (!text.empty()) answer = submit(text, in.tNs);
-        }
-      } else if (in.kind == Input::Kind::Key) {  // an arrow key in a live trial
-        live->navigator().move(in.key == GLFW_KEY_UP ? 1 : in.key == GLFW_KEY_DOWN ? -1 : 0,
-                               in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
-        event(in.tNs, "camera", live->navigator().describe());
-        dirty = true;
-      } else if (in.kind == Input::Kind::Move) {
-        if (live && layout.stimulus.contains(in.x, in.y))
-          dirty = live->pointAt({float((in.x - layout.stimulus.x) / layout.stimulus.width),
-                                 float((in.y - layout.stimulus.y) / layout.stimulus.height)}) || dirty;
-      } else if (in.kind == Input::Kind::Drag) {
-        if (live) {
-          live->navigator().drag(in.x, in.y);
-          event(in.tNs, "camera", live->navigator().describe());
-          dirty = true;
-        }
-      } else if (in.kind == Input::Kind::Char) {
-        const std::string ch = utf8(in.codepoint);
-        if (q.answerKind == tasks::AnswerKind::Letter && ch.size() == 1 &&
-            tasks::patternLetters().find(char(std::toupper(ch[0]))) != std::string::npos)
-          answer = submit(std::string(1, char(std::toupper(ch[0]))), in.tNs);
-        else if (typed.size() < 256) {
-          typed += ch;
-          dirty = true;
-        }
-      } else if (in.kind == Input::Kind::Click) {
-        for (const auto& b : buttons)
-          if (b.rect.contains(in.x, in.y)) answer = submit(b.label, in.tNs);
-        if (floorAnswer && layout.plan->contains(in.x, in.y)) {
-          const FloorPlan& plan = *view.prepared.floorPlan;
-          const glm::dvec2 planPixel((in.x - layout.plan->x) * plan.width / double(layout.plan->width),
-                                     (in.y - layout.plan->y) * plan.height / double(layout.plan->height));
-          const glm::dvec2 world = plan.worldAt(planPixel);
-          char text[96];
-          std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);
-          answer = submit(text, in.tNs);
-        }
-        const int hit = hitPoint(screenPoints, {in.x, in.y});
-        if (hit >= 0 && q.answerKind == tasks::AnswerKind::Label) answer = submit(labels[std::size_t(hit)], in.tNs);
-        if (hit >= 0 && q.answerKind == tasks::AnswerKind::LabelSet) {
-          const std::string& l = labels[std::size_t(hit)];
-          if (!selected.erase(l)) selected.insert(l);
-          dirty = true;
-        }
-      }
-      if (answer) {
-        answer->rtSeconds = std::max(0.0, *answer->rtSeconds);
-        return timed(*answer);
+      const TrialInput r = trialInput(screen, in);
+      if (r.closed) return std::nullopt;
+      pausedNs += r.pausedNs;
+      if (r.pausedNs > 0) shownSecond = -1;  // the pause screen covered the trial: draw it again
+      if (!r.answer) continue;
+      try {
+        tasks::parseAnswer(q, *r.answer);
+        return response(r.answer, in.tNs, "");
+      } catch (const tasks::AnswerFormatError& e) {
+        screen.rejected(e.what());  // not submitted: the clock keeps running
+        event(in.tNs, "invalid-answer", *r.answer);
       }
     }
     const int second = int(std::ceil(view.limitSeconds - elapsed(monotonicNs())));
-    if (dirty || second != shownSecond) {
-      current = frame();
+    if (screen.dirty() || second != shownSecond) {
+      current = screen.frame(view.limitSeconds - elapsed(monotonicNs()));
       shownSecond = second;
-      dirty = false;
     }
-    if ((monotonicNs() - lastSwapNs) / 1e6 >= refreshMs) show(current);
+    if ((monotonicNs() - lastSwapNs) / 1e6 >= refreshMs) {
+      const std::int64_t swap = present(current);
+      const double interval = (swap - lastSwapNs) / 1e6;
+      if (lastSwapNs == onsetNs && !onsetFrameMs) onsetFrameMs = interval;
+      if (interval > 1.5 * refreshMs) ++lateFrames;
+      lastSwapNs = swap;
+    }
   }
 }
 

@@ -37,6 +37,7 @@ struct FrameTiming {
 };
 
 class SimulatedObserver;
+class TrialScreen;
 
 class WindowResponder final : public Responder {
  public:
@@ -76,6 +77,12 @@ class WindowResponder final : public Responder {
 
  private:
   enum class Wait { Continue, Closed };
+  struct TrialInput {
+    std::optional<std::string> answer;
+    bool closed = false;
+    std::int64_t pausedNs = 0;
+  };
+  TrialInput trialInput(TrialScreen& screen, const Input& in);
   std::optional<Input> nextInput(const Canvas& screen);
   std::optional<std::string> askField(const std::string& title, const FormField& field, int index, int count);
   int refreshHz() const;

@@ -12,7 +12,7 @@ double luminance(const glm::vec4& c) {
   return 0.2126 * channel(c.r) + 0.7152 * channel(c.g) + 0.0722 * channel(c.b);
 }
 
-double localRmsContrast(const render::Image& image, glm::dvec2 pixel, int radius) {
+double localRmsContrast(const core::Image& image, glm::dvec2 pixel, int radius) {
   const int cx = int(std::floor(pixel.x)), cy = int(std::floor(pixel.y));
   if (cx < 0 || cy < 0 || cx >= image.width || cy >= image.height) return 0.0;
   double sum = 0.0, sumSq = 0.0;

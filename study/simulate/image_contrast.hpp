@@ -4,12 +4,12 @@
 // or a layer boundary drawn with contrast stands out; a washed-out region does not.
 #include <glm/glm.hpp>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 namespace tlab::study {
 
 double luminance(const glm::vec4& rgba);
 // Window clipped to the image; 0 for a point outside it.
-double localRmsContrast(const render::Image& image, glm::dvec2 pixel, int radius = 4);
+double localRmsContrast(const core::Image& image, glm::dvec2 pixel, int radius = 4);
 
 }  // namespace tlab::study

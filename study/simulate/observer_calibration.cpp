@@ -48,7 +48,7 @@ double guessSuccess(const PlannedTrial& plan, const PreparedTrial& prepared, con
   int correct = 0;
   for (int g = 0; g < kGuesses; ++g) {
     const SimulatedObserver observer(guessing, seed, "calibration-guess-" + std::to_string(g));
-    const ObserverDecision d = observer.decide({plan, prepared, 1e12, plan.sequence, 1});
+    const ObserverDecision d = observer.decide({plan, prepared, 1e12, plan.sequence, 1, {}});
     try {
       correct += task->score(prepared.question, tasks::Answer{d.answer, 1.0}).correct ? 1 : 0;
     } catch (const std::invalid_argument&) {  // a malformed guess scores nothing

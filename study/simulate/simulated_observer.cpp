@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 #include "study/simulate/image_contrast.hpp"
 #include "study/design/order_permutations.hpp"
 
@@ -17,7 +17,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 // Standard normal deviate (Box-Muller) from the portable uniform source.
-double normal(render::SeededRandom& random) {
+double normal(core::SeededRandom& random) {
   const double u1 = (double(random.uniform()) + 0x1p-25);
   const double u2 = double(random.uniform());
   return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
@@ -36,7 +36,7 @@ std::vector<std::string> labelsWithRole(const tasks::Question& q, const std::str
   return out;
 }
 
-std::string guess(const tasks::Question& q, render::SeededRandom& random) {
+std::string guess(const tasks::Question& q, core::SeededRandom& random) {
   using tasks::AnswerKind;
   switch (q.answerKind) {
     case AnswerKind::LayerNumber: {
@@ -72,7 +72,7 @@ std::string guess(const tasks::Question& q, render::SeededRandom& random) {
   return "";
 }
 
-std::string trueAnswer(const tasks::Question& q, render::SeededRandom& random) {
+std::string trueAnswer(const tasks::Question& q, core::SeededRandom& random) {
   using tasks::AnswerKind;
   switch (q.answerKind) {
     case AnswerKind::LayerNumber:
@@ -119,7 +119,7 @@ std::string describeSimulatedObserver(const ObserverParams& p) {
 SimulatedObserver::SimulatedObserver(ObserverParams params, std::uint64_t experimentSeed, const std::string& participant,
                                      double paceSeconds)
     : params_(params), seed_(mixSeed(experimentSeed, "observer:" + participant)), paceSeconds_(paceSeconds) {
-  render::SeededRandom random(mixSeed(seed_, "skill"));
+  core::SeededRandom random(mixSeed(seed_, "skill"));
   skill_ = std::exp(params_.skillSpread * normal(random));
 }
 
@@ -138,7 +138,7 @@ double SimulatedObserver::visibility(const PreparedTrial& prepared) const {
 }
 
 ObserverDecision SimulatedObserver::decide(const TrialView& view) const {
-  render::SeededRandom random(mixSeed(seed_, std::uint64_t(view.plan.sequence)));
+  core::SeededRandom random(mixSeed(seed_, std::uint64_t(view.plan.sequence)));
   ObserverDecision d;
   d.visibility = visibility(view.prepared);
   d.pKnow = 1.0 / (1.0 + std::exp(-params_.sensitivity * (skill_ * d.visibility - params_.threshold)));
@@ -169,7 +169,7 @@ std::optional<Response> SimulatedObserver::respond(const TrialView& view) {
 }
 
 std::optional<std::vector<std::string>> SimulatedObserver::fillForm(const std::string& title, const std::vector<FormField>& fields) {
-  render::SeededRandom random(mixSeed(seed_, "form:" + title + ":" + std::to_string(questionnaires_++)));
+  core::SeededRandom random(mixSeed(seed_, "form:" + title + ":" + std::to_string(questionnaires_++)));
   std::vector<std::string> values;
   for (const auto& f : fields) {
     switch (f.kind) {

@@ -10,7 +10,7 @@
 #include <stdexcept>
 
 #include "analysis/report_html.hpp"
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 #include "stimuli/sets/progress_bar.hpp"
 #include "study/design/counterbalancing.hpp"
 #include "study/design/example_experiments.hpp"
@@ -39,7 +39,7 @@ using Clock = std::chrono::steady_clock;
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 void writeText(const fs::path& path, const std::string& text) {
-  render::writeFileAtomically(path.string(), std::vector<std::uint8_t>(text.begin(), text.end()));
+  core::writeFileAtomically(path.string(), std::vector<std::uint8_t>(text.begin(), text.end()));
 }
 
 // An area-averaged copy at most `maxSide` pixels on its longer side (for the report's gallery).
@@ -63,7 +63,7 @@ Canvas thumbnail(const Canvas& source, int maxSide) {
 }
 
 std::string pngBytes(const Canvas& canvas) {
-  const auto bytes = render::encodePng(canvas.toImage());
+  const auto bytes = core::encodePng(canvas.toImage());
   return std::string(bytes.begin(), bytes.end());
 }
 

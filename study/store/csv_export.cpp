@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 namespace tlab::study {
 
@@ -19,7 +19,7 @@ class CsvWriter {
   }
   std::size_t columns() const { return columns_; }
   void write(const std::string& path) const {
-    render::writeFileAtomically(path, std::vector<std::uint8_t>(text_.begin(), text_.end()));
+    core::writeFileAtomically(path, std::vector<std::uint8_t>(text_.begin(), text_.end()));
   }
 
  private:

@@ -14,7 +14,7 @@
 #include <sqlite3.h>
 #include <unistd.h>
 
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 #include "study/run/fault_point.hpp"
 #include "study/store/schema_migrations.hpp"
 
@@ -176,7 +176,7 @@ std::vector<ExperimentVersion> SqliteStore::versions(const std::string& experime
 }
 
 std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) {
-  const std::string hash = render::sha256Hex(e.text);
+  const std::string hash = core::sha256Hex(e.text);
   for (auto& v : versions(e.id))
     if (v.sha256 == hash) return v;
   return std::nullopt;
@@ -204,7 +204,7 @@ std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& exper
 
 ExperimentVersion SqliteStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
   if (auto known = findVersion(e)) return *known;
-  const std::string hash = render::sha256Hex(e.text);
+  const std::string hash = core::sha256Hex(e.text);
   Statement other = db_->prepare("SELECT id FROM experiments WHERE sha256 = ?1");
   other.bind(1, hash);
   if (other.step())  // the same text under another id cannot happen: the id is part of the text

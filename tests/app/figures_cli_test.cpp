@@ -9,8 +9,8 @@
 #include <map>
 #include <sstream>
 
-#include "renderer/image/image.hpp"
-#include "renderer/image/sha256.hpp"
+#include "core/image.hpp"
+#include "core/sha256.hpp"
 #include "tests/support/run_command.hpp"
 
 using namespace tlab::testing;
@@ -45,14 +45,14 @@ TEST(FiguresCli, EveryFigureMatchesItsHashAndItsCaptionedCommand) {
   std::map<std::string, std::string> actual;
   for (const auto& entry : fs::directory_iterator(dir)) {
     const std::string name = entry.path().filename().string();
-    if (entry.path().extension() == ".png" && name != "figures.png") actual[name] = tlab::render::sha256Hex(readText(entry.path().string()));
+    if (entry.path().extension() == ".png" && name != "figures.png") actual[name] = tlab::core::sha256Hex(readText(entry.path().string()));
   }
   EXPECT_GE(actual.size(), 25u);
   if (std::getenv("TLAB_UPDATE_FIGURES")) {
     std::string text;
     for (const auto& [file, hash] : actual) text += hash + "  " + file + "\n";
     fs::create_directories(fs::path(kHashes).parent_path());
-    tlab::render::writeFileAtomically(kHashes, std::vector<std::uint8_t>(text.begin(), text.end()));
+    tlab::core::writeFileAtomically(kHashes, std::vector<std::uint8_t>(text.begin(), text.end()));
     GTEST_SKIP() << "rewrote " << kHashes;
   }
   EXPECT_EQ(actual, readHashes()) << "a figure changed: look at it, then TLAB_UPDATE_FIGURES=1 rewrites " << kHashes;
@@ -63,7 +63,7 @@ TEST(FiguresCli, EveryFigureMatchesItsHashAndItsCaptionedCommand) {
     ASSERT_EQ(command.rfind("tlab render ", 0), 0u) << command;
     const auto again = runCommand("cd " + dir.string() + " && " + kTlab + command.substr(4) + " >/dev/null");
     ASSERT_EQ(again.exitCode, 0) << again.err;
-    EXPECT_EQ(tlab::render::sha256Hex(readText((dir / (std::string(id) + ".png")).string())), actual[std::string(id) + ".png"])
+    EXPECT_EQ(tlab::core::sha256Hex(readText((dir / (std::string(id) + ".png")).string())), actual[std::string(id) + ".png"])
         << command;
   }
   EXPECT_NE(captions.find("Carnecky et al. 2013 (seed 000), Fig. 9 (a)"), std::string::npos);

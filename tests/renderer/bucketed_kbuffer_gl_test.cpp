@@ -190,7 +190,7 @@ TEST(BucketedKBufferGl, AllThreeModesDrawTheSphere) {
   Renderer renderer(buildBuiltinScene("sphere", builtinScenes()));
   for (const char* mode : {"plain", "shading", "transparency"}) {
     RenderStats stats;
-    const Image image = renderer.render(curvatureRequest(64, {{"mode", mode}}), &stats);
+    const tlab::core::Image image = renderer.render(curvatureRequest(64, {{"mode", mode}}), &stats);
     const glm::vec4 centre = image.at(32, 32), corner = image.at(0, 0);
     EXPECT_EQ(corner, glm::vec4(1, 1, 1, 1)) << mode << ": background";
     EXPECT_LT(centre.b, 0.9f) << mode << ": the orange sphere covers the centre";

@@ -21,10 +21,10 @@ TEST_P(ConstantClosedForm, MatchesWithinOneStep) {
   r.height = 30;
   r.style = "constant";
   r.settings = {{"alpha", std::to_string(a)}, {"lighting", "none"}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   const glm::vec3 layer = scene.objects[0].frontColor, bg = scene.background;
   const double t = std::pow(1.0 - a, n);
-  const auto rgba = toRgba8(img);
+  const auto rgba = tlab::core::toRgba8(img);
   for (int c = 0; c < 3; ++c) {
     const double expected = (1.0 - t) * layer[c] + t * bg[c];
     for (std::size_t p = 0; p < img.pixels.size(); ++p) {
@@ -45,7 +45,7 @@ TEST(Compositing, OpaqueShowsTheNearestSurfaceAndTheBackground) {
   r.height = 33;
   r.style = "opaque";
   r.settings = {{"lighting", "none"}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   EXPECT_NEAR(img.at(16, 16).r, scene.objects[0].frontColor.r, 1e-6);  // outer shell in front
   EXPECT_NEAR(img.at(0, 0).r, scene.background.r, 1e-6);
 }
@@ -56,6 +56,6 @@ TEST(Compositing, HeadlightShadingIsBrightestFacingTheViewer) {
   r.width = 65;
   r.height = 65;
   r.style = "opaque";
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   EXPECT_GT(img.at(32, 32).r, img.at(32, 8).r);
 }

@@ -20,7 +20,7 @@ RenderRequest request(const std::string& style, std::map<std::string, std::strin
   return r;
 }
 
-double maxDifference(const Image& a, const Image& b) {
+double maxDifference(const tlab::core::Image& a, const tlab::core::Image& b) {
   double d = 0;
   for (std::size_t p = 0; p < a.pixels.size(); ++p)
     for (int c = 0; c < 3; ++c) d = std::max(d, double(std::abs(a.pixels[p][c] - b.pixels[p][c])));
@@ -37,9 +37,9 @@ TEST_P(PeelMatchesBuffer, ConstantImagesAgreeWithinOneStepAndIterationsAreLayers
   PeelingRenderer peeler(scene);
   for (const char* lighting : {"headlight", "none"}) {
     const RenderRequest r = request("constant", {{"alpha", "0.3"}, {"lighting", lighting}});
-    const Image a = buffer.render(r);
+    const tlab::core::Image a = buffer.render(r);
     PeelStats stats;
-    const Image b = peeler.render(r, &stats);
+    const tlab::core::Image b = peeler.render(r, &stats);
     EXPECT_LE(maxDifference(a, b), 1.0 / 255.0) << GetParam() << " lighting=" << lighting;
     const auto counts = buffer.layerCounts();
     const int layers = *std::max_element(counts.begin(), counts.end());
@@ -59,7 +59,7 @@ TEST(DepthPeeling, EmptyViewTakesOneIteration) {
   away.target = {0, 0, 10};  // looking away from the sphere
   r.camera = away;
   PeelStats stats;
-  const Image img = peeler.render(r, &stats);
+  const tlab::core::Image img = peeler.render(r, &stats);
   EXPECT_EQ(stats.iterations, 1);
   EXPECT_NEAR(img.at(10, 10).r, peeler.scene().background.r, 1e-6);
 }
@@ -69,7 +69,7 @@ TEST(DepthPeeling, LocalStylesAgreeWithTheBufferAwayFromSilhouettes) {
   Renderer buffer(scene);
   PeelingRenderer peeler(scene);
   const RenderRequest r = request("angle", {{"shading", "phong"}}, 64);
-  const Image a = buffer.render(r), b = peeler.render(r);
+  const tlab::core::Image a = buffer.render(r), b = peeler.render(r);
   double sum = 0;
   for (std::size_t p = 0; p < a.pixels.size(); ++p) sum += std::abs(a.pixels[p].g - b.pixels[p].g);
   EXPECT_LT(sum / double(a.pixels.size()), 0.01);

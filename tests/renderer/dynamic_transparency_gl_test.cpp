@@ -55,7 +55,7 @@ Scene nestedBoxes() {
   return sceneOf(std::move(o));
 }
 
-Image render(const Scene& scene, std::map<std::string, std::string> settings = {}) {
+tlab::core::Image render(const Scene& scene, std::map<std::string, std::string> settings = {}) {
   Renderer renderer(scene);
   RenderRequest r;
   r.width = r.height = kSize;
@@ -78,12 +78,12 @@ void forCentre(F&& f) {
 TEST(DynamicTransparency, DefaultStackingIsThePapersPerOccluderMask) {
   // Three occluding front faces, each blended with α_T (seed 004 Sec. V.3): the target keeps
   // (1 − α_T)^3 by default.
-  const Image img = render(nestedBoxes());
+  const tlab::core::Image img = render(nestedBoxes());
   forCentre([&](int x, int y) { EXPECT_NEAR(img.at(x, y).r, kBehindThree, 2e-3f) << x << "," << y; });
 }
 
 TEST(DynamicTransparency, SharedStackingKeepsWeightOneMinusAlphaTAtAnyDepth) {
-  const Image img = render(nestedBoxes(), {{"stacking", "shared"}});
+  const tlab::core::Image img = render(nestedBoxes(), {{"stacking", "shared"}});
   forCentre([&](int x, int y) { EXPECT_NEAR(img.at(x, y).r, 1.0f - kAlphaT, 2e-3f) << x << "," << y; });
 }
 
@@ -93,18 +93,18 @@ TEST(DynamicTransparency, OpaqueStyleHidesTheTarget) {
   r.width = r.height = kSize;
   r.style = "opaque";
   r.settings = {{"lighting", "none"}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   forCentre([&](int x, int y) { EXPECT_EQ(img.at(x, y).r, 0.0f); });
 }
 
 TEST(DynamicTransparency, ImpenetrableWallHidesTheTarget) {
   const glm::vec4 blue{0, 0, 1, 1};
-  const Image hidden = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall(blue, Role::Impenetrable)}));
+  const tlab::core::Image hidden = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall(blue, Role::Impenetrable)}));
   forCentre([&](int x, int y) {
     EXPECT_EQ(hidden.at(x, y).r, 0.0f);
     EXPECT_EQ(hidden.at(x, y).b, 1.0f);  // never made transparent
   });
-  const Image seen = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall(blue, Role::Distractor)}));
+  const tlab::core::Image seen = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall(blue, Role::Distractor)}));
   forCentre([&](int x, int y) { EXPECT_NEAR(seen.at(x, y).r, 1.0f - kAlphaT, 2e-3f); });
 }
 
@@ -114,12 +114,12 @@ TEST(DynamicTransparency, TargetIsNotSeeThroughToItself) {
   SceneObject back = box("back", 0.5f, glm::vec3(0, 0, -0.8f), kRed, Role::Target);
   appendMesh(target.mesh, back.mesh);
   target.backColor = {0, 0, 1, 1};
-  const Image self = render(sceneOf({target}));
+  const tlab::core::Image self = render(sceneOf({target}));
   forCentre([&](int x, int y) { EXPECT_EQ(self.at(x, y), kRed); });
   // Control: the same boxes as two targets — the front one is see-through onto the back one.
   SceneObject front = box("front", 0.3f, glm::vec3(0, 0, 0.8f), kRed, Role::Target);
   SceneObject behind = box("behind", 0.5f, glm::vec3(0, 0, -0.8f), {0, 0, 1, 1}, Role::Target);
-  const Image two = render(sceneOf({front, behind}));
+  const tlab::core::Image two = render(sceneOf({front, behind}));
   forCentre([&](int x, int y) {
     EXPECT_NEAR(two.at(x, y).r, kAlphaT, 2e-3f);
     EXPECT_NEAR(two.at(x, y).b, 1.0f - kAlphaT, 2e-3f);
@@ -130,7 +130,7 @@ TEST(DynamicTransparency, BorderGradientRisesMonotonicallyOverNPixels) {
   // A black distractor wall in front of a small target on a white background: a pixel's green
   // channel is 1 − the wall's opacity there. With one mask cell per pixel the border layers are
   // whole pixels: layer i has α_B(i) (Alg. 2 line 8), then the wall is opaque.
-  const Image img = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall({0, 0, 0, 1}, Role::Distractor)},
+  const tlab::core::Image img = render(sceneOf({box("target", 0.3f, glm::vec3(0), kRed, Role::Target), wall({0, 0, 0, 1}, Role::Distractor)},
                                    {1, 1, 1, 1}));
   const int y = kSize / 2;
   int edge = kSize / 2;
@@ -152,7 +152,7 @@ TEST(DynamicTransparency, ActiveModeUncoversOnlyInsideTheLens) {
   std::map<std::string, std::string> away, over;
   setDynamicLens(away, {0.1f, 0.1f}, 0.1f);
   setDynamicLens(over, {0.5f, 0.5f}, 0.2f);
-  const Image outside = render(nestedBoxes(), away), inside = render(nestedBoxes(), over);
+  const tlab::core::Image outside = render(nestedBoxes(), away), inside = render(nestedBoxes(), over);
   forCentre([&](int x, int y) {
     EXPECT_EQ(outside.at(x, y).r, 0.0f);
     EXPECT_NEAR(inside.at(x, y).r, kBehindThree, 2e-3f);
@@ -160,7 +160,7 @@ TEST(DynamicTransparency, ActiveModeUncoversOnlyInsideTheLens) {
 }
 
 TEST(DynamicTransparency, LayerControlLimitsTheLayersUncovered) {
-  const Image two = render(nestedBoxes(), {{"max_layers", "2"}}), three = render(nestedBoxes(), {{"max_layers", "3"}});
+  const tlab::core::Image two = render(nestedBoxes(), {{"max_layers", "2"}}), three = render(nestedBoxes(), {{"max_layers", "3"}});
   forCentre([&](int x, int y) {
     EXPECT_EQ(two.at(x, y).r, 0.0f);  // three boxes in front: not uncovered with L = 2
     EXPECT_NEAR(three.at(x, y).r, kBehindThree, 2e-3f);
@@ -169,7 +169,7 @@ TEST(DynamicTransparency, LayerControlLimitsTheLayersUncovered) {
 
 TEST(DynamicTransparency, CircleAndEllipseMasksUncoverTheTarget) {
   for (const char* shape : {"circle", "ellipse"}) {
-    const Image img = render(nestedBoxes(), {{"mask", shape}});
+    const tlab::core::Image img = render(nestedBoxes(), {{"mask", shape}});
     forCentre([&](int x, int y) { EXPECT_NEAR(img.at(x, y).r, kBehindThree, 2e-3f) << shape; });
   }
 }
@@ -189,7 +189,7 @@ TEST(DynamicTransparency, DefaultMaskFollowsTheOutlineAtPixelResolution) {
   r.width = r.height = size;
   r.style = "dynamic";
   r.settings = {{"lighting", "none"}, {"alpha_0", std::to_string(kAlpha0)}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   const auto onTarget = [&](int x, int y) { return img.at(x, y).r > 0.0f && img.at(x, y).g == 0.0f; };
   int ring = 0;
   for (int y = 1; y < size - 1; ++y)

@@ -44,7 +44,7 @@ std::vector<GoldenCase> cases() {
   };
 }
 
-Image renderCase(const GoldenCase& c) {
+tlab::core::Image renderCase(const GoldenCase& c) {
   std::vector<BuiltinSceneSpec> catalog = builtinScenes();
   for (const auto& s : technicalScenes()) catalog.push_back(s);
   RenderRequest r;
@@ -62,13 +62,13 @@ class GoldenImage : public ::testing::TestWithParam<GoldenCase> {};
 TEST_P(GoldenImage, MatchesWithinTolerance) {
   const GoldenCase& c = GetParam();
   const std::string path = std::string(TLAB_TEST_DATA) + "/golden/" + c.name + ".png";
-  const auto rgba = toRgba8(renderCase(c));
+  const auto rgba = tlab::core::toRgba8(renderCase(c));
   if (std::getenv("TLAB_UPDATE_GOLDEN")) {
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
-    Image img(64, 64);
+    tlab::core::Image img(64, 64);
     for (std::size_t i = 0; i < img.pixels.size(); ++i)
       img.pixels[i] = glm::vec4(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2], rgba[4 * i + 3]) / 255.0f;
-    writeFileAtomically(path, encodePng(img));
+    tlab::core::writeFileAtomically(path, tlab::core::encodePng(img));
     GTEST_SKIP() << "rewrote " << path;
   }
   int w = 0, h = 0, n = 0;

@@ -79,9 +79,9 @@ TEST_P(BothFillMethods, ForcedOverflowGivesTheSameImage) {
   RenderRequest small = big;
   small.initialPoolFragments = 16;
   RenderStats bigStats, smallStats;
-  const Image a = large.render(big, &bigStats);
-  const Image b = tiny.render(small, &smallStats);
-  EXPECT_EQ(encodePng(a), encodePng(b));
+  const tlab::core::Image a = large.render(big, &bigStats);
+  const tlab::core::Image b = tiny.render(small, &smallStats);
+  EXPECT_EQ(tlab::core::encodePng(a), tlab::core::encodePng(b));
   EXPECT_EQ(bigStats.rerenders, 0);
   EXPECT_EQ(bigStats.poolGrowths, 0);
   EXPECT_GE(smallStats.poolGrowths, 1);
@@ -96,17 +96,17 @@ INSTANTIATE_TEST_SUITE_P(Fill, BothFillMethods, ::testing::Values(FillMethod::Co
 
 TEST(IllustrationBuffer, BothFillMethodsGiveIdenticalImages) {
   Renderer renderer(loadScene("builtin:open-cylinders"));
-  const Image a = renderer.render(request(96, 96, FillMethod::CountScatter));
-  const Image b = renderer.render(request(96, 96, FillMethod::LinkedList));
-  EXPECT_EQ(encodePng(a), encodePng(b));
+  const tlab::core::Image a = renderer.render(request(96, 96, FillMethod::CountScatter));
+  const tlab::core::Image b = renderer.render(request(96, 96, FillMethod::LinkedList));
+  EXPECT_EQ(tlab::core::encodePng(a), tlab::core::encodePng(b));
 }
 
 TEST(IllustrationBuffer, RepeatedRendersAreByteIdentical) {
   Renderer renderer(loadScene("builtin:torus?major_segments=48&minor_segments=24"));
-  const auto a = encodePng(renderer.render(request(80, 64)));
-  const auto b = encodePng(renderer.render(request(80, 64)));
+  const auto a = tlab::core::encodePng(renderer.render(request(80, 64)));
+  const auto b = tlab::core::encodePng(renderer.render(request(80, 64)));
   Renderer fresh(loadScene("builtin:torus?major_segments=48&minor_segments=24"));
-  const auto c = encodePng(fresh.render(request(80, 64)));
+  const auto c = tlab::core::encodePng(fresh.render(request(80, 64)));
   EXPECT_EQ(a, b);
   EXPECT_EQ(a, c);
 }
@@ -148,7 +148,7 @@ TEST(IllustrationBuffer, ExceedingTheMemoryLimitSaysHowMuchWasNeeded) {
 TEST(IllustrationBuffer, RendersAt2048x2048) {
   Renderer renderer(loadScene("builtin:quad-stack?n=1"));
   RenderStats stats;
-  const Image img = renderer.render(request(2048, 2048), &stats);
+  const tlab::core::Image img = renderer.render(request(2048, 2048), &stats);
   EXPECT_EQ(stats.fragments, 2048u * 2048u);
   EXPECT_NE(img.at(2047, 2047), glm::vec4(0.0f));
   for (auto c : renderer.layerCounts()) ASSERT_EQ(c, 1);

@@ -53,7 +53,7 @@ std::optional<glm::dvec3> sphereNormalAt(double x, double y, int size) {
   return glm::dvec3((b - std::sqrt(disc)) * d - c);
 }
 
-Image renderProbe(const std::string& style, std::map<std::string, std::string> settings) {
+tlab::core::Image renderProbe(const std::string& style, std::map<std::string, std::string> settings) {
   Renderer renderer(alphaProbeSphere());
   RenderRequest r;
   r.width = r.height = kSize;
@@ -71,7 +71,7 @@ Image renderProbe(const std::string& style, std::map<std::string, std::string> s
 
 TEST(IrisAngle, MatchesTheClosedFormOnASphere) {
   const double aMin = 0.1, aMax = 0.9;
-  const Image img = renderProbe("angle", {{"alpha_min", "0.1"}, {"alpha_max", "0.9"}});
+  const tlab::core::Image img = renderProbe("angle", {{"alpha_min", "0.1"}, {"alpha_max", "0.9"}});
   int checked = 0;
   for (int y = 4; y < kSize; y += 7)
     for (int x = 3; x < kSize; x += 5) {
@@ -89,7 +89,7 @@ TEST(IrisAngle, MatchesTheClosedFormOnASphere) {
 
 TEST(IrisNormalVariation, MatchesTheClosedFormOnASphere) {
   const double aMin = 0.05, aMax = 0.95, gamma = 0.5;
-  const Image img = renderProbe("normal-variation", {{"alpha_min", "0.05"}, {"alpha_max", "0.95"}, {"gamma", "0.5"}});
+  const tlab::core::Image img = renderProbe("normal-variation", {{"alpha_min", "0.05"}, {"alpha_max", "0.95"}, {"gamma", "0.5"}});
   int checked = 0;
   for (int y = 4; y < kSize; y += 7)
     for (int x = 3; x < kSize; x += 5) {
@@ -160,7 +160,7 @@ TEST_P(StripeStretch, PeriodStaysWithinAFactorTwo) {
   r.style = "iris";
   r.camera = frontCamera();
   r.settings = patternSettings(axis, period);
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   const bool alongS = std::string(axis) != "t";
   std::vector<double> line;
   for (int i = 0; i < 128; ++i) line.push_back(alongS ? img.at(i, 64).r : img.at(64, i).r);
@@ -197,7 +197,7 @@ TEST(StripePerspective, PeriodStaysWithinAFactorTwoNearAndFar) {
   r.camera = c;
   const double period = 8.0;
   r.settings = patternSettings("t", period);
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   // Find the horizon (first covered row from the top), then measure far and near windows.
   int top = 0;
   while (top < 256 && img.at(128, top).r == 0.0f && img.at(129, top).r == 0.0f && img.at(130, top).r == 0.0f) ++top;
@@ -214,7 +214,7 @@ TEST(StripePerspective, PeriodStaysWithinAFactorTwoNearAndFar) {
 namespace {
 
 // One quad filling the view: white in front, black behind, on a black background.
-Image renderQuad(std::map<std::string, std::string> settings, bool flip = false) {
+tlab::core::Image renderQuad(std::map<std::string, std::string> settings, bool flip = false) {
   Scene s = stretchedQuad({1.0f, 1.0f});
   if (flip) {
     s.objects[0].mesh = makeQuad({0, 0, 0}, {0, 2, 0}, {2, 0, 0});  // wound away from the viewer
@@ -238,7 +238,7 @@ Image renderQuad(std::map<std::string, std::string> settings, bool flip = false)
 // IRIS Sec. 3.3: inside the window the opacity is scaled by window_opacity, outside not at all,
 // with a smooth fall-off in between.
 TEST(IrisWindow, ScalesOpacityInsideTheWindowOnly) {
-  const Image img = renderQuad({{"opacity", "constant"}, {"alpha", "0.8"}, {"window_layers", "1"}, {"window_x", "0.25"},
+  const tlab::core::Image img = renderQuad({{"opacity", "constant"}, {"alpha", "0.8"}, {"window_layers", "1"}, {"window_x", "0.25"},
                                 {"window_y", "0.25"}, {"window_radius", "0.1"}, {"window_falloff", "0.1"},
                                 {"window_opacity", "0.25"}});
   EXPECT_NEAR(img.at(16, 16).r, 0.8f * 0.25f, 1e-3);  // the centre, (0.25, 0.25) of the image
@@ -249,8 +249,8 @@ TEST(IrisWindow, ScalesOpacityInsideTheWindowOnly) {
 }
 
 TEST(IrisTwoSided, BackFacesUseTheBackColourOnlyWhenTwoSided) {
-  const Image twoSided = renderQuad({{"opacity", "constant"}, {"alpha", "1"}, {"two_sided", "on"}}, true);
-  const Image oneSided = renderQuad({{"opacity", "constant"}, {"alpha", "1"}, {"two_sided", "off"}}, true);
+  const tlab::core::Image twoSided = renderQuad({{"opacity", "constant"}, {"alpha", "1"}, {"two_sided", "on"}}, true);
+  const tlab::core::Image oneSided = renderQuad({{"opacity", "constant"}, {"alpha", "1"}, {"two_sided", "off"}}, true);
   EXPECT_NEAR(twoSided.at(32, 32).b, 0.6f, 1e-3);
   EXPECT_NEAR(oneSided.at(32, 32).b, 1.0f, 1e-3);
 }
@@ -258,7 +258,7 @@ TEST(IrisTwoSided, BackFacesUseTheBackColourOnlyWhenTwoSided) {
 // IRIS Sec. 5.1: multiplicative modulation never raises the opacity above α_view, additive
 // never lowers it.
 TEST(IrisStripes, MultiplicativeAndAdditiveModulationBoundTheOpacity) {
-  const auto range = [](const Image& img) {
+  const auto range = [](const tlab::core::Image& img) {
     float lo = 1, hi = 0;
     for (int x = 0; x < 64; ++x) {
       lo = std::min(lo, img.at(x, 32).r);
@@ -294,7 +294,7 @@ TEST(IrisContext, OpaqueObjectsAreContextGeometry) {
   r.camera = frontCamera();
   r.settings = {{"opacity", "constant"}, {"alpha", "0.3"}, {"lighting", "none"}, {"specular", "0"}, {"silhouettes", "on"},
                 {"stripes", "off"}};
-  for (const Image& img : {Renderer(s).render(r), PeelingRenderer(s).render(r)}) {
+  for (const tlab::core::Image& img : {Renderer(s).render(r), PeelingRenderer(s).render(r)}) {
     const glm::vec4 c = img.at(24, 24);
     EXPECT_NEAR(c.r, 0.7f, 1e-3);  // the box behind one layer of α = 0.3, never the background
     EXPECT_NEAR(c.g, 0.0f, 1e-3);
@@ -304,7 +304,7 @@ TEST(IrisContext, OpaqueObjectsAreContextGeometry) {
 
 namespace {
 
-Image renderTorus(const std::string& style, const std::map<std::string, std::string>& settings, bool peel = false) {
+tlab::core::Image renderTorus(const std::string& style, const std::map<std::string, std::string>& settings, bool peel = false) {
   Scene s = buildBuiltinScene("torus?major_segments=48&minor_segments=24", builtinScenes());
   RenderRequest r;
   r.width = r.height = 96;
@@ -314,8 +314,8 @@ Image renderTorus(const std::string& style, const std::map<std::string, std::str
 }
 
 // (largest, mean) absolute channel difference in 1/255 units.
-std::pair<int, double> channelDifference(const Image& a, const Image& b) {
-  const auto x = toRgba8(a), y = toRgba8(b);
+std::pair<int, double> channelDifference(const tlab::core::Image& a, const tlab::core::Image& b) {
+  const auto x = tlab::core::toRgba8(a), y = tlab::core::toRgba8(b);
   int largest = 0;
   double sum = 0;
   for (std::size_t i = 0; i < x.size(); ++i) {
@@ -331,11 +331,11 @@ std::pair<int, double> channelDifference(const Image& a, const Image& b) {
 // `iris` alone shows the IRIS look (Figs. 1, 10): it differs visibly from `constant` and has
 // dark silhouette pixels (a white-backed scene has none with `constant`).
 TEST(IrisDefaults, ShowTheIrisLookNotConstantTransparency) {
-  const Image iris = renderTorus("iris", {}), constant = renderTorus("constant", {});
+  const tlab::core::Image iris = renderTorus("iris", {}), constant = renderTorus("constant", {});
   const auto [largest, mean] = channelDifference(iris, constant);
   EXPECT_GT(largest, 100);
   EXPECT_GT(mean, 5.0);
-  const auto dark = [](const Image& img) {
+  const auto dark = [](const tlab::core::Image& img) {
     int n = 0;
     for (const auto& p : img.pixels) n += (p.r + p.g + p.b) < 0.3f ? 1 : 0;
     return n;
@@ -367,7 +367,7 @@ TEST(IrisStripes, LicNoiseIsBlurredAlongT) {
   r.camera = frontCamera();
   r.settings = patternSettings("lic", 32);
   r.settings["silhouettes"] = "off";
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   double alongS = 0, alongT = 0;
   for (int y = 32; y < 96; ++y)
     for (int x = 32; x < 96; ++x) {

@@ -16,7 +16,7 @@ namespace {
 
 constexpr int kSize = 64;
 
-Image greySphere(const std::string& style, const std::string& lighting) {
+tlab::core::Image greySphere(const std::string& style, const std::string& lighting) {
   SceneObject sphere{"sphere", makeUvSphere(1.5f, 64, 32)};
   sphere.frontColor = sphere.backColor = {0.5f, 0.5f, 0.5f, 1};
   sphere.roles = Role::Opaque;
@@ -33,7 +33,7 @@ Image greySphere(const std::string& style, const std::string& lighting) {
 }  // namespace
 
 TEST(PhysicalShading, KeyLightAndSkyShowOnAGreySphere) {
-  const Image img = greySphere("opaque", "pbr");
+  const tlab::core::Image img = greySphere("opaque", "pbr");
   const glm::vec4 top = img.at(kSize / 2, 14), bottom = img.at(kSize / 2, kSize - 15);
   EXPECT_GT(top.b - top.r, bottom.b - bottom.r + 0.05f);  // the sky's blue above, its warm ground below
   EXPECT_GT(bottom.r, bottom.b);
@@ -48,13 +48,13 @@ TEST(PhysicalShading, KeyLightAndSkyShowOnAGreySphere) {
       }
   EXPECT_LT(bx, kSize / 2);  // the highlight faces the key light: left …
   EXPECT_LT(by, kSize / 2);  // … and up (row 0 is the top)
-  const Image head = greySphere("opaque", "headlight");
+  const tlab::core::Image head = greySphere("opaque", "headlight");
   EXPECT_FLOAT_EQ(head.at(kSize / 2, 14).r, head.at(kSize / 2, 14).b);  // the headlight has no colour
 }
 
 TEST(PhysicalShading, EveryStyleTakesIt) {
   for (const char* style : {"constant", "iris", "curvature"}) {
-    const Image pbr = greySphere(style, "pbr"), head = greySphere(style, "headlight");
+    const tlab::core::Image pbr = greySphere(style, "pbr"), head = greySphere(style, "headlight");
     const glm::vec4 top = pbr.at(kSize / 2, 14), bottom = pbr.at(kSize / 2, kSize - 15);
     EXPECT_GT(top.b - top.r, bottom.b - bottom.r + 0.02f) << style;
     EXPECT_NE(pbr.at(kSize / 2, 14), head.at(kSize / 2, 14)) << style;

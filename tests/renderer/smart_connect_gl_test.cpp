@@ -57,7 +57,7 @@ TEST(SmartTransparency, ZoomedInViewHasNoDarkFrame) {
   RenderRequest r;
   r.width = r.height = 128;
   r.style = "smart";
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   // Mean grey over the pixels at distance [from, to) from the edge, along the middle half of each
   // side (the corners see the sphere's real silhouette).
   const auto band = [&](int from, int to) {

@@ -131,7 +131,7 @@ TEST(SmartCompositing, MatchesAlgorithm3OnHandComputedLists) {
   r.height = 16;
   r.style = "smart";
   r.settings = settings;
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   const auto modify = [](double u) { return (std::exp(-3 * (1 - u)) - std::exp(-3.0)) / (1 - std::exp(-3.0)); };
   const glm::vec3 bg = rig.scene.background;
   for (int x : {30, 31, 32, 33, 40}) {
@@ -164,7 +164,7 @@ TEST_P(AdaptiveAlpha, AccumulatesExactlyS) {
   r.style = "smart";
   r.settings = {{"iterations", "0"}, {"alpha_init", "adaptive"}, {"s", "0.6"}, {"halos", "off"},
                 {"silhouettes", "off"}, {"lighting", "none"}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   // Fragment colours are stored as RGBA8: the layer colour is the quantised one.
   const glm::vec3 layer = glm::round(glm::vec3(scene.objects[0].frontColor) * 255.0f) / 255.0f;
   const glm::vec3 expected = 0.6f * layer + 0.4f * glm::vec3(scene.background);
@@ -196,7 +196,7 @@ TEST(SmartTransparency, DegenerateScenesStayFinite) {
       r.style = "smart";
       r.settings = {{"lambda_alpha", lambda}, {"iterations", "5"}};
       RenderStats stats;
-      const Image img = renderer.render(r, &stats);
+      const tlab::core::Image img = renderer.render(r, &stats);
       for (const auto& px : img.pixels)
         for (int k = 0; k < 3; ++k) ASSERT_TRUE(std::isfinite(px[k]) && px[k] >= 0.0f && px[k] <= 1.0f);
     }

@@ -46,7 +46,7 @@ SceneObject opaqueBox(float half, glm::vec3 centre) {
 
 Scene sceneOf(std::vector<SceneObject> objects) { return tlab::testing::frontViewScene(std::move(objects)); }
 
-Image render(const Scene& scene, const std::string& boundaries) {
+tlab::core::Image render(const Scene& scene, const std::string& boundaries) {
   Renderer renderer(scene);
   RenderRequest r;
   r.width = r.height = kSize;
@@ -56,7 +56,7 @@ Image render(const Scene& scene, const std::string& boundaries) {
   return renderer.render(r);
 }
 
-const glm::vec4& centre(const Image& img) { return img.at(kSize / 2, kSize / 2); }
+const glm::vec4& centre(const tlab::core::Image& img) { return img.at(kSize / 2, kSize / 2); }
 
 }  // namespace
 
@@ -89,7 +89,7 @@ TEST(ViewDependentAlpha, PerVertexAlphaIsEquation2OfTheDistanceToTheSilhouettes)
 class DiepstratenRules : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(DiepstratenRules, AnOpaqueBoxInsideOneShellIsVisible) {
-  const Image img = render(sceneOf({shell(1.0f, glm::vec3(0)), opaqueBox(0.3f, glm::vec3(0))}), GetParam());
+  const tlab::core::Image img = render(sceneOf({shell(1.0f, glm::vec3(0)), opaqueBox(0.3f, glm::vec3(0))}), GetParam());
   EXPECT_NEAR(centre(img).r, kAlphaOpaque, 1e-3);  // the box, with its user α
   EXPECT_NEAR(centre(img).g, 0.0f, 1e-3);          // not the background
   // The shell's front face is blended on top, most opaque towards its silhouette (Eq. 2); at the
@@ -102,13 +102,13 @@ TEST_P(DiepstratenRules, AnOpaqueBoxInsideOneShellIsVisible) {
 
 TEST_P(DiepstratenRules, AnOpaqueBoxBehindTwoShellsIsHidden) {
   // Two shells one behind the other on the view axis, the box inside the far one.
-  const Image side = render(sceneOf({shell(0.6f, glm::vec3(0, 0, 1.5f)), shell(1.0f, glm::vec3(0, 0, -1.0f)),
+  const tlab::core::Image side = render(sceneOf({shell(0.6f, glm::vec3(0, 0, 1.5f)), shell(1.0f, glm::vec3(0, 0, -1.0f)),
                                      opaqueBox(0.3f, glm::vec3(0, 0, -1.0f))}),
                             GetParam());
   EXPECT_NEAR(centre(side).r, 0.0f, 1e-3);
   EXPECT_NEAR(centre(side).g, kAlphaBackground, 1e-3);
   // Nested shells around the box.
-  const Image nested =
+  const tlab::core::Image nested =
       render(sceneOf({shell(1.0f, glm::vec3(0)), shell(0.6f, glm::vec3(0)), opaqueBox(0.3f, glm::vec3(0))}), GetParam());
   EXPECT_NEAR(centre(nested).r, 0.0f, 1e-3);
 }
@@ -116,7 +116,7 @@ TEST_P(DiepstratenRules, AnOpaqueBoxBehindTwoShellsIsHidden) {
 TEST_P(DiepstratenRules, TransparentBackFacesNeverAppear) {
   for (const Scene& scene : {sceneOf({shell(1.0f, glm::vec3(0))}),
                              sceneOf({shell(1.0f, glm::vec3(-0.5f, 0, 0)), shell(1.0f, glm::vec3(0.6f, 0.2f, -1.0f))})}) {
-    const Image img = render(scene, GetParam());
+    const tlab::core::Image img = render(scene, GetParam());
     int covered = 0;
     for (const auto& p : img.pixels) {
       ASSERT_EQ(p.r, 0.0f);  // back faces are red; no opaque object here
@@ -139,7 +139,7 @@ TEST(DiepstratenRules, MugWithExplicitInnerWallShowsTheBoxOnlyWithExplicitBounda
   scene.objects[1].frontColor = scene.objects[1].backColor = {1, 0, 0, 1};
   scene.background = {0, 1, 0, 1};
   const auto redPixels = [&](const std::string& boundaries) {
-    const Image img = render(scene, boundaries);
+    const tlab::core::Image img = render(scene, boundaries);
     int n = 0;
     for (const auto& px : img.pixels) n += px.r > 0.3f;
     return n;
@@ -153,7 +153,7 @@ namespace {
 
 // The crank scene in flat grey: every surface and the background 0.5, so a pixel brighter than
 // 0.5 means blend weights summing above 1.
-Image greyCrank(const std::string& blend) {
+tlab::core::Image greyCrank(const std::string& blend) {
   Scene scene = loadScene("builtin:crank-cylinder?segments=32", technicalScenes());
   for (auto& o : scene.objects) o.frontColor = o.backColor = {0.5f, 0.5f, 0.5f, 1};
   scene.background = {0.5f, 0.5f, 0.5f, 1};
@@ -191,7 +191,7 @@ TEST(DiepstratenLines, SilhouettesInsideATransparentObjectAreUnbroken) {
   r.width = r.height = 96;
   r.style = "view-dependent";
   r.settings = {{"boundaries", "implicit"}};
-  const Image img = renderer.render(r);
+  const tlab::core::Image img = renderer.render(r);
   int columns = 0, broken = 0;
   for (int x = 30; x < 66; ++x) {  // the shaft spans about x = 22 … 74
     int line = 0;

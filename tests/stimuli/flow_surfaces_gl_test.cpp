@@ -38,9 +38,9 @@ TEST(Walkthrough, DynamicShowsObjectsThroughTheWallsByDefault) {
     request.settings = std::move(settings);
     return renderer.render(request);
   };
-  const render::Image opaque = renderStyle("opaque", {}), dynamic = renderStyle("dynamic", {});
-  const render::Image roleOnly = renderStyle("dynamic", {{"targets", "role"}});
-  const auto differing = [&](const render::Image& a) {
+  const core::Image opaque = renderStyle("opaque", {}), dynamic = renderStyle("dynamic", {});
+  const core::Image roleOnly = renderStyle("dynamic", {{"targets", "role"}});
+  const auto differing = [&](const core::Image& a) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < a.pixels.size(); ++i) {
       const glm::vec4 d = glm::abs(a.pixels[i] - opaque.pixels[i]);

@@ -106,7 +106,7 @@ TEST(WalkthroughFloorPlan, ReachabilityCountsOnlyConnectedRooms) {
 
 TEST(WalkthroughFloorPlan, ImageShowsWallsWithDoorwayGaps) {
   const WalkthroughFloorPlan plan = WalkthroughFloorPlan::random(5);
-  const render::Image image = floorPlanImage(plan, 32);
+  const core::Image image = floorPlanImage(plan, 32);
   EXPECT_EQ(image.width, 16 * 32 + 32);
   std::size_t black = 0;
   for (const auto& p : image.pixels) black += p.r < 0.5f ? 1 : 0;

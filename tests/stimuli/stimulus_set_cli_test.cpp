@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace tlab::stimuli {
@@ -61,7 +61,7 @@ TEST_F(StimulusSetCli, WritesLabelledImagesManifestFloorPlanAndBooklet) {
   for (const auto& s : manifest["stimuli"]) {
     const std::string bytes = readText((root_ / "a" / s["image"].get<std::string>()).string());
     ASSERT_FALSE(bytes.empty());
-    EXPECT_EQ(s["sha256"], tlab::render::sha256Hex(std::string_view(bytes)));
+    EXPECT_EQ(s["sha256"], tlab::core::sha256Hex(std::string_view(bytes)));
     EXPECT_EQ(s["view"]["camera"]["eye"].size(), 3u);
   }
   const auto& labelled = manifest["stimuli"][0];

@@ -11,9 +11,9 @@ using namespace tlab::study;
 
 namespace {
 
-PreparedTrial layerTrial(const tlab::render::Image& picture) {
+PreparedTrial layerTrial(const tlab::core::Image& picture) {
   PreparedTrial p;
-  p.picture = std::make_shared<tlab::render::Image>(picture);
+  p.picture = std::make_shared<tlab::core::Image>(picture);
   p.question.task = "layer-index";
   p.question.answerKind = tlab::tasks::AnswerKind::LayerNumber;
   p.question.truth = std::int64_t(1);
@@ -21,8 +21,8 @@ PreparedTrial layerTrial(const tlab::render::Image& picture) {
   return p;
 }
 
-tlab::render::Image checkerboard() {
-  tlab::render::Image image(64, 64, glm::vec4(1));
+tlab::core::Image checkerboard() {
+  tlab::core::Image image(64, 64, glm::vec4(1));
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x)
       if ((x / 2 + y / 2) % 2) image.at(x, y) = glm::vec4(0, 0, 0, 1);
@@ -49,7 +49,7 @@ double accuracy(const PreparedTrial& prepared, double* meanSeconds) {
 }  // namespace
 
 TEST(ImageContrast, LocalRmsContrastOfLuminance) {
-  EXPECT_DOUBLE_EQ(localRmsContrast(tlab::render::Image(16, 16, glm::vec4(0.3f, 0.3f, 0.3f, 1)), {8, 8}), 0.0);
+  EXPECT_DOUBLE_EQ(localRmsContrast(tlab::core::Image(16, 16, glm::vec4(0.3f, 0.3f, 0.3f, 1)), {8, 8}), 0.0);
   EXPECT_NEAR(localRmsContrast(checkerboard(), {32.5, 32.5}), 0.5, 0.02);  // half black, half white
   EXPECT_EQ(localRmsContrast(checkerboard(), {-3, 10}), 0.0);
 }
@@ -57,7 +57,7 @@ TEST(ImageContrast, LocalRmsContrastOfLuminance) {
 TEST(SimulatedObserver, AccuracyAndSpeedFollowWhatTheStimulusShows) {
   double fastSeconds = 0, slowSeconds = 0;
   const double visible = accuracy(layerTrial(checkerboard()), &fastSeconds);
-  const double flat = accuracy(layerTrial(tlab::render::Image(64, 64, glm::vec4(0.5f, 0.5f, 0.5f, 1))), &slowSeconds);
+  const double flat = accuracy(layerTrial(tlab::core::Image(64, 64, glm::vec4(0.5f, 0.5f, 0.5f, 1))), &slowSeconds);
   EXPECT_GT(visible, 0.85);
   EXPECT_LT(flat, 0.55);  // mostly guesses among 1..3
   EXPECT_LT(fastSeconds, slowSeconds);

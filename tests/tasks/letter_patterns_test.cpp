@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "renderer/scene/seeded_random.hpp"
+#include "core/seeded_random.hpp"
 
 namespace tlab::tasks {
 namespace {
@@ -32,7 +32,7 @@ TEST(LetterPatterns, BitmapsAreFiveBySevenWithTheExpectedStrokes) {
 }
 
 TEST(LetterPatterns, EachLetterMatchesOnlyItselfUnderRotationScaleAndTranslation) {
-  render::SeededRandom random(11);
+  core::SeededRandom random(11);
   for (const char letter : patternLetters())
     for (int trial = 0; trial < 8; ++trial) {
       const double angle = random.uniform(0.0f, 6.2831853f);

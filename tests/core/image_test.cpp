@@ -3,32 +3,32 @@
 #include <filesystem>
 #include <fstream>
 
-#include "renderer/image/image.hpp"
-#include "renderer/image/sha256.hpp"
+#include "core/image.hpp"
+#include "core/sha256.hpp"
 
-using namespace tlab::render;
+using namespace tlab::core;
 
 TEST(Image, PngBytesAreDeterministicAndRowZeroIsTheTop) {
-  Image img(3, 2, glm::vec4(0, 0, 0, 1));
+  tlab::core::Image img(3, 2, glm::vec4(0, 0, 0, 1));
   img.at(0, 0) = glm::vec4(1, 0, 0, 1);
-  const auto a = encodePng(img), b = encodePng(img);
+  const auto a = tlab::core::encodePng(img), b = tlab::core::encodePng(img);
   EXPECT_EQ(a, b);
-  const auto rgba = toRgba8(img);
+  const auto rgba = tlab::core::toRgba8(img);
   EXPECT_EQ(rgba[0], 255);  // first pixel written = top-left
   EXPECT_EQ(rgba[4], 0);
 }
 
 TEST(Image, Rgba8RoundsAndClamps) {
-  Image img(3, 1);
+  tlab::core::Image img(3, 1);
   img.at(0, 0) = glm::vec4(0.5f, -1.0f, 2.0f, 1.0f);
-  const auto rgba = toRgba8(img);
+  const auto rgba = tlab::core::toRgba8(img);
   EXPECT_EQ(rgba[0], 128);
   EXPECT_EQ(rgba[1], 0);
   EXPECT_EQ(rgba[2], 255);
 }
 
 TEST(Image, Pgm16HeaderAndBigEndianSamples) {
-  const auto pgm = encodePgm16({1, 258}, 2, 1);
+  const auto pgm = tlab::core::encodePgm16({1, 258}, 2, 1);
   const std::string header = "P5\n2 1\n65535\n";
   ASSERT_EQ(pgm.size(), header.size() + 4);
   EXPECT_EQ(std::string(pgm.begin(), pgm.begin() + long(header.size())), header);
@@ -39,11 +39,11 @@ TEST(Image, Pgm16HeaderAndBigEndianSamples) {
 }
 
 TEST(Image, AtomicWriteLeavesNoPartialFileOnFailure) {
-  EXPECT_THROW(writeFileAtomically("/nonexistent-dir/x.png", {1, 2, 3}), std::runtime_error);
+  EXPECT_THROW(tlab::core::writeFileAtomically("/nonexistent-dir/x.png", {1, 2, 3}), std::runtime_error);
   const auto dir = std::filesystem::temp_directory_path() / "tlab_image_test";
   std::filesystem::create_directories(dir);
   const auto path = (dir / "a.bin").string();
-  writeFileAtomically(path, {1, 2, 3});
+  tlab::core::writeFileAtomically(path, {1, 2, 3});
   EXPECT_EQ(std::filesystem::file_size(path), 3u);
   for (const auto& e : std::filesystem::directory_iterator(dir))
     EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos);
@@ -51,8 +51,8 @@ TEST(Image, AtomicWriteLeavesNoPartialFileOnFailure) {
 
 // FIPS 180-4 test vectors (the empty string and "abc").
 TEST(Sha256, MatchesTheStandardTestVectors) {
-  EXPECT_EQ(sha256Hex(std::string_view()), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
-  EXPECT_EQ(sha256Hex(std::string_view("abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(tlab::core::sha256Hex(std::string_view()), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(tlab::core::sha256Hex(std::string_view("abc")), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
   const std::vector<std::uint8_t> bytes = {'a', 'b', 'c'};
-  EXPECT_EQ(sha256Hex(bytes), sha256Hex(std::string_view("abc")));
+  EXPECT_EQ(tlab::core::sha256Hex(bytes), tlab::core::sha256Hex(std::string_view("abc")));
 }

@@ -1,11 +1,11 @@
-#include "renderer/image/sha256.hpp"
+#include "core/sha256.hpp"
 
 #include <openssl/evp.h>
 
 #include <memory>
 #include <stdexcept>
 
-namespace tlab::render {
+namespace tlab::core {
 
 std::string sha256Hex(std::span<const std::uint8_t> bytes) {
   const std::unique_ptr<EVP_MD_CTX, decltype(&EVP_MD_CTX_free)> context(EVP_MD_CTX_new(), EVP_MD_CTX_free);
@@ -29,4 +29,4 @@ std::string sha256Hex(std::string_view text) {
   return sha256Hex(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(text.data()), text.size()));
 }
 
-}  // namespace tlab::render
+}  // namespace tlab::core

@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <random>
 
-namespace tlab::render {
+namespace tlab::core {
 
 class SeededRandom {
  public:
@@ -26,4 +26,4 @@ class SeededRandom {
   std::mt19937 engine_;
 };
 
-}  // namespace tlab::render
+}  // namespace tlab::core

@@ -6,9 +6,9 @@
 #include <string>
 #include <string_view>
 
-namespace tlab::render {
+namespace tlab::core {
 
 std::string sha256Hex(std::span<const std::uint8_t> bytes);
 std::string sha256Hex(std::string_view text);
 
-}  // namespace tlab::render
+}  // namespace tlab::core

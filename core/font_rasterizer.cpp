@@ -1,4 +1,4 @@
-#include "renderer/image/font_rasterizer.hpp"
+#include "core/font_rasterizer.hpp"
 
 #include <cstdlib>
 #include <fstream>
@@ -13,7 +13,7 @@
 #include <stb_truetype.h>
 #pragma GCC diagnostic pop
 
-namespace tlab::render {
+namespace tlab::core {
 
 std::string dejavuFontPath(const std::string& name) {
   const char* dir = std::getenv("TLAB_FONT_DIR");
@@ -60,4 +60,4 @@ GlyphBitmap FontRasterizer::glyph(char32_t codepoint, float pixelHeight) const {
   return g;
 }
 
-}  // namespace tlab::render
+}  // namespace tlab::core

@@ -5,7 +5,7 @@
 #include <optional>
 #include <string>
 
-namespace tlab::render {
+namespace tlab::core {
 
 inline std::optional<double> parseFiniteNumber(const std::string& text) {
   std::size_t used = 0;
@@ -19,4 +19,4 @@ inline std::optional<double> parseFiniteNumber(const std::string& text) {
   return v;
 }
 
-}  // namespace tlab::render
+}  // namespace tlab::core

@@ -1,4 +1,4 @@
-#include "renderer/image/image.hpp"
+#include "core/image.hpp"
 
 #define STB_IMAGE_WRITE_STATIC
 #define STB_IMAGE_WRITE_IMPLEMENTATION
@@ -12,7 +12,7 @@
 #include <stdexcept>
 #include <unistd.h>
 
-namespace tlab::render {
+namespace tlab::core {
 
 std::vector<std::uint8_t> toRgba8(const Image& image) {
   std::vector<std::uint8_t> out(image.pixels.size() * 4);
@@ -83,4 +83,4 @@ void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<s
   }
 }
 
-}  // namespace tlab::render
+}  // namespace tlab::core

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-namespace tlab::render {
+namespace tlab::core {
 
 struct GlyphBitmap {
   int width = 0, height = 0;  // coverage bitmap size
@@ -35,4 +35,4 @@ class FontRasterizer {
   std::unique_ptr<Font> font_;
 };
 
-}  // namespace tlab::render
+}  // namespace tlab::core

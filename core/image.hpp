@@ -7,7 +7,7 @@
 
 #include <glm/glm.hpp>
 
-namespace tlab::render {
+namespace tlab::core {
 
 struct Image {
   int width = 0;
@@ -36,4 +36,4 @@ void writeFileAtomically(const std::string& path, const std::vector<std::uint8_t
 // already written are removed before the error propagates.
 void writeFilesAtomically(const std::vector<std::pair<std::string, std::vector<std::uint8_t>>>& files);
 
-}  // namespace tlab::render
+}  // namespace tlab::core

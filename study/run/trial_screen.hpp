@@ -1,0 +1,67 @@
+#pragma once
+// TrialScreen: what a trial looks like in the participant's window and what each input means —
+// the layout (question, counter, stimulus at a whole-number scale, the floor plan beside it for
+// floor-point answers, the answer band with letter buttons), the marks that can be clicked, the
+// typed text, the selected labels, the live view of interactive trials, and one handler per kind
+// of input that returns the answer it gives, if any. No clock, no GL, no database: the window
+// responder owns timing, pausing and submitting.
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "study/run/canvas.hpp"
+#include "study/run/live_view.hpp"
+#include "study/run/responder.hpp"
+#include "study/run/screen_layout.hpp"
+#include "study/run/text_painter.hpp"
+
+namespace tlab::study {
+
+class TrialScreen {
+ public:
+  TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter);
+
+  // The frame to show with `secondsLeft` on the countdown (the live view drawn in when there is one).
+  Canvas frame(double secondsLeft);
+  // Where everything is (stimulus, canvas, labels, buttons, plan), stored with the onset event.
+  const nlohmann::json& layoutJson() const { return layoutJson_; }
+  bool live() const { return live_.has_value(); }
+
+  // Inputs; each returns the answer text it submits, if any, and marks the screen for redrawing.
+  std::optional<std::string> typedChar(const std::string& utf8Char);
+  std::optional<std::string> enter();  // typed text, or the selected labels ("none" when none)
+  void backspace();
+  std::optional<std::string> click(double x, double y);
+  void arrow(int forward, int right);      // live trials: walk or zoom
+  void drag(double dx, double dy);         // live trials: orbit or look around
+  void moveTo(double x, double y);         // live trials: the dynamic lens follows the cursor
+  // An answer that does not parse: shown in red, the typed text cleared.
+  void rejected(const std::string& error);
+
+  bool dirty() const { return dirty_; }
+  // The camera of a live trial after a move, for the event log.
+  std::string cameraText() const;
+
+ private:
+  std::optional<std::string> clickLabel(double x, double y);
+  std::optional<std::string> clickFloorPlan(double x, double y) const;
+  std::string selectedText() const;
+
+  const TrialView& view_;
+  TextPainter& painter_;
+  ScreenLayout layout_;
+  Canvas base_;
+  std::optional<LiveView> live_;
+  std::vector<std::string> labels_;
+  std::vector<glm::dvec2> screenPoints_;
+  std::vector<Button> buttons_;
+  nlohmann::json layoutJson_;
+  std::string typed_, error_;
+  std::set<std::string> selected_;
+  bool dirty_ = true;
+};
+
+}  // namespace tlab::study
