@@ -50,6 +50,21 @@ std::vector<std::string> hostileTexts() {
           big, " leading and trailing ", "", "NULL"};
 }
 
+// A new store with one enrolled participant of tiny.toml in a started session.
+struct OneParticipant {
+  explicit OneParticipant(const std::string& name)
+      : dir(freshDir(name)), e(readExperimentFile(tlab::testing::studyData("tiny.toml"))), path((dir / "s.db").string()), store(path),
+        db(path, false), p(*store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)})),
+        session(store.startSession(p.id, e, "test", "simulated")) {}
+  std::filesystem::path dir;
+  Experiment e;
+  std::string path;
+  SqliteStore store;
+  Database db;
+  ParticipantRecord p;
+  std::int64_t session;
+};
+
 }  // namespace
 
 TEST(SqliteStore, SchemaVersionAndWal) {
@@ -190,14 +205,11 @@ TEST(SqliteStore, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
 }
 
 TEST(SqliteStore, OnsetsAreCommittedAndCountShowings) {
-  const auto dir = freshDir("store_onsets");
-  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
-  const std::string path = (dir / "s.db").string();
-  SqliteStore store(path);
-  Database db(path, false);
-  const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
-  const auto session = store.startSession(p.id, e, "test", "simulated");
-  const auto trial = store.trials(p.id).at(0).id;
+  OneParticipant t("store_onsets");
+  auto& store = t.store;
+  auto& db = t.db;
+  const auto session = t.session;
+  const auto trial = store.trials(t.p.id).at(0).id;
   EXPECT_EQ(store.recordOnset(session, trial, 100, R"({"present_ms":1.5})"), 1);
   EXPECT_EQ(store.recordOnset(session, trial, 200, R"({"present_ms":1.5})"), 2);
   Statement s = db.prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
@@ -208,13 +220,11 @@ TEST(SqliteStore, OnsetsAreCommittedAndCountShowings) {
 }
 
 TEST(SqliteStore, OneResponsePerTrial) {
-  const auto dir = freshDir("store_unique");
-  const Experiment e = readExperimentFile(tlab::testing::studyData("tiny.toml"));
-  const std::string path = (dir / "s.db").string();
-  SqliteStore store(path);
-  Database db(path, false);
-  const auto p = *store.enrol(e, "test", "p", 0, makeDesign(e), {fakeTrial(1)});
-  const auto session = store.startSession(p.id, e, "test", "simulated");
+  OneParticipant t("store_unique");
+  auto& store = t.store;
+  auto& db = t.db;
+  const auto& p = t.p;
+  const auto session = t.session;
   ResponseRecord r;
   r.trial = store.trials(p.id).at(0).id;
   r.session = session;
