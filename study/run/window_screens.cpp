@@ -64,7 +64,7 @@ std::optional<bool> WindowResponder::askConsent(const std::string& title, const 
   if (closed_) return std::nullopt;
   Canvas c = blank();
   painter_.drawLine(c, title, 40, 40, 32.0f, kInk);
-  const int bottom = painter_.drawParagraph(c, consent.text, 40, 100, c.width() - 80, 20.0f, kInk);
+  const int bottom = 100 + painter_.drawParagraph(c, consent.text, 40, 100, c.width() - 80, 20.0f, kInk);  // returns the height used
   const auto buttons = buttonColumn(40, std::min(bottom + 30, c.height() - 150), std::min(c.width() - 80, 640),
                                     {consent.accept, consent.decline});
   for (const auto& b : buttons) drawButton(c, painter_, b, false);
@@ -90,7 +90,7 @@ std::optional<bool> WindowResponder::askConsent(const std::string& title, const 
 std::optional<std::string> WindowResponder::askField(const std::string& title, const FormField& field, int index, int count) {
   Canvas base = blank();
   painter_.drawLine(base, title + " (" + std::to_string(index) + "/" + std::to_string(count) + ")", 40, 30, 28.0f, kInk);
-  const int bottom = painter_.drawParagraph(base, field.text, 40, 90, base.width() - 80, 24.0f, kInk);
+  const int bottom = 90 + painter_.drawParagraph(base, field.text, 40, 90, base.width() - 80, 24.0f, kInk);
   painter_.drawLine(base, fieldHint(field), 40, bottom + 16, 18.0f, kMuted);
   std::vector<Button> buttons;
   std::vector<std::string> values;  // what each button answers

@@ -15,6 +15,8 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
+#include <nlohmann/json.hpp>
+
 #include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
@@ -189,6 +191,13 @@ TEST(SessionFlowWindow, ParticipantAcceptsAndFinishesAtTheKeyboard) {
             4);
   EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'feedback' AND detail LIKE '%\"correct\":true%'"), 2);
   EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'break-end'"), 1);
+  // The choice buttons sit below the question and its hint (the question text at y = 90), not over them.
+  Database d(db, false);
+  auto form = d.prepare("SELECT detail FROM events WHERE kind = 'form-item' AND detail LIKE '%\"field\":\"gender\"%'");
+  ASSERT_TRUE(form.step());
+  const auto buttons = nlohmann::json::parse(form.text(0))["buttons"];
+  ASSERT_EQ(buttons.size(), 4u);
+  for (const auto& [label, centre] : buttons.items()) EXPECT_GT(centre[1].get<int>(), 150) << label;
 }
 
 TEST(SessionFlowWindow, AutopilotWalksTheWholeSessionAndTimingIsRecorded) {
