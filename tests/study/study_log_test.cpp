@@ -265,3 +265,25 @@ TEST(StudyLog, ErrorLinesSayWhatToDo) {
   expectOneLineError(exported, (blocked / "csv").string() + ": cannot create the export folder");
   EXPECT_EQ(exported.err.find("filesystem error"), std::string::npos) << exported.err;
 }
+
+TEST(StudyLog, AnUnreplayedLogOnReadOnlyMediaIsNamed) {
+  const auto dir = freshDir("log_wal_read_only");
+  const auto source = dir / "source", archive = dir / "archive";
+  std::filesystem::create_directories(source);
+  std::filesystem::create_directories(archive);
+  const std::string db = (source / "study.db").string();
+  ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("tiny.toml") + " --participants 1 --db " + quoted(db)).exitCode, 0);
+  {
+    // A station still writing: its last changes are only in the write-ahead log when the files are copied.
+    Database writer(db, false);
+    writer.execute("PRAGMA wal_autocheckpoint=0; INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (1, NULL, 0, 'note', 'late')");
+    std::filesystem::copy_file(db, archive / "study.db");
+    std::filesystem::copy_file(db + "-wal", archive / "study.db-wal");
+  }
+  const std::string copy = (archive / "study.db").string();
+  if (runCommand("chattr +i " + quoted(copy) + " " + quoted(copy + "-wal") + " " + quoted(archive.string()) + " 2>&1").exitCode != 0)
+    GTEST_SKIP() << "needs root for chattr +i";
+  const auto r = runCommand(kTlab + " export " + quoted(copy) + " --csv " + quoted((dir / "csv").string()));
+  runCommand("chattr -i " + quoted(archive.string()) + " " + quoted(copy) + " " + quoted(copy + "-wal"));
+  expectOneLineError(r, "holds changes that must be replayed, and the folder is read-only: copy");
+}
