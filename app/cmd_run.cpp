@@ -7,7 +7,6 @@
 
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
-#include "renderer/gpu/window_context.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/simulate/simulated_observer.hpp"
 #include "study/run/trial_runner.hpp"
@@ -29,18 +28,6 @@ struct RunCommandOptions {
   double autopilotPace = 0.05;
 };
 
-// The participant's window; without a display, says how to run the session or pilot it instead.
-std::unique_ptr<gpu::WindowContext> openParticipantWindow(int width, int height, const std::string& title) {
-  try {
-    return gpu::createWindowContext(width, height, title);
-  } catch (const std::exception& e) {
-    const std::string why = std::string(e.what()).substr(0, std::string(e.what()).find(" - "));  // without the render hint
-    throw std::runtime_error("tlab run shows the session in a window and cannot open one (" + why +
-                             "): run it on a machine with a display, under a virtual one (xvfb-run tlab run ...), "
-                             "or pilot the study without a window with tlab simulate");
-  }
-}
-
 void run(const RunCommandOptions& o) {
   if (o.participant.empty()) throw std::invalid_argument("--participant: must not be empty");
   const study::Experiment e = study::readExperimentFile(o.experiment);
@@ -50,7 +37,7 @@ void run(const RunCommandOptions& o) {
   const study::RunOptions run{o.participant, o.resume, TLAB_VERSION "+" TLAB_GIT_REVISION};
   study::checkParticipant(store, e, run);  // refuse before opening a window
   // The title bar is seen by the participant: the participant title, never the experiment's id or title.
-  auto window = openParticipantWindow(width, height, "tlab run - " + (e.participantTitle.empty() ? std::string("study") : e.participantTitle));
+  auto window = study::openParticipantWindow(width, height, "tlab run - " + (e.participantTitle.empty() ? std::string("study") : e.participantTitle));
   if (o.fullscreen) study::makeFullscreen(*window);
   study::TextPainter painter;
   study::StimulusLibrary stimuli(study::stimulusDirectoryFor(o.db), sceneCatalog(), painter);

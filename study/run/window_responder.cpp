@@ -59,6 +59,17 @@ std::int64_t monotonicNs() {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
+std::unique_ptr<gpu::WindowContext> openParticipantWindow(int width, int height, const std::string& title) {
+  try {
+    return gpu::createWindowContext(width, height, title);
+  } catch (const std::exception& e) {
+    const std::string why = std::string(e.what()).substr(0, std::string(e.what()).find(" - "));  // without the render hint
+    throw std::runtime_error("tlab run shows the session in a window and cannot open one (" + why +
+                             "): run it on a machine with a display, under a virtual one (xvfb-run tlab run ...), "
+                             "or pilot the study without a window with tlab simulate");
+  }
+}
+
 void makeFullscreen(gpu::WindowContext& window) {
   GLFWmonitor* monitor = glfwGetPrimaryMonitor();
   const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
