@@ -342,7 +342,6 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   else r.fail(root.get("block_tasks"), "block_tasks", "expected \"all\" or \"by-position\", got '" + blockTasks + "'");
   e.tasks = readTasks(r, root, e.factors);
   e.questionnaires = readQuestionnaires(r, root);
-  checkBreaks(r, root, e);
   e.analyses = readAnalyses(r, root, e);
   e.observer = readObserver(r, root);
   checkDesign(r, root, e);

@@ -157,10 +157,4 @@ std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::
   return out;
 }
 
-void checkBreaks(const FieldReader& r, const toml::table& root, const Experiment& e) {
-  if (e.breaks.every <= 0) return;
-  const toml::node* every = root.get("breaks") ? root.get("breaks")->as_table()->get("every") : nullptr;
-  if (e.breaks.every > 10000) r.fail(every, "breaks.every", "at most 10000");
-}
-
 }  // namespace tlab::study

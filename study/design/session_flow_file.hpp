@@ -12,7 +12,5 @@ namespace tlab::study {
 
 void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& e);
 std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root);
-// Breaks every N blocks need more than N blocks to ever show; checked against the design.
-void checkBreaks(const FieldReader& r, const toml::table& root, const Experiment& e);
 
 }  // namespace tlab::study

@@ -76,7 +76,6 @@ class WindowResponder final : public Responder {
   std::optional<glm::dvec2> dragTo(glm::dvec2 p);
 
  private:
-  enum class Wait { Continue, Closed };
   struct TrialInput {
     std::optional<std::string> answer;
     bool closed = false;

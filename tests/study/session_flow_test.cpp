@@ -205,9 +205,7 @@ TEST(SessionFlowWindow, AutopilotWalksTheWholeSessionAndTimingIsRecorded) {
   const auto dir = freshDir("flow_autopilot");
   const std::string db = (dir / "study.db").string();
   Display display(dir, 1000);
-  std::string command = display.env;
-  for (const auto& a : runArgs(db, "P-auto", true)) command += " " + quoted(a);
-  const auto r = runCommand(command);
+  const auto r = runCommand(display.env + " " + commandLine(runArgs(db, "P-auto", true)));
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("session finished: 6 of 6 trials answered"), std::string::npos) << r.out;
   EXPECT_EQ(count(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 1);
@@ -236,9 +234,7 @@ TEST(SessionFlowWindow, KilledDuringABreakResumesAfterIt) {
   EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), 4);  // 2 training + 2 test, then the break
   auto args = runArgs(db, "P-break", true);
   args.push_back("--resume");
-  std::string command = display.env;
-  for (const auto& a : args) command += " " + quoted(a);
-  const auto resumed = runCommand(command);
+  const auto resumed = runCommand(display.env + " " + commandLine(args));
   ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("2 of 6 trials answered in this run (4 before)"), std::string::npos) << resumed.out;
   // The resumed session continued after the break: its first stimulus was trial 5, shown once.

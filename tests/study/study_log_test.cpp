@@ -99,9 +99,7 @@ TEST(StudyLog, AParticipantRunningAtOneStationIsRefusedAtAnother) {
   ::waitpid(a, &status, WUNTRACED);
   ASSERT_TRUE(WIFSTOPPED(status)) << readText((dir / "a.err").string());
   const auto before = count(db, "SELECT count(*) FROM responses");
-  std::string command;
-  for (const auto& word : resume) command += quoted(word) + " ";
-  expectOneLineError(runCommand(command), "participant 'sim-002' is in session ");
+  expectOneLineError(runCommand(commandLine(resume)), "participant 'sim-002' is in session ");
   EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), before);
   // Station A goes on and finishes; the participant is then finished for everyone.
   ::kill(a, SIGCONT);
@@ -224,9 +222,7 @@ TEST(StudyLog, ExportSaysHowEverySessionEndedAndKeepsSeedsExact) {
   ASSERT_TRUE(WIFSTOPPED(status));
   ::kill(p, SIGKILL);
   waitProcess(p);
-  std::string command;
-  for (const auto& word : args) command += quoted(word) + " ";
-  ASSERT_EQ(runCommand(command).exitCode, 0);
+  ASSERT_EQ(runCommand(commandLine(args)).exitCode, 0);
   ASSERT_EQ(runCommand(kTlab + " export " + quoted(db) + " --csv " + quoted((dir / "csv").string())).exitCode, 0);
   const auto sessions = parseCsv(readText((dir / "csv" / "sessions.csv").string()));
   ASSERT_EQ(sessions.size(), 1u + 3);

@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace tlab::testing {
 
@@ -41,6 +42,13 @@ inline CommandResult runCommand(const std::string& command) {
 }
 
 inline std::string quoted(const std::string& s) { return "'" + s + "'"; }
+
+// The words of a command as one shell line, each quoted.
+inline std::string commandLine(const std::vector<std::string>& words) {
+  std::string line;
+  for (const auto& w : words) line += (line.empty() ? "" : " ") + quoted(w);
+  return line;
+}
 
 // A fresh, empty folder under the temp directory for one test.
 inline std::filesystem::path freshDir(const std::string& name) {
