@@ -30,6 +30,7 @@ struct RunCommandOptions {
 
 void run(const RunCommandOptions& o) {
   if (o.participant.empty()) throw std::invalid_argument("--participant: must not be empty");
+  if (o.autopilotPace < 0) throw std::invalid_argument("--autopilot-pace: must be >= 0");
   const study::Experiment e = study::readExperimentFile(o.experiment);
   const auto [width, height] = parseSize(o.size);
   const auto storeOwner = study::openStore(o.db);
@@ -47,7 +48,6 @@ void run(const RunCommandOptions& o) {
     std::fflush(stdout);
   });
   study::WindowResponder responder(*window, painter);
-  if (o.autopilotPace < 0) throw std::invalid_argument("--autopilot-pace: must be >= 0");
   if (o.autopilot)
     responder.engageAutopilot(std::make_shared<study::SimulatedObserver>(e.observer, e.seed, o.participant), o.autopilotPace);
   const study::SessionResult r = runner.run(run, responder);
