@@ -10,7 +10,8 @@ packages=(
   libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
   libre2-dev libpoppler-cpp-dev libxml2-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xdotool imagemagick chromium
+  xvfb xdotool imagemagick chromium chromium-driver python3-selenium
+  libcpp-httplib-dev libpqxx-dev postgresql  # tlab serve and the PostgreSQL store
   clang libclang-rt-14-dev time e2fsprogs
   python3-vtk9  # bench/vtk_compare.py (run by hand)
 )
