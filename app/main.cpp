@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   tlab::app::addStimuliCommand(app);
   tlab::app::addDesignCommand(app);
   tlab::app::addRunCommand(app);
+  tlab::app::addServeCommand(app);
   tlab::app::addSimulateCommand(app);
   tlab::app::addExportCommand(app);
   tlab::app::addAnalyzeCommand(app);

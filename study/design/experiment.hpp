@@ -62,6 +62,7 @@ struct TaskSpec {
   // Interactive trials (Elmqvist): the window renders the scene live and the participant orbits
   // (ABSTRACT) or walks (WALKTHROUGH); simulated observers see the start view.
   Navigation navigation = Navigation::None;
+  std::string navigationSource;  // "file:line" of the navigation field (online runs refuse walking)
 };
 
 // One question of a form: a participant-information field or a questionnaire item.
@@ -108,6 +109,19 @@ struct BreakSpec {
 struct DebriefSpec {
   std::string text = "Thank you. The session is complete.";
   std::string completionCode;
+};
+
+// [online]: how `tlab serve` runs the study in a browser (Prolific and the like).
+struct OnlineSpec {
+  std::string participantParameter = "pid";  // the URL parameter carrying the participant id ("PROLIFIC_PID")
+  std::string studyParameter;                // stored with the session when given ("STUDY_ID")
+  std::string sessionParameter;              // ("SESSION_ID")
+  double timeoutMinutes = 60.0;              // no request for this long: the participant is dropped, the slot freed
+  int turntableAzimuths = 36;                // orbit tasks: pre-rendered views around the target ...
+  int turntableElevations = 5;               // ... at this many elevations
+  double turntableElevationDegrees = 60.0;   // spread of the elevations (centred on the start view)
+  std::string completionUrl;                 // the debrief links here (Prolific's completion URL)
+  bool sizeCalibration = false;              // the credit-card screen that measures pixels per centimetre
 };
 
 struct AnalysisSpec {
@@ -162,6 +176,7 @@ struct Experiment {
   bool trainingFeedback = false;   // [training] feedback = true
   BreakSpec breaks;
   DebriefSpec debrief;
+  OnlineSpec online;
   std::vector<Questionnaire> questionnaires;
   std::vector<AnalysisSpec> analyses;
   ObserverParams observer;

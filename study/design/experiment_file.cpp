@@ -123,6 +123,7 @@ std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, c
     if (t.get("navigation")) {
       try {
         s.navigation = parseNavigation(r.string(t, "navigation", where, true));
+        s.navigationSource = r.at(t.get("navigation"), where + ".navigation");
       } catch (const std::invalid_argument& e) {
         r.fail(t.get("navigation"), where + ".navigation", e.what());
       }
@@ -321,7 +322,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
     throw ExperimentFileError(path + ":" + std::to_string(error.source().begin.line) + ": " + std::string(error.description()));
   }
   r.checkKeys(root, "", {"id", "title", "participant_title", "seed", "participants", "counterbalancing", "block_tasks", "welcome",
-                         "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "stimulus", "factors", "tasks",
+                         "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "online", "stimulus", "factors", "tasks",
                          "questionnaires", "analysis", "observer"});
   Experiment e;
   e.path = path;

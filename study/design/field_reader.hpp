@@ -20,8 +20,13 @@ class FieldReader {
   explicit FieldReader(std::string path) : path_(std::move(path)) {}
 
   [[noreturn]] void fail(const toml::node* node, const std::string& field, const std::string& message) const {
+    throw ExperimentFileError(at(node, field) + ": " + message);
+  }
+
+  // "file:line: field", for checks made later (an online run refusing a walking task).
+  std::string at(const toml::node* node, const std::string& field) const {
     const auto line = node ? node->source().begin.line : 0u;
-    throw ExperimentFileError(path_ + ":" + std::to_string(line) + ": " + field + ": " + message);
+    return path_ + ":" + std::to_string(line) + ": " + field;
   }
 
   void checkKeys(const toml::table& table, const std::string& where, const std::set<std::string>& allowed) const {

@@ -72,6 +72,30 @@ const toml::table* optionalTable(const FieldReader& r, const toml::table& root, 
   return t;
 }
 
+void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
+  const toml::table* t = optionalTable(r, root, "online",
+                                       {"participant_parameter", "study_parameter", "session_parameter", "timeout_minutes", "turntable_azimuths",
+                                        "turntable_elevations", "turntable_elevation_degrees", "completion_url", "size_calibration"});
+  if (!t) return;
+  o.participantParameter = r.string(*t, "participant_parameter", "online", false, o.participantParameter);
+  if (o.participantParameter.empty()) r.fail(t->get("participant_parameter"), "online.participant_parameter", "must not be empty");
+  o.studyParameter = r.string(*t, "study_parameter", "online", false);
+  o.sessionParameter = r.string(*t, "session_parameter", "online", false);
+  o.timeoutMinutes = r.number(*t, "timeout_minutes", "online", o.timeoutMinutes, 0.05, 7 * 24 * 60.0);
+  o.turntableAzimuths = int(r.integer(*t, "turntable_azimuths", "online", o.turntableAzimuths, 4));
+  o.turntableElevations = int(r.integer(*t, "turntable_elevations", "online", o.turntableElevations, 1));
+  if (o.turntableAzimuths * o.turntableElevations > 720)
+    r.fail(t->get("turntable_azimuths"), "online.turntable_azimuths", "at most 720 views in all (azimuths x elevations)");
+  o.turntableElevationDegrees = r.number(*t, "turntable_elevation_degrees", "online", o.turntableElevationDegrees, 0.0, 160.0);
+  o.completionUrl = r.string(*t, "completion_url", "online", false);
+  if (!o.completionUrl.empty() && o.completionUrl.rfind("https://", 0) != 0 && o.completionUrl.rfind("http://", 0) != 0)
+    r.fail(t->get("completion_url"), "online.completion_url", "must start with https:// or http://");
+  if (const toml::node* n = t->get("size_calibration")) {
+    if (!n->is_boolean()) r.fail(n, "online.size_calibration", "must be true or false");
+    o.sizeCalibration = n->as_boolean()->get();
+  }
+}
+
 }  // namespace
 
 void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& e) {
@@ -106,6 +130,7 @@ void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& 
     e.breaks.minSeconds = r.number(*t, "min_seconds", "breaks", 0.0, 0.0, 3600.0);
     e.breaks.text = r.string(*t, "text", "breaks", false, e.breaks.text);
   }
+  readOnline(r, root, e.online);
   e.debrief.text = r.string(root, "goodbye", "", false, e.debrief.text);
   if (const toml::table* t = optionalTable(r, root, "debrief", {"text", "completion_code"})) {
     e.debrief.text = r.string(*t, "text", "debrief", false, e.debrief.text);

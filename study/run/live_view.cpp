@@ -35,11 +35,15 @@ bool LiveView::pointAt(glm::vec2 fraction) {
 const Canvas& LiveView::frame() {
   const std::string camera = navigator_.describe();
   if (!last_ || camera != lastCamera_) {
-    request_.camera = navigator_.camera();
-    last_.emplace(renderer_.render(request_));
+    last_.emplace(frameFrom(navigator_.camera()));
     lastCamera_ = camera;
   }
   return *last_;
+}
+
+Canvas LiveView::frameFrom(const render::Camera& camera) {
+  request_.camera = camera;
+  return Canvas(renderer_.render(request_));
 }
 
 }  // namespace tlab::study

@@ -24,6 +24,8 @@ class LiveView {
   bool pointAt(glm::vec2 fraction);
   // The picture from the navigator's current camera.
   const Canvas& frame();
+  // The picture from any camera (the views of an online turntable).
+  Canvas frameFrom(const render::Camera& camera);
 
  private:
   std::shared_ptr<const render::Scene> scene_;

@@ -38,6 +38,7 @@ struct DisplayInfo {
   int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
   int refreshHz = 0;     // the monitor's, as GLFW reports it (0: unknown)
   int swapInterval = 1;
+  std::string browserJson;  // browser sessions: screen, window, device pixel ratio, refresh estimate, pixels per cm
   std::string json() const;
 };
 
@@ -58,6 +59,9 @@ struct ResponderEvent {
   std::string kind;
   std::string detail;
 };
+
+// The monotonic clock in nanoseconds: the clock of every stored onset and response.
+std::int64_t monotonicNs();
 
 // Every front end walks the same session flow (TrialRunner) through these calls; each returns
 // nullopt/false when the participant closed the session.

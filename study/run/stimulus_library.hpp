@@ -16,6 +16,7 @@
 #include "study/run/canvas.hpp"
 #include "study/run/floor_plan.hpp"
 #include "study/design/session_plan.hpp"
+#include "study/run/stimulus_source.hpp"
 #include "study/run/text_painter.hpp"
 #include "tasks/question.hpp"
 
@@ -40,12 +41,12 @@ bool isMarkedPoint(const tasks::ProbePoint& point);
 // Draws the marks of a question's points (ring + label) onto a copy of the picture.
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter);
 
-class StimulusLibrary {
+class StimulusLibrary : public StimulusSource {
  public:
   StimulusLibrary(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, TextPainter& painter);
 
   // Throws with a one-line message naming the scene, style or task when one of them fails.
-  PreparedTrial prepare(const PlannedTrial& trial);
+  PreparedTrial prepare(const PlannedTrial& trial) override;
 
  private:
   struct Rendered {

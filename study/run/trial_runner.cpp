@@ -105,7 +105,7 @@ TrialRecord makeTrialRecord(const PlannedTrial& plan, const PreparedTrial& prepa
   return r;
 }
 
-TrialRunner::TrialRunner(const Experiment& experiment, Store& store, StimulusLibrary& stimuli)
+TrialRunner::TrialRunner(const Experiment& experiment, Store& store, StimulusSource& stimuli)
     : experiment_(experiment), store_(store), stimuli_(stimuli), design_(makeDesign(experiment)) {}
 
 void TrialRunner::storeEvents(Session& s, std::optional<std::int64_t> trial) {

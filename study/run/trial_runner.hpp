@@ -49,7 +49,7 @@ struct SessionResult {
 
 class TrialRunner {
  public:
-  TrialRunner(const Experiment& experiment, Store& store, StimulusLibrary& stimuli);
+  TrialRunner(const Experiment& experiment, Store& store, StimulusSource& stimuli);
 
   void onProgress(std::function<void(const TrialProgress&)> callback) { progress_ = std::move(callback); }
 
@@ -82,7 +82,7 @@ class TrialRunner {
 
   const Experiment& experiment_;
   Store& store_;
-  StimulusLibrary& stimuli_;
+  StimulusSource& stimuli_;
   Design design_;
   std::function<void(const TrialProgress&)> progress_;
   int sessions_ = 0, onsets_ = 0, acks_ = 0;  // counts of this process (fault points)

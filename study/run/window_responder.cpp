@@ -55,10 +55,6 @@ void onClose(GLFWwindow* w) { self(w)->push({WindowResponder::Input::Kind::Close
 
 }  // namespace
 
-std::int64_t monotonicNs() {
-  return std::chrono::duration_cast<std::chrono::nanoseconds>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
 std::unique_ptr<gpu::WindowContext> openParticipantWindow(int width, int height, const std::string& title) {
   try {
     return gpu::createWindowContext(width, height, title);

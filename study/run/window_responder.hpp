@@ -114,8 +114,6 @@ class WindowResponder final : public Responder {
   double eventWaitMaxMs_ = 0.0;
 };
 
-std::int64_t monotonicNs();
-
 // The participant's window (OpenGL 4.5 core); without a display, one line that says how to run the
 // session (a display, xvfb-run) or to pilot it without a window (tlab simulate).
 std::unique_ptr<gpu::WindowContext> openParticipantWindow(int width, int height, const std::string& title);

@@ -1,0 +1,121 @@
+#include "study/serve/participant_session.hpp"
+
+#include <cstdio>
+#include <random>
+
+#include "study/run/trial_runner.hpp"
+#include "study/serve/browser_responder.hpp"
+#include "study/serve/flow_pages.hpp"
+
+namespace tlab::study {
+
+std::string newToken() {
+  std::random_device device;  // /dev/urandom on Linux
+  std::string token;
+  for (int i = 0; i < 8; ++i) {
+    char part[9];
+    std::snprintf(part, sizeof part, "%08x", unsigned(device()));
+    token += part;
+  }
+  return token;
+}
+
+ParticipantSession::ParticipantSession(std::string participant, std::string token, nlohmann::json arrival, std::chrono::milliseconds timeout)
+    : participant_(std::move(participant)), token_(std::move(token)), arrival_(std::move(arrival)), timeout_(timeout),
+      channel_(std::make_shared<SessionChannel>(timeout)) {}
+
+ParticipantSession::~ParticipantSession() {
+  stop();
+  std::thread walking;
+  {
+    std::lock_guard lock(mutex_);
+    walking = std::move(thread_);
+  }
+  if (walking.joinable()) walking.join();
+}
+
+void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser) {
+  std::lock_guard lock(mutex_);
+  if (running_) return;
+  if (thread_.joinable()) thread_.join();
+  if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
+  ended_.clear();
+  DisplayInfo display;
+  const gpu::GpuInfo& gl = study.worker.gpuInfo();
+  display.glBackend = gl.backend;  // the headless context that rendered the stimuli
+  display.glVendor = gl.vendor;
+  display.glRenderer = gl.renderer;
+  display.glVersion = gl.version;
+  display.browserJson = browser.dump();
+  std::vector<ResponderEvent> arrival{{monotonicNs(), "arrival", arrival_.dump()}};
+  running_ = true;
+  thread_ = std::thread([this, &study, display, arrival] { walk(study, display, arrival); });
+}
+
+void ParticipantSession::endWith(const std::string& title, const std::string& text, const std::string& code, const std::string& url) {
+  channel()->publish(endScreen(title, text, code, url));
+  std::lock_guard lock(mutex_);
+  ended_ = text;
+}
+
+void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival) {
+  const Experiment& e = study.experiment;
+  const std::string title = e.participantTitle.empty() ? "Study" : e.participantTitle;
+  try {
+    const auto existing = study.store.findParticipant(e.id, participant_);
+    const RunOptions options{participant_, existing.has_value(), study.tlabVersion};
+    BrowserResponder responder(
+        channel_, [&](const TrialView& view) { return study.worker.images(view.plan, view.prepared); }, display, std::move(arrival));
+    TrialRunner runner(e, study.store, study.worker);
+    const SessionResult r = runner.run(options, responder);
+    if (r.outcome == SessionOutcome::Finished) {
+      endWith(title, "The session is complete. Thank you!", e.debrief.completionCode, e.online.completionUrl);
+    } else if (r.outcome == SessionOutcome::Declined) {
+      endWith(title, "You chose not to take part. You can close this page.");
+    } else if (channel_->timedOut()) {
+      study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
+      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
+    } else if (channel_->closed()) {
+      endWith(title, "This session has ended: " + channel_->closedBecause() + ".");
+    }
+  } catch (const std::exception& ex) {
+    std::fprintf(stderr, "serve: participant '%s': %s\n", participant_.c_str(), ex.what());
+    Screen s;
+    s.page = {{"kind", "error"},
+              {"text", "The server could not continue your session (your answers so far are stored). Please wait a moment and "
+                       "try again; if this keeps happening, contact the researcher."},
+              {"retry", true}};
+    channel_->publish(std::move(s));
+    channel_->close(ex.what());
+    std::lock_guard lock(mutex_);
+    ended_ = std::string("error: ") + ex.what();
+  }
+  running_ = false;
+}
+
+std::shared_ptr<SessionChannel> ParticipantSession::channel() const {
+  std::lock_guard lock(mutex_);
+  return channel_;
+}
+
+void ParticipantSession::drop(ServedStudy& study, const std::string& reason) {
+  channel()->close(reason);
+  std::thread walking;
+  {
+    std::lock_guard lock(mutex_);
+    walking = std::move(thread_);
+  }
+  if (walking.joinable()) walking.join();  // outside the lock: the walk takes it to say how it ended
+  study.store.dropParticipant(study.experiment.id, participant_, reason);
+}
+
+void ParticipantSession::stop() { channel()->close("the server is shutting down"); }
+
+std::string ParticipantSession::state() const {
+  std::lock_guard lock(mutex_);
+  if (running_) return "running";
+  if (!ended_.empty()) return "ended: " + ended_;
+  return "waiting for the page";
+}
+
+}  // namespace tlab::study

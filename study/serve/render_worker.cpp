@@ -1,0 +1,121 @@
+#include "study/serve/render_worker.hpp"
+
+#include <filesystem>
+
+#include "core/image.hpp"
+#include "core/sha256.hpp"
+#include "study/run/camera_navigator.hpp"
+#include "study/run/live_view.hpp"
+
+namespace tlab::study {
+
+RenderWorker::RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online)
+    : directory_(std::move(directory)), catalog_(std::move(catalog)), online_(std::move(online)) {
+  std::promise<void> ready;
+  auto started = ready.get_future();
+  thread_ = std::thread([this, &ready] { loop(ready); });
+  try {
+    started.get();  // the context's error, if it could not be made
+  } catch (...) {
+    thread_.join();
+    throw;
+  }
+}
+
+RenderWorker::~RenderWorker() {
+  {
+    std::lock_guard lock(mutex_);
+    stopping_ = true;
+  }
+  wake_.notify_one();
+  thread_.join();
+}
+
+void RenderWorker::loop(std::promise<void>& ready) {
+  std::unique_ptr<gpu::GpuContext> context;
+  try {
+    context = gpu::createHeadlessContext();
+    info_ = context->info();
+    painter_ = std::make_unique<TextPainter>();
+    library_ = std::make_unique<StimulusLibrary>(directory_, catalog_, *painter_);
+    ready.set_value();
+  } catch (...) {
+    ready.set_exception(std::current_exception());
+    return;
+  }
+  for (;;) {
+    std::function<void()> job;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
+      if (jobs_.empty()) break;
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
+    }
+    job();
+  }
+  library_.reset();
+  painter_.reset();
+}
+
+PreparedTrial RenderWorker::prepare(const PlannedTrial& trial) {
+  PreparedTrial prepared = onGlThread([&] { return library_->prepare(trial); });
+  std::lock_guard lock(mutex_);
+  paths_.emplace(prepared.stimulusSha256, prepared.stimulusPath);
+  return prepared;
+}
+
+std::string RenderWorker::writeImage(const core::Image& image) {
+  const std::vector<std::uint8_t> png = core::encodePng(image);
+  const std::string sha = core::sha256Hex(png);
+  const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
+  if (!std::filesystem::exists(path)) {
+    std::filesystem::create_directories(directory_);
+    core::writeFileAtomically(path, png);
+  }
+  std::lock_guard lock(mutex_);
+  paths_.emplace(sha, path);
+  return sha;
+}
+
+// Views around the target at `azimuths` × `elevations` (Elmqvist's orbiting, pre-rendered): the
+// start view is azimuth 0 at the middle elevation; elevations spread evenly over the configured
+// range, each kept within the navigator's ±80°.
+Turntable RenderWorker::renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared) {
+  Turntable t;
+  t.azimuths = online_.turntableAzimuths;
+  t.elevations = online_.turntableElevations;
+  t.startElevation = (t.elevations - 1) / 2;
+  LiveView view(prepared.scene, trial.stimulus, Navigation::Orbit, prepared.camera);
+  for (int e = 0; e < t.elevations; ++e) {
+    const double elevation = t.elevations == 1 ? 0.0 : online_.turntableElevationDegrees * (double(e) / double(t.elevations - 1) - 0.5);
+    for (int a = 0; a < t.azimuths; ++a) {
+      const double azimuth = 360.0 * double(a) / double(t.azimuths);
+      CameraNavigator navigator(Navigation::Orbit, prepared.camera, 1.0f, 1.0f);
+      navigator.drag(azimuth, -elevation);  // 1° per "pixel": the window's own orbit arithmetic
+      const Canvas frame = view.frameFrom(navigator.camera());
+      t.views.push_back({a, e, azimuth, elevation, writeImage(frame.toImage()), navigator.describe()});
+    }
+  }
+  return t;
+}
+
+TrialImages RenderWorker::images(const PlannedTrial& trial, const PreparedTrial& prepared) {
+  return onGlThread([&] {
+    const std::string key = trial.stimulus.text();
+    if (const auto it = trialImages_.find(key); it != trialImages_.end()) return it->second;
+    TrialImages images;
+    if (prepared.floorPlanImage) images.floorPlanSha256 = writeImage(prepared.floorPlanImage->toImage());
+    if (trial.navigation == Navigation::Orbit) images.turntable = renderTurntable(trial, prepared);
+    return trialImages_.emplace(key, images).first->second;
+  });
+}
+
+std::optional<std::string> RenderWorker::imagePath(const std::string& sha256) const {
+  std::lock_guard lock(mutex_);
+  const auto it = paths_.find(sha256);
+  if (it == paths_.end()) return std::nullopt;
+  return it->second;
+}
+
+}  // namespace tlab::study

@@ -1,0 +1,72 @@
+#pragma once
+// RenderWorker: the one thread of a server that owns a GL context. Stimuli, floor plans and
+// turntable views are rendered there (StimulusLibrary needs a current context and is not
+// thread-safe); every session thread asks through prepare(), which queues the call and waits.
+// Everything a study shows is prepared before the server listens, so during the study these calls
+// only look up what is cached. Images are indexed by SHA-256: the server serves nothing else.
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <future>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "renderer/gpu/gpu_context.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
+#include "study/design/experiment.hpp"
+#include "study/run/stimulus_library.hpp"
+#include "study/serve/trial_page.hpp"
+
+namespace tlab::study {
+
+class RenderWorker : public StimulusSource {
+ public:
+  RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online);
+  ~RenderWorker() override;
+  RenderWorker(const RenderWorker&) = delete;
+  RenderWorker& operator=(const RenderWorker&) = delete;
+
+  PreparedTrial prepare(const PlannedTrial& trial) override;
+  // The floor plan and turntable of a trial (rendered once per stimulus key).
+  TrialImages images(const PlannedTrial& trial, const PreparedTrial& prepared);
+  const gpu::GpuInfo& gpuInfo() const { return info_; }
+  // The PNG file of an image this worker made or prepared, by SHA-256 name; nullopt otherwise.
+  std::optional<std::string> imagePath(const std::string& sha256) const;
+
+ private:
+  template <class F>
+  auto onGlThread(F job) -> decltype(job()) {
+    auto task = std::make_shared<std::packaged_task<decltype(job())()>>(std::move(job));
+    auto result = task->get_future();
+    {
+      std::lock_guard lock(mutex_);
+      jobs_.push_back([task] { (*task)(); });
+    }
+    wake_.notify_one();
+    return result.get();
+  }
+  void loop(std::promise<void>& ready);
+  std::string writeImage(const core::Image& image);  // GL thread
+  Turntable renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared);  // GL thread
+
+  std::string directory_;
+  std::vector<render::BuiltinSceneSpec> catalog_;
+  OnlineSpec online_;
+  gpu::GpuInfo info_;
+  std::unique_ptr<TextPainter> painter_;      // GL thread
+  std::unique_ptr<StimulusLibrary> library_;  // GL thread
+  std::map<std::string, TrialImages> trialImages_;  // GL thread: stimulus key → images
+  mutable std::mutex mutex_;
+  std::condition_variable wake_;
+  std::deque<std::function<void()>> jobs_;
+  std::map<std::string, std::string> paths_;  // sha256 → file (guarded by mutex_)
+  bool stopping_ = false;
+  std::thread thread_;
+};
+
+}  // namespace tlab::study

@@ -1,0 +1,71 @@
+#include "study/serve/server_pages.hpp"
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace tlab::study {
+
+std::string htmlEscape(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+namespace {
+
+std::string document(const std::string& title, const std::string& body) {
+  return "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\">"
+         "<title>" + htmlEscape(title) + "</title><link rel=\"stylesheet\" href=\"/static/participant.css\"></head><body><main>" + body +
+         "</main></body></html>\n";
+}
+
+std::string cell(const nlohmann::json& v) { return "<td>" + htmlEscape(v.is_string() ? v.get<std::string>() : v.dump()) + "</td>"; }
+
+std::string actionForm(const std::string& action, const std::string& participant, const std::string& token, const std::string& extra) {
+  return "<form method=\"post\" action=\"/admin/" + action + "\"><input type=\"hidden\" name=\"token\" value=\"" + htmlEscape(token) +
+         "\"><input type=\"hidden\" name=\"participant\" value=\"" + htmlEscape(participant) + "\">" + extra + "<button>" + action +
+         "</button></form>";
+}
+
+}  // namespace
+
+std::string messagePage(const std::string& title, const std::string& text) {
+  return document(title, "<h1>" + htmlEscape(title) + "</h1><p>" + htmlEscape(text) + "</p>");
+}
+
+std::string adminPage(const nlohmann::json& status, const std::string& adminToken) {
+  std::string body = "<h1>" + htmlEscape(status["experiment"].get<std::string>()) + " — admin</h1>";
+  body += "<p>" + htmlEscape(status["summary"].get<std::string>()) + "</p>";
+  body += "<h2>Slots</h2><table><tr><th>slot</th><th>participant</th><th>status</th><th>answered</th><th>session</th><th></th></tr>";
+  for (const auto& s : status["slots"]) {
+    const std::string participant = s["participant"].get<std::string>();
+    const bool active = s["status"] == "active";
+    body += "<tr>" + cell(s["slot"]) + cell(participant) + cell(s["status"]) + cell(s["answered"]) + cell(s["session"]) + "<td>" +
+            (active ? actionForm("drop", participant, adminToken, "") +
+                          actionForm("extend", participant, adminToken, "<input name=\"minutes\" value=\"30\" size=\"3\"> min ")
+                    : "") +
+            "</td></tr>";
+  }
+  body += "</table>";
+  return document("admin", body);
+}
+
+std::string readImageFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace tlab::study

@@ -1,0 +1,127 @@
+#include "study/serve/session_channel.hpp"
+
+#include <cstdio>
+
+namespace tlab::study {
+
+int SessionChannel::publish(Screen screen) {
+  std::lock_guard lock(mutex_);
+  screen_ = std::move(screen);
+  images_.insert(screen_.images.begin(), screen_.images.end());
+  replies_.clear();
+  ++seq_;
+  changed_.notify_all();
+  return seq_;
+}
+
+std::optional<Reply> SessionChannel::awaitReply(std::optional<SteadyTime> deadline) {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    if (!closedBecause_.empty()) return std::nullopt;
+    if (!replies_.empty()) {
+      Reply r = std::move(replies_.front());
+      replies_.pop_front();
+      return r;
+    }
+    const SteadyTime idle = lastActivity_ + timeout_;
+    const SteadyTime until = deadline ? std::min(*deadline, idle) : idle;
+    if (std::chrono::steady_clock::now() >= until) {
+      if (deadline && *deadline <= idle) return std::nullopt;
+      timedOut_ = true;
+      char minutes[32];
+      std::snprintf(minutes, sizeof minutes, "%g", double(timeout_.count()) / 60000.0);
+      closedBecause_ = std::string("timed out after ") + minutes + " minutes without a request from the page";
+      return std::nullopt;
+    }
+    changed_.wait_until(lock, until);
+  }
+}
+
+nlohmann::json SessionChannel::current() const {
+  std::lock_guard lock(mutex_);
+  nlohmann::json page = screen_.page.is_null() ? nlohmann::json{{"kind", "wait"}} : screen_.page;
+  page["seq"] = seq_;
+  return page;
+}
+
+SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error) {
+  std::lock_guard lock(mutex_);
+  lastActivity_ = std::chrono::steady_clock::now();
+  if (!closedBecause_.empty()) {
+    error = "the session has ended: " + closedBecause_;
+    return Delivery::Stale;
+  }
+  if (seq != seq_ || !screen_.check) {
+    error = "screen " + std::to_string(seq) + " is no longer shown; the current one is " + std::to_string(seq_);
+    return Delivery::Stale;
+  }
+  Checked c = screen_.check(body);
+  if (!c.error.empty()) {
+    ++refusals_;
+    if (refused_.size() < 100) refused_.emplace_back(receivedNs, nlohmann::json{{"error", c.error}, {"body", body.dump().substr(0, 500)}}.dump());
+    error = c.error;
+    return Delivery::Refused;
+  }
+  c.reply.receivedNs = receivedNs;
+  replies_.push_back(std::move(c.reply));
+  changed_.notify_all();
+  return Delivery::Delivered;
+}
+
+nlohmann::json SessionChannel::awaitScreenAfter(int seq, std::chrono::milliseconds wait) {
+  {
+    std::unique_lock lock(mutex_);
+    // A "wait" screen is the gap between two screens (the runner storing an answer): wait past it.
+    changed_.wait_for(lock, wait, [&] { return (seq_ > seq && screen_.page.value("kind", "") != "wait") || !closedBecause_.empty(); });
+  }
+  return current();
+}
+
+bool SessionChannel::mayFetch(const std::string& sha) const {
+  std::lock_guard lock(mutex_);
+  return images_.count(sha) > 0;
+}
+
+std::vector<std::pair<std::int64_t, std::string>> SessionChannel::takeRefusals() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(refused_, {});
+}
+
+int SessionChannel::refusals() const {
+  std::lock_guard lock(mutex_);
+  return refusals_;
+}
+
+void SessionChannel::touch() {
+  std::lock_guard lock(mutex_);
+  lastActivity_ = std::chrono::steady_clock::now();
+}
+
+void SessionChannel::close(const std::string& why) {
+  std::lock_guard lock(mutex_);
+  if (closedBecause_.empty()) closedBecause_ = why;
+  changed_.notify_all();
+}
+
+bool SessionChannel::closed() const {
+  std::lock_guard lock(mutex_);
+  return !closedBecause_.empty();
+}
+
+std::string SessionChannel::closedBecause() const {
+  std::lock_guard lock(mutex_);
+  return closedBecause_;
+}
+
+bool SessionChannel::timedOut() const {
+  std::lock_guard lock(mutex_);
+  return timedOut_;
+}
+
+void SessionChannel::extend(std::chrono::milliseconds more) {
+  std::lock_guard lock(mutex_);
+  timeout_ += more;
+  changed_.notify_all();
+}
+
+}  // namespace tlab::study

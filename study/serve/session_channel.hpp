@@ -1,0 +1,91 @@
+#pragma once
+// SessionChannel: the meeting point of one participant's session thread (which walks the session
+// flow through a BrowserResponder) and the HTTP threads serving that participant's page. The
+// session thread publishes a Screen and waits for replies; an HTTP thread checks a reply against
+// the screen on show (Screen::check: wrong kinds are refused with a message, never delivered) and
+// hands it over. Screens are numbered, so a reply to a screen that is gone (a second tab, a reply
+// resent after a reload) is told so rather than taken for an answer to another.
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <mutex>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace tlab::study {
+
+using SteadyTime = std::chrono::steady_clock::time_point;
+
+// A reply the page sent, after its check: `type` ("answer", "onset", "view", ...) and its value.
+struct Reply {
+  std::string type;
+  nlohmann::json value;
+  std::int64_t receivedNs = 0;  // monotonic clock when the request arrived
+};
+
+// What the check of a reply says: an error (the request is refused with 400) or the reply.
+struct Checked {
+  std::string error;
+  Reply reply;
+};
+
+struct Screen {
+  nlohmann::json page;  // what the page shows (never a ground truth)
+  std::function<Checked(const nlohmann::json&)> check;
+  std::set<std::string> images;  // SHA-256 names this screen may fetch
+};
+
+class SessionChannel {
+ public:
+  explicit SessionChannel(std::chrono::milliseconds timeout) : timeout_(timeout), lastActivity_(std::chrono::steady_clock::now()) {}
+
+  // Session thread: shows `screen` (numbered from 1) and returns its number.
+  int publish(Screen screen);
+  // Session thread: the next reply to the current screen; nullopt when the channel was closed
+  // or nothing arrived from the page before `deadline` or for the inactivity time-out.
+  std::optional<Reply> awaitReply(std::optional<SteadyTime> deadline);
+
+  // HTTP threads.
+  nlohmann::json current() const;  // the page of the current screen, with "seq"
+  // Checks and delivers a reply to screen `seq`. Stale: the screen is gone or the session ended
+  // (the page should show the current one); Refused: the check's error is in `error`.
+  enum class Delivery { Delivered, Stale, Refused };
+  Delivery deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error);
+  // Waits up to `wait` for a screen after `seq`; returns the current page either way.
+  nlohmann::json awaitScreenAfter(int seq, std::chrono::milliseconds wait);
+  bool mayFetch(const std::string& sha) const;
+  // Refused replies are kept as events ("refused-reply") until the session thread stores them.
+  std::vector<std::pair<std::int64_t, std::string>> takeRefusals();
+  int refusals() const;
+  void touch();
+
+  // Ends the session's waiting (the researcher dropped the participant; the server stops).
+  void close(const std::string& why);
+  bool closed() const;
+  std::string closedBecause() const;
+  bool timedOut() const;
+  void extend(std::chrono::milliseconds more);
+
+ private:
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::chrono::milliseconds timeout_;
+  SteadyTime lastActivity_;
+  int seq_ = 0;
+  Screen screen_;
+  std::deque<Reply> replies_;
+  std::set<std::string> images_;
+  std::vector<std::pair<std::int64_t, std::string>> refused_;
+  int refusals_ = 0;
+  std::string closedBecause_;
+  bool timedOut_ = false;
+};
+
+}  // namespace tlab::study

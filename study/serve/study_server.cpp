@@ -1,0 +1,238 @@
+#include "study/serve/study_server.hpp"
+
+#include <cstdio>
+#include <regex>
+#include <stdexcept>
+
+#include "study/serve/browser_responder.hpp"
+#include "study/serve/server_pages.hpp"
+#include "study/serve/web_assets.hpp"
+
+namespace tlab::study {
+
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kToken = "([0-9a-f]{64})";
+
+void sendJson(httplib::Response& res, int status, const json& body) {
+  res.status = status;
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(body.dump(), "application/json");
+}
+
+void refuse(httplib::Response& res, int status, const std::string& what) {
+  std::fprintf(stderr, "serve: %d: %s\n", status, what.c_str());
+  sendJson(res, status, {{"error", what}});
+}
+
+bool validParticipantId(const std::string& id) {
+  static const std::regex allowed("[A-Za-z0-9_.@-]{1,128}");
+  return std::regex_match(id, allowed);
+}
+
+std::optional<json> parseBody(const httplib::Request& req, httplib::Response& res) {
+  json body = json::parse(req.body, nullptr, false);
+  if (body.is_discarded() || !body.is_object()) {
+    refuse(res, 400, req.path + ": the body is not a JSON object");
+    return std::nullopt;
+  }
+  return body;
+}
+
+// The page's display report: only numbers and short strings, at most 40 keys.
+std::optional<std::string> checkDisplay(const json& body) {
+  if (body.size() > 40) return "too many fields";
+  for (const auto& [key, value] : body.items()) {
+    if (key.size() > 40) return "a field name is too long";
+    if (!(value.is_number() || value.is_boolean() || (value.is_string() && value.get<std::string>().size() <= 400))) return "field '" + key + "': expected a number or a short text";
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string adminToken)
+    : study_(std::move(study)), options_(std::move(options)), adminToken_(std::move(adminToken)) {
+  const int threads = options_.threads;
+  http_.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
+  http_.set_payload_max_length(options_.maxBodyBytes);
+  http_.set_read_timeout(10, 0);
+  http_.set_write_timeout(10, 0);
+  http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
+                             {"Referrer-Policy", "no-referrer"},
+                             {"X-Frame-Options", "DENY"},
+                             {"Content-Security-Policy", "default-src 'self'; img-src 'self'; style-src 'self'; script-src 'self'"}});
+  http_.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+    std::string what = "unknown error";
+    try {
+      std::rethrow_exception(ep);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    refuse(res, 500, req.method + " " + req.path + ": " + what);
+  });
+  routes();
+}
+
+StudyServer::~StudyServer() {
+  stop();
+  std::lock_guard lock(mutex_);
+  for (auto& [token, s] : byToken_) s->stop();
+}
+
+int StudyServer::bind() {
+  if (options_.port == 0) {  // any free port (tests): the one bound is printed
+    const int port = http_.bind_to_any_port(options_.host);
+    if (port > 0) return options_.port = port;
+  } else if (http_.bind_to_port(options_.host, options_.port)) {
+    return options_.port;
+  }
+  throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
+                             " (the port is in use or the address is not this machine's); choose another with --listen HOST:PORT");
+}
+
+void StudyServer::listen() { http_.listen_after_bind(); }
+
+void StudyServer::stop() { http_.stop(); }
+
+std::shared_ptr<ParticipantSession> StudyServer::session(const std::string& token) {
+  std::lock_guard lock(mutex_);
+  const auto it = byToken_.find(token);
+  if (it == byToken_.end()) return nullptr;
+  it->second->channel()->touch();
+  return it->second;
+}
+
+bool StudyServer::isAdmin(const httplib::Request& req) const {
+  const std::string given = req.has_param("token") ? req.get_param_value("token") : "";
+  if (given.size() != adminToken_.size()) return false;
+  unsigned diff = 0;  // constant time: the comparison does not tell how many characters matched
+  for (std::size_t i = 0; i < given.size(); ++i) diff |= unsigned(given[i] ^ adminToken_[i]);
+  return diff == 0;
+}
+
+void StudyServer::routes() {
+  auto asset = [](const char* name, const char* type) {
+    return [name, type](const httplib::Request&, httplib::Response& res) { res.set_content(std::string(webAsset(name)), type); };
+  };
+  http_.Get("/static/participant.js", asset("participant.js", "text/javascript; charset=utf-8"));
+  http_.Get("/static/participant.css", asset("participant.css", "text/css; charset=utf-8"));
+  http_.Get("/", [this](const httplib::Request&, httplib::Response& res) {
+    res.set_content(messagePage("tlab serve", "Participants start at /s/" + study_.experiment.id + "?" +
+                                                  study_.experiment.online.participantParameter + "=THEIR-ID"),
+                    "text/html; charset=utf-8");
+  });
+  http_.Get("/s/([^/]+)", [this](const httplib::Request& req, httplib::Response& res) { arrive(req, res); });
+  http_.Get(std::string("/p/") + kToken, [this](const httplib::Request& req, httplib::Response& res) {
+    if (!session(req.matches[1])) {
+      res.status = 404;
+      res.set_content(messagePage("Not found", "This session link is not valid. Please use the link you were given."), "text/html; charset=utf-8");
+      return;
+    }
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(std::string(webAsset("participant.html")), "text/html; charset=utf-8");
+  });
+  http_.Get(std::string("/api/") + kToken + "/screen", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = session(req.matches[1]);
+    if (!s) return refuse(res, 404, "no such session");
+    sendJson(res, 200, s->channel()->current());
+  });
+  http_.Get(std::string("/api/") + kToken + "/config", [this](const httplib::Request& req, httplib::Response& res) {
+    if (!session(req.matches[1])) return refuse(res, 404, "no such session");
+    const Experiment& e = study_.experiment;
+    sendJson(res, 200, {{"title", e.participantTitle.empty() ? "Study" : e.participantTitle}, {"calibrate", e.online.sizeCalibration}});
+  });
+  http_.Post(std::string("/api/") + kToken + "/display", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = session(req.matches[1]);
+    if (!s) return refuse(res, 404, "no such session");
+    const auto body = parseBody(req, res);
+    if (!body) return;
+    if (const auto error = checkDisplay(*body)) return refuse(res, 400, "display: " + *error);
+    s->start(study_, *body);
+    sendJson(res, 200, s->channel()->awaitScreenAfter(0, std::chrono::milliseconds(15000)));
+  });
+  http_.Post(std::string("/api/") + kToken + "/reply", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = session(req.matches[1]);
+    if (!s) return refuse(res, 404, "no such session");
+    reply(*s, req, res);
+  });
+  http_.Get(std::string("/api/") + kToken + "/image/([0-9a-f]{64})\\.png", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = session(req.matches[1]);
+    const std::string sha = req.matches[2];
+    if (!s || !s->channel()->mayFetch(sha)) return refuse(res, 404, "no such image for this session");
+    const auto path = study_.worker.imagePath(sha);
+    if (!path) return refuse(res, 404, "no such image");
+    res.set_header("Cache-Control", "private, max-age=86400, immutable");
+    res.set_content(readImageFile(*path), "image/png");
+  });
+  http_.Get("/admin", [this](const httplib::Request& req, httplib::Response& res) { admin(req, res); });
+  http_.Get("/admin/status.json", [this](const httplib::Request& req, httplib::Response& res) {
+    if (!isAdmin(req)) return refuse(res, 403, "admin: wrong or missing token");
+    sendJson(res, 200, status());
+  });
+  http_.Post("/admin/(drop|extend)", [this](const httplib::Request& req, httplib::Response& res) { adminAction(req, res); });
+}
+
+void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
+  const Experiment& e = study_.experiment;
+  auto page = [&res](int status, const std::string& title, const std::string& text) {
+    res.status = status;
+    res.set_content(messagePage(title, text), "text/html; charset=utf-8");
+  };
+  if (req.matches[1] != e.id) return page(404, "Not found", "There is no study with this name here. Please check the link you were given.");
+  const std::string& parameter = e.online.participantParameter;
+  const std::string id = req.has_param(parameter.c_str()) ? req.get_param_value(parameter.c_str()) : "";
+  if (!validParticipantId(id))
+    return page(400, "Link incomplete", "The link is missing the participant id (" + parameter + "=...: 1 to 128 letters, digits or _.@-).");
+  std::shared_ptr<ParticipantSession> s;
+  {
+    std::lock_guard lock(mutex_);
+    if (const auto it = byParticipant_.find(id); it != byParticipant_.end()) s = it->second;
+  }
+  if (!s) {
+    const auto existing = study_.store.findParticipant(e.id, id);
+    if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
+    if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
+    if (existing && existing->status == "dropped")
+      return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
+    json arrival{{"participant", id}, {"user_agent", req.get_header_value("User-Agent").substr(0, 400)}};
+    for (const std::string& p : {e.online.studyParameter, e.online.sessionParameter})
+      if (!p.empty() && req.has_param(p.c_str())) arrival[p] = req.get_param_value(p.c_str()).substr(0, 200);
+    const auto timeout = std::chrono::milliseconds(std::int64_t(e.online.timeoutMinutes * 60000.0));
+    std::lock_guard lock(mutex_);
+    auto& slot = byParticipant_[id];
+    if (!slot) {
+      slot = std::make_shared<ParticipantSession>(id, newToken(), arrival, timeout);
+      byToken_[slot->token()] = slot;
+    }
+    s = slot;
+  }
+  res.set_redirect("/p/" + s->token(), 303);
+}
+
+void StudyServer::reply(ParticipantSession& session, const httplib::Request& req, httplib::Response& res) {
+  const auto body = parseBody(req, res);
+  if (!body) return;
+  const std::int64_t receivedNs = monotonicNs();
+  const auto channel = session.channel();
+  const auto seq = body->find("seq");
+  if (seq == body->end() || !seq->is_number_integer()) return refuse(res, 400, "reply: 'seq' (the screen's number) is missing");
+  std::string error;
+  switch (channel->deliver(seq->get<int>(), *body, receivedNs, error)) {
+    case SessionChannel::Delivery::Stale: return sendJson(res, 409, {{"error", error}, {"screen", channel->current()}});
+    case SessionChannel::Delivery::Refused:
+      std::fprintf(stderr, "serve: 400: participant '%s': reply refused, not stored (kept as a refused-reply event): %s\n", session.participant().c_str(),
+                   error.c_str());
+      return sendJson(res, 400, {{"error", error}});
+    case SessionChannel::Delivery::Delivered: break;
+  }
+  const std::string type = body->value("type", "");
+  if (type == "onset" || type == "view") return sendJson(res, 200, {{"ok", true}});
+  // The next screen comes after the runner stored this reply: it is the acknowledgement.
+  sendJson(res, 200, channel->awaitScreenAfter(seq->get<int>(), std::chrono::milliseconds(15000)));
+}
+
+}  // namespace tlab::study

@@ -1,0 +1,58 @@
+#pragma once
+// StudyServer: `tlab serve` — one experiment served over HTTP (cpp-httplib) to participants'
+// browsers. Participants arrive at /s/<experiment id>?<participant parameter>=ID (Prolific's
+// PROLIFIC_PID, or "pid"), get an unguessable token and the participant page (/p/<token>), whose
+// script walks the session flow through the JSON API under /api/<token>/. Every request is bound
+// to one token: a token reads and writes only its own participant's screens and images. Images
+// are served by SHA-256 name only, and only those this participant's screens named. The admin
+// page (/admin) needs the admin token printed at start.
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include <httplib.h>
+
+#include "study/serve/participant_session.hpp"
+
+namespace tlab::study {
+
+struct ServeOptions {
+  std::string host = "127.0.0.1";
+  int port = 8080;
+  std::size_t maxBodyBytes = 64 * 1024;
+  int threads = 64;  // HTTP worker threads (a reply waits for the next screen)
+};
+
+class StudyServer {
+ public:
+  StudyServer(ServedStudy study, ServeOptions options, std::string adminToken);
+  ~StudyServer();
+
+  // Binds (throws with one line when the port is taken); returns the port bound.
+  int bind();
+  // Serves until stop() (from a signal or another thread).
+  void listen();
+  void stop();
+
+  const std::string& adminToken() const { return adminToken_; }
+
+ private:
+  void routes();
+  void arrive(const httplib::Request& req, httplib::Response& res);
+  void reply(ParticipantSession& session, const httplib::Request& req, httplib::Response& res);
+  void admin(const httplib::Request& req, httplib::Response& res);
+  void adminAction(const httplib::Request& req, httplib::Response& res);
+  nlohmann::json status();
+  std::shared_ptr<ParticipantSession> session(const std::string& token);
+  bool isAdmin(const httplib::Request& req) const;
+
+  ServedStudy study_;
+  ServeOptions options_;
+  std::string adminToken_;
+  httplib::Server http_;
+  std::mutex mutex_;
+  std::map<std::string, std::shared_ptr<ParticipantSession>> byToken_, byParticipant_;
+};
+
+}  // namespace tlab::study

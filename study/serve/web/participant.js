@@ -1,0 +1,327 @@
+// The participant page of `tlab serve`: shows the screen the server's session flow publishes and
+// sends the participant's replies. It never sees a right answer (scoring happens on the server).
+// Stimuli are shown at their rendered size in device pixels (CSS size = pixels / devicePixelRatio),
+// never scaled by the browser; RT runs from the frame the picture was first painted to the input.
+'use strict';
+const token = location.pathname.split('/')[2];
+const api = (path) => '/api/' + token + '/' + path;
+const main = document.getElementById('screen');
+let current = null;      // the screen shown
+let timers = [];         // cleared when the screen changes
+let keyHandler = null;
+let resizeHandler = null;
+
+function el(tag, attrs, ...children) {
+  const e = document.createElement(tag);
+  for (const [k, v] of Object.entries(attrs || {})) {
+    if (k === 'class') e.className = v; else if (k.startsWith('on')) e.addEventListener(k.slice(2), v); else e.setAttribute(k, v);
+  }
+  for (const c of children) e.append(c);
+  return e;
+}
+
+function problem(text, retry) {
+  document.getElementById('problem-text').textContent = text;
+  const box = document.getElementById('problem');
+  box.hidden = false;
+  document.getElementById('problem-retry').onclick = () => { box.hidden = true; retry(); };
+}
+
+async function request(method, path, body) {
+  let r;
+  try {
+    r = await fetch(api(path), { method, headers: body ? { 'Content-Type': 'application/json' } : {}, body: body ? JSON.stringify(body) : undefined, cache: 'no-store' });
+  } catch (e) {
+    return { status: 0, body: { error: 'The connection to the study server was lost.' } };
+  }
+  let json = {};
+  try { json = await r.json(); } catch (e) { json = { error: 'The server sent an unreadable reply.' }; }
+  return { status: r.status, body: json };
+}
+
+// Sends a reply to the screen on show; shows the next screen (the server's acknowledgement).
+async function reply(body) {
+  body.seq = current.seq;
+  const r = await request('POST', 'reply', body);
+  if (body.type === 'onset' || body.type === 'view') return r;
+  if (r.status === 200) show(r.body);
+  else if (r.status === 409) show(r.body.screen);
+  else if (r.status === 400) showInlineError(r.body.error || 'This answer was not accepted.');
+  else problem('Your answer could not be saved (' + (r.body.error || 'server error') + '). Please check your connection and try again.', () => reply(body));
+  return r;
+}
+
+function showInlineError(text) {
+  const box = main.querySelector('.error') || main.appendChild(el('p', { class: 'error' }));
+  box.textContent = text;
+}
+
+async function poll() {
+  const r = await request('GET', 'screen');
+  if (r.status === 200) show(r.body);
+  else problem('The study server cannot be reached. Please check your connection.', poll);
+}
+
+function clear() {
+  timers.forEach((t) => clearInterval(t));
+  timers = [];
+  if (keyHandler) document.removeEventListener('keydown', keyHandler);
+  keyHandler = null;
+  if (resizeHandler) removeEventListener('resize', resizeHandler);
+  resizeHandler = null;
+  document.getElementById('toosmall').hidden = true;
+  main.replaceChildren();
+}
+
+function onKey(f) { keyHandler = f; document.addEventListener('keydown', f); }
+
+function show(screen) {
+  if (current && screen.seq === current.seq && screen.kind === current.kind && screen.kind !== 'wait') return;
+  clear();
+  current = screen;
+  const views = { message, consent, form, trial, feedback, break: pause, end, error: failed, wait };
+  (views[screen.kind] || wait)(screen);
+}
+
+function wait() {
+  main.append(el('p', { class: 'muted' }, 'Please wait…'));
+  timers.push(setTimeout(poll, 250));
+}
+
+function paragraphs(text) { return el('p', { class: 'text' }, text); }
+
+function message(s) {
+  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue');
+  main.append(el('h1', {}, s.title), paragraphs(s.text), go);
+  onKey((e) => { if (e.key === ' ' || e.key === 'Enter') { e.preventDefault(); go.click(); } });
+}
+
+function consent(s) {
+  main.append(el('h1', {}, s.title), paragraphs(s.text),
+    el('button', { type: 'button', id: 'accept', onclick: () => reply({ type: 'consent', accepted: true }) }, s.accept),
+    el('button', { type: 'button', id: 'decline', onclick: () => reply({ type: 'consent', accepted: false }) }, s.decline));
+}
+
+function fieldInput(f, i) {
+  const name = 'f' + i;
+  if (f.kind === 'likert' || f.kind === 'choice') {
+    const options = f.kind === 'likert' ? Array.from({ length: f.points }, (_, k) => String(k + 1)) : f.options;
+    const box = el('div', { role: 'radiogroup' });
+    if (f.kind === 'likert') box.append(el('span', { class: 'muted' }, f.low + ' '));
+    options.forEach((o) => box.append(el('label', {}, el('input', { type: 'radio', name, value: o }), ' ' + o)));
+    if (f.kind === 'likert') box.append(el('span', { class: 'muted' }, ' ' + f.high));
+    return [box, () => (main.querySelector('input[name=' + name + ']:checked') || { value: '' }).value];
+  }
+  const input = el('input', { type: f.kind === 'number' ? 'number' : 'text', name, step: f.integer ? '1' : 'any' });
+  return [input, () => input.value.trim()];
+}
+
+function form(s) {
+  const getters = [];
+  main.append(el('h1', {}, s.title));
+  s.fields.forEach((f, i) => {
+    const [input, get] = fieldInput(f, i);
+    getters.push(get);
+    main.append(el('div', { class: 'field' }, el('p', {}, f.text + (f.required ? '' : ' (optional)')), input));
+  });
+  main.append(el('button', { type: 'button', id: 'submit', onclick: () => reply({ type: 'form', values: getters.map((g) => g()) }) }, 'Continue'));
+}
+
+// The picture at its rendered size in device pixels; a warning when the window is too small.
+function picture(image, src) {
+  const img = el('img', { src, alt: 'stimulus', draggable: 'false' });
+  img.style.width = image.width / devicePixelRatio + 'px';
+  img.style.height = image.height / devicePixelRatio + 'px';
+  const fits = () => {
+    const small = innerWidth < image.width / devicePixelRatio + 40 || innerHeight < image.height / devicePixelRatio + 160;
+    document.getElementById('needed').textContent = Math.ceil(image.width / devicePixelRatio + 40) + ' × ' + Math.ceil(image.height / devicePixelRatio + 160);
+    document.getElementById('toosmall').hidden = !small;
+  };
+  fits();
+  resizeHandler = fits;
+  addEventListener('resize', fits);
+  return img;
+}
+
+// Resolves with the time of the first frame painted with the decoded image (two animation frames).
+function painted(img) {
+  return img.decode().catch(() => {}).then(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
+}
+
+function answerControls(s, stage, submit) {
+  const box = el('div', {});
+  const kind = s.answer_kind;
+  if (kind === 'layer-number' || kind === 'count') {
+    const input = el('input', { type: 'number', id: 'answer', min: kind === 'count' ? '0' : '1', step: '1' });
+    const send = (e) => { if (/^\d+$/.test(input.value.trim())) submit(parseInt(input.value, 10), e); else showInlineError('Please type a whole number.'); };
+    input.addEventListener('keydown', (e) => { if (e.key === 'Enter') send(e); });
+    box.append(input, el('button', { type: 'button', id: 'submit', onclick: send }, 'Submit'));
+    setTimeout(() => input.focus(), 0);
+  } else if (kind === 'label' || kind === 'label-set') {
+    const chosen = new Set();
+    s.labels.forEach((l) => {
+      const hit = el('button', { type: 'button', class: 'hit', 'data-label': l.label, title: l.label });
+      hit.style.left = l.x / devicePixelRatio + 'px';
+      hit.style.top = l.y / devicePixelRatio + 'px';
+      const button = el('button', { type: 'button', class: 'label', 'data-label': l.label }, l.label);
+      const pick = (e) => {
+        if (kind === 'label') return submit(l.label, e);
+        if (chosen.has(l.label)) chosen.delete(l.label); else chosen.add(l.label);
+        hit.classList.toggle('selected', chosen.has(l.label));
+        button.classList.toggle('selected', chosen.has(l.label));
+      };
+      hit.addEventListener('click', pick);
+      button.addEventListener('click', pick);
+      stage.append(hit);
+      box.append(button);
+    });
+    if (kind === 'label-set') box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(Array.from(chosen), e) }, 'Done'));
+  } else if (kind === 'letter') {
+    s.letters.forEach((l) => box.append(el('button', { type: 'button', class: 'letter', 'data-letter': l, onclick: (e) => submit(l, e) }, l)));
+    onKey((e) => { const k = e.key.toUpperCase(); if (s.letters.includes(k)) submit(k, e); });
+  }
+  return box;
+}
+
+function floorPlan(s, submit) {
+  const img = el('img', { src: api('image/' + s.floor_plan.sha256 + '.png'), alt: 'floor plan', id: 'floor-plan', draggable: 'false' });
+  img.style.width = s.floor_plan.width / devicePixelRatio + 'px';
+  img.addEventListener('click', (e) => {
+    const r = img.getBoundingClientRect();
+    submit({ x: (e.clientX - r.left) * s.floor_plan.width / r.width, y: (e.clientY - r.top) * s.floor_plan.height / r.height }, e);
+  });
+  return el('div', { class: 'plan' }, el('p', { class: 'muted' }, 'Click the place on the floor plan:'), img);
+}
+
+// Orbit trials online: drag through the pre-rendered views (every change is logged).
+function turntable(s, stage, img) {
+  const t = s.turntable;
+  let a = t.start[0], e = t.start[1], dragging = null;
+  const src = (ai, ei) => api('image/' + t.views[ei * t.azimuths + ai].sha256 + '.png');
+  t.views.forEach((v) => { new Image().src = api('image/' + v.sha256 + '.png'); });
+  stage.classList.add('turntable');
+  const perStep = Math.max(4, 360 / t.azimuths);
+  stage.addEventListener('pointerdown', (ev) => { dragging = { x: ev.clientX, y: ev.clientY, a, e }; stage.setPointerCapture(ev.pointerId); });
+  stage.addEventListener('pointerup', () => { dragging = null; });
+  stage.addEventListener('pointermove', (ev) => {
+    if (!dragging) return;
+    const na = ((dragging.a + Math.round((ev.clientX - dragging.x) / perStep)) % t.azimuths + t.azimuths) % t.azimuths;
+    const ne = Math.min(t.elevations - 1, Math.max(0, dragging.e + Math.round((dragging.y - ev.clientY) / (perStep * 2))));
+    if (na === a && ne === e) return;
+    a = na; e = ne;
+    img.src = src(a, e);
+    reply({ type: 'view', azimuth: a, elevation: e, t_ms: performance.now() });
+  });
+  return src(a, e);
+}
+
+function trial(s) {
+  let onset = null, done = false;
+  const submit = (answer, ev) => {
+    if (done || onset === null) return;
+    done = true;
+    const at = ev && ev.timeStamp ? ev.timeStamp : performance.now();
+    reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset) });
+  };
+  const stage = el('div', { class: 'stage', id: 'stage' });
+  const img = picture(s.image, api('image/' + s.image.sha256 + '.png'));
+  if (s.turntable) img.src = turntable(s, stage, img);
+  stage.append(img);
+  const clock = el('span', { class: 'countdown', id: 'countdown' }, '');
+  main.append(el('div', { class: 'top' }, el('h1', {}, s.question), el('span', { class: 'muted' }, (s.phase === 'training' ? 'training ' : 'trial ') + s.index + '/' + s.total), clock));
+  const row = el('div', { class: 'row' }, stage);
+  if (s.floor_plan) row.append(floorPlan(s, submit));
+  main.append(row, el('p', { class: 'muted' }, s.format), answerControls(s, stage, submit));
+  painted(img).then((t) => {
+    if (current !== s) return;
+    onset = t;
+    reply({ type: 'onset', painted_ms: t });
+    const tick = () => {
+      const left = Math.max(0, s.limit_s - (performance.now() - onset) / 1000);
+      clock.textContent = Math.floor(left / 60) + ':' + String(Math.floor(left % 60)).padStart(2, '0');
+      if (left <= 0 && !done) { done = true; reply({ type: 'timeout' }); }
+    };
+    tick();
+    timers.push(setInterval(tick, 250));
+  });
+}
+
+function feedback(s) {
+  main.append(el('h1', {}, s.correct ? 'Correct' : 'Not quite'), paragraphs('The right answer: ' + s.right_answer),
+    picture(s.image, api('image/' + s.image.sha256 + '.png')),
+    el('p', {}, el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue')));
+}
+
+function pause(s) {
+  const go = el('button', { type: 'button', id: 'continue', disabled: 'disabled', onclick: () => reply({ type: 'continue' }) }, 'Continue');
+  const left = el('span', { class: 'muted' }, '');
+  const until = performance.now() + s.min_seconds * 1000;
+  const tick = () => {
+    const rest = Math.ceil((until - performance.now()) / 1000);
+    left.textContent = rest > 0 ? ' (in ' + rest + ' s)' : '';
+    if (rest <= 0) go.removeAttribute('disabled');
+  };
+  tick();
+  timers.push(setInterval(tick, 250));
+  main.append(el('h1', {}, 'Break'), paragraphs(s.text), go, left);
+}
+
+function end(s) {
+  main.append(el('h1', {}, s.title), paragraphs(s.text));
+  if (s.completion_code) main.append(el('p', {}, 'Your completion code: ', el('strong', { id: 'completion-code' }, s.completion_code)));
+  if (s.completion_url) main.append(el('p', {}, el('a', { href: s.completion_url, id: 'completion-link' }, 'Return to the study platform to confirm completion')));
+}
+
+function failed(s) {
+  main.append(el('h1', {}, 'A problem on the server'), paragraphs(s.text));
+  if (s.retry) main.append(el('button', { type: 'button', id: 'retry', onclick: () => start() }, 'Try again'));
+}
+
+// The refresh rate, estimated from the median interval of 30 animation frames.
+function refreshRate() {
+  return new Promise((resolve) => {
+    const times = [];
+    const step = (t) => { times.push(t); if (times.length < 31) requestAnimationFrame(step); else {
+      const d = times.slice(1).map((x, i) => x - times[i]).sort((x, y) => x - y);
+      resolve(Math.round(1000 / d[15]));
+    } };
+    requestAnimationFrame(step);
+  });
+}
+
+// The credit-card method ("virtual chinrest"): a card is 8.56 cm wide.
+function calibrate() {
+  const stored = sessionStorage.getItem('tlab-px-per-cm');
+  if (stored) return Promise.resolve(parseFloat(stored));
+  return new Promise((resolve) => {
+    clear();
+    const card = el('div', { class: 'card', id: 'card' });
+    const slider = el('input', { type: 'range', min: '150', max: '900', value: '320', id: 'card-size' });
+    const size = () => { card.style.width = slider.value + 'px'; card.style.height = slider.value * 53.98 / 85.6 + 'px'; };
+    slider.addEventListener('input', size);
+    size();
+    main.append(el('h1', {}, 'Screen size'), paragraphs('Hold a credit card (or any card of that size) against the screen and move the slider until the rectangle is exactly as wide as the card.'),
+      slider, card, el('p', {}, el('button', { type: 'button', id: 'calibrated', onclick: () => {
+        const v = parseFloat(slider.value) * devicePixelRatio / 8.56;  // device pixels per cm
+        sessionStorage.setItem('tlab-px-per-cm', String(v));
+        resolve(v);
+      } }, 'Done')));
+  });
+}
+
+async function start() {
+  current = null;
+  const config = await request('GET', 'config');
+  if (config.status !== 200) return problem('This session link is not valid or the server cannot be reached.', start);
+  document.title = config.body.title;
+  const display = {
+    screen_width: screen.width, screen_height: screen.height, window_width: innerWidth, window_height: innerHeight,
+    device_pixel_ratio: devicePixelRatio, user_agent: navigator.userAgent.slice(0, 300), refresh_hz: await refreshRate(),
+  };
+  if (config.body.calibrate) display.px_per_cm = await calibrate();
+  const r = await request('POST', 'display', display);
+  if (r.status === 200) show(r.body); else problem(r.body.error || 'The study could not start.', start);
+}
+
+setInterval(() => request('GET', 'screen').then((r) => { if (r.status === 200 && current && r.body.seq > current.seq) show(r.body); }), 30000);
+start();
