@@ -1,5 +1,7 @@
 #include "study/serve/study_server.hpp"
 
+#include <sys/socket.h>
+
 #include <cstdio>
 #include <regex>
 #include <stdexcept>
@@ -58,6 +60,12 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
   const int threads = options_.threads;
   http_.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
   http_.set_payload_max_length(options_.maxBodyBytes);
+  // SO_REUSEADDR (a restarted server gets its port back at once) but not httplib's default
+  // SO_REUSEPORT, which would let a second server bind the same port and split the participants.
+  http_.set_socket_options([](int sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   http_.set_read_timeout(10, 0);
   http_.set_write_timeout(10, 0);
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
@@ -187,17 +195,18 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
   const std::string id = req.has_param(parameter.c_str()) ? req.get_param_value(parameter.c_str()) : "";
   if (!validParticipantId(id))
     return page(400, "Link incomplete", "The link is missing the participant id (" + parameter + "=...: 1 to 128 letters, digits or _.@-).");
+  // The store says who may continue (also for a session of this server that has ended).
+  const auto existing = study_.store.findParticipant(e.id, id);
+  if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
+  if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
+  if (existing && existing->status == "dropped")
+    return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
   std::shared_ptr<ParticipantSession> s;
   {
     std::lock_guard lock(mutex_);
     if (const auto it = byParticipant_.find(id); it != byParticipant_.end()) s = it->second;
   }
   if (!s) {
-    const auto existing = study_.store.findParticipant(e.id, id);
-    if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
-    if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
-    if (existing && existing->status == "dropped")
-      return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
     json arrival{{"participant", id}, {"user_agent", req.get_header_value("User-Agent").substr(0, 400)}};
     for (const std::string& p : {e.online.studyParameter, e.online.sessionParameter})
       if (!p.empty() && req.has_param(p.c_str())) arrival[p] = req.get_param_value(p.c_str()).substr(0, 200);
