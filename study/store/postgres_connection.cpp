@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <mutex>
 #include <random>
 #include <sstream>
 #include <thread>
@@ -152,8 +153,9 @@ void PostgresConnection::read(const std::function<void(PgTransaction&)>& work) {
   }
 }
 
-// Over 60 lines: each libpqxx failure is told apart here, once, with what it means for the study.
+// Each libpqxx failure is told apart here, once, with what it means for the study.
 void PostgresConnection::run(const std::string& what, bool write, const std::function<void(PgTransaction&)>& work) {
+  const std::lock_guard<std::mutex> one(calls_);  // one connection: the calls of threads sharing a store take turns
   const std::string lost = what.empty() ? "" : ": " + what + " was not stored; the next call connects again";
   for (int attempt = 0;; ++attempt) {
     if (!connection_ || !connection_->is_open()) {

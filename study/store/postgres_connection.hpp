@@ -2,10 +2,12 @@
 // PostgresConnection: the one libpq connection (libpqxx) of a PostgresStore, and the one place that
 // turns libpqxx's exceptions into StoreError lines. Every call runs as one transaction; a lost
 // connection fails that call ("... was not stored") and the next call connects again, so a study
-// goes on once the server is back. Readers connect with every transaction read-only.
+// goes on once the server is back. Readers connect with every transaction read-only. Threads may
+// share one connection (their calls take turns); a server thread that wants its own opens a store.
 // Only study/store/postgres_*.cpp include this header (libpqxx stays out of the rest of tlab).
 #include <functional>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -82,6 +84,7 @@ class PostgresConnection {
   std::string location_;
   OpenMode mode_;
   std::unique_ptr<pqxx::connection> connection_;
+  std::mutex calls_;
 };
 
 }  // namespace tlab::study

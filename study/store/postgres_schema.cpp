@@ -106,6 +106,9 @@ void check(const Found& found, const std::string& location, bool readOnly) {
   if (found.foreign)
     throw StoreError(location + ": not a tlab study database (it has other tables: " + found.tables +
                      "); use an empty database for a study; nothing was changed");
+  if (found.version > 0 && found.version < kPostgresSchemaVersion)  // none yet: version 4 is the first on PostgreSQL
+    throw StoreError(location + ": schema version " + std::to_string(found.version) + " has no migration to version " +
+                     std::to_string(kPostgresSchemaVersion) + " on PostgreSQL; nothing was changed");
   if (readOnly && found.version == 0) throw StoreError(location + ": an empty database: no experiment has been run into it yet");
 }
 

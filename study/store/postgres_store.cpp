@@ -51,8 +51,7 @@ int nextFreeSlotIn(PgTransaction& t, const std::string& experimentId) {
 ExperimentVersion ensureVersionIn(PgTransaction& t, const std::string& location, const Experiment& e, const std::string& tlabVersion) {
   const std::string hash = core::sha256Hex(e.text);
   const auto all = versionsIn(t, e.id);
-  for (const auto& v : all)
-    if (v.sha256 == hash) return v;
+  if (auto known = versionWithText(all, e.text)) return *known;
   if (!t.exec(store_sql::kVersionOfText, pgParams(hash)).empty())  // the id is part of the text: cannot happen
     throw StoreError(location + ": holds this file's text under another experiment id");
   const int version = int(all.size()) + 1;
@@ -114,18 +113,9 @@ std::vector<ExperimentVersion> PostgresStore::versions(const std::string& experi
   return out;
 }
 
-std::optional<ExperimentVersion> PostgresStore::findVersion(const Experiment& e) {
-  const std::string hash = core::sha256Hex(e.text);
-  for (auto& v : versions(e.id))
-    if (v.sha256 == hash) return v;
-  return std::nullopt;
-}
+std::optional<ExperimentVersion> PostgresStore::findVersion(const Experiment& e) { return versionWithText(versions(e.id), e.text); }
 
-std::optional<std::int64_t> PostgresStore::findExperiment(const std::string& experimentId) {
-  const auto all = versions(experimentId);
-  if (all.empty()) return std::nullopt;
-  return all.back().row;
-}
+std::optional<std::int64_t> PostgresStore::findExperiment(const std::string& experimentId) { return newestVersionRow(versions(experimentId)); }
 
 int PostgresStore::sessionCount(std::int64_t versionRow) {
   std::int64_t count = 0;

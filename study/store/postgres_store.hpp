@@ -4,7 +4,8 @@
 // tables as SqliteStore (study/store/postgres_schema.cpp). Every write is one transaction; slots go
 // to one participant each (enrolment holds a per-experiment lock), a trial takes one response
 // (a unique constraint), and a session of a live station is refused (SessionConflict). A lost
-// connection fails the call that needed it and the next call connects again.
+// connection fails the call that needed it and the next call connects again. Threads may share a
+// store (calls take turns on its one connection); for calls in parallel, open a store per thread.
 #include <memory>
 
 #include "study/store/store.hpp"

@@ -170,12 +170,7 @@ std::vector<ExperimentVersion> SqliteStore::versions(const std::string& experime
   return out;
 }
 
-std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) {
-  const std::string hash = core::sha256Hex(e.text);
-  for (auto& v : versions(e.id))
-    if (v.sha256 == hash) return v;
-  return std::nullopt;
-}
+std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) { return versionWithText(versions(e.id), e.text); }
 
 std::vector<std::string> SqliteStore::experimentIds() {
   Statement s = db_->prepare(store_sql::kExperimentIds);
@@ -191,14 +186,10 @@ int SqliteStore::sessionCount(std::int64_t versionRow) {
   return int(count.integer(0));
 }
 
-std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& experimentId) {
-  const auto all = versions(experimentId);
-  if (all.empty()) return std::nullopt;
-  return all.back().row;
-}
+std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& experimentId) { return newestVersionRow(versions(experimentId)); }
 
 ExperimentVersion SqliteStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
-  if (auto known = findVersion(e)) return *known;
+  if (auto known = findVersion(e)) return *known;  // the text's own version
   const std::string hash = core::sha256Hex(e.text);
   Statement other = db_->prepare(store_sql::kVersionOfText);
   other.bind(1, hash);

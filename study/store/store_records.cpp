@@ -2,7 +2,21 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/sha256.hpp"
+
 namespace tlab::study {
+
+std::optional<ExperimentVersion> versionWithText(const std::vector<ExperimentVersion>& versions, const std::string& text) {
+  const std::string hash = core::sha256Hex(text);
+  for (const auto& v : versions)
+    if (v.sha256 == hash) return v;
+  return std::nullopt;
+}
+
+std::optional<std::int64_t> newestVersionRow(const std::vector<ExperimentVersion>& versions) {
+  if (versions.empty()) return std::nullopt;
+  return versions.back().row;
+}
 
 std::string blockOrderText(const Design& design, const SlotDesign& slot) {
   std::string text;

@@ -1,13 +1,19 @@
 #pragma once
-// What the writes of both stores (SqliteStore, PostgresStore) share: the texts they store for a
-// slot's block order and an onset's detail, and the messages of their refusals, so a study reads
-// the same whichever store it runs on.
+// What both stores (SqliteStore, PostgresStore) share around their statements: finding a version
+// by its text, the texts they store for a slot's block order and an onset's detail, and the
+// messages of their refusals, so a study reads the same whichever store it runs on.
 #include <cstdint>
 #include <string>
 
 #include "study/design/counterbalancing.hpp"
+#include "study/store/store.hpp"
 
 namespace tlab::study {
+
+// The version among `versions` whose file text is `text` (by sha256), if any.
+std::optional<ExperimentVersion> versionWithText(const std::vector<ExperimentVersion>& versions, const std::string& text);
+// The row of the newest of `versions` (oldest first), if any.
+std::optional<std::int64_t> newestVersionRow(const std::vector<ExperimentVersion>& versions);
 
 // "block A | block B", the block order of a slot as stored in assignments.block_order.
 std::string blockOrderText(const Design& design, const SlotDesign& slot);
