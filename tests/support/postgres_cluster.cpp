@@ -34,9 +34,25 @@ std::string postgresBinDir() {
                            "(it installs Debian's postgresql package)");
 }
 
+// Clusters of test processes that were killed (their destructor never ran): stopped and removed,
+// so a CI machine does not collect servers.
+void removeOrphanedClusters(const std::string& bin) {
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::temp_directory_path(), ec)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("tlabpg-", 0) != 0) continue;
+    const std::string pid = name.substr(7, name.find('-', 7) - 7);
+    if (pid.empty() || pid.find_first_not_of("0123456789") != std::string::npos || std::filesystem::exists("/proc/" + pid)) continue;
+    const std::string user = ::geteuid() == 0 ? "runuser -u nobody -- " : "";
+    runCommand(user + quoted(bin + "/pg_ctl") + " -D " + quoted((entry.path() / "data").string()) + " -m immediate stop >/dev/null 2>&1");
+    std::filesystem::remove_all(entry.path(), ec);
+  }
+}
+
 }  // namespace
 
 PostgresCluster::PostgresCluster() : bin_(postgresBinDir()) {
+  removeOrphanedClusters(bin_);
   static std::atomic<int> clusters{0};
   const int n = clusters++;
   // Short: a Unix socket path must stay under 108 bytes.
