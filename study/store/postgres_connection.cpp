@@ -2,6 +2,7 @@
 // them, reconnection after a lost connection, and libpqxx's errors as one StoreError line.
 #include "study/store/postgres_connection.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <mutex>
@@ -178,6 +179,10 @@ void PostgresConnection::run(const std::string& what, bool write, const std::fun
         tx.commit();
       }
       return;
+    } catch (const pqxx::statement_completion_unknown& e) {  // a transaction_rollback that must not be run again
+      connection_.reset();
+      throw StoreError(location_ + ": PostgreSQL cannot tell whether " + what + " was stored (" + oneLine(e.what(), url_, location_) +
+                       "); check it with tlab export");
     } catch (const pqxx::in_doubt_error& e) {
       connection_.reset();
       throw StoreError(location_ + ": the connection to PostgreSQL was lost while committing " + what +

@@ -2,6 +2,7 @@
 // The stores the Store contract tests run on: SQLite (a file in a fresh folder) and PostgreSQL (a
 // fresh database in this test process's throw-away cluster, tests/support/postgres_cluster.hpp).
 // peek() reads one value straight from the database, around the Store, to check what it wrote.
+#include <cctype>
 #include <filesystem>
 #include <memory>
 #include <string>
