@@ -1,11 +1,15 @@
 // End to end through `tlab` on a PostgreSQL URL (this test process's throw-away cluster): simulate,
 // export, analyze, report, design and drop take the URL; the exported CSV files equal those of the
 // same simulation into an SQLite file (columns of wall-clock time and the station left out); the
-// readers leave every table as it was; an unreachable server or a wrong user is one line, exit 1.
+// readers leave every table as it was; four stations write one new database at once; a station
+// killed inside a response transaction loses only that unacknowledged answer; an unreachable
+// server or a wrong user is one line, exit 1.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <csignal>
 #include <set>
+#include <thread>
 
 #include <nlohmann/json.hpp>
 
@@ -45,6 +49,16 @@ std::string tableChecksum(const std::string& url) {
     sql += std::string(i ? " UNION ALL " : "") + "SELECT '" + tables[i] + "' || md5(coalesce(string_agg(t::text, '|' ORDER BY t::text), '')) AS x FROM " +
            tables[i] + " t";
   return storeBackend("postgres").peek(url, sql + ") all_tables");
+}
+
+// `tlab simulate` as a station in `dir` (a URL's stimuli go to the working directory), acknowledging each answer.
+pid_t station(const std::filesystem::path& dir, const std::string& url, int first, int participants, const std::string& name,
+              const std::vector<std::string>& env = {}, bool resume = false) {
+  std::vector<std::string> args = {TLAB_EXE, "simulate", studyData("crash.toml"), "--participants", std::to_string(participants),
+                                   "--first", std::to_string(first), "--db", url, "--trials"};
+  if (resume) args.push_back("--resume");
+  return spawnProcess({"/bin/sh", "-c", "cd " + tlab::testing::quoted(dir.string()) + " && exec " + commandLine(args)},
+                      (dir / (name + ".out")).string(), (dir / (name + ".err")).string(), env);
 }
 
 void expectOneLineError(const CommandResult& r, const std::string& part) {
@@ -102,4 +116,46 @@ TEST(PostgresCli, AnUnreachableServerOrAWrongUserIsOneLine) {
   wrongUser.replace(wrongUser.find("user=tlab"), 9, "user=mallory");
   expectOneLineError(runCommand(kTlab + " simulate " + studyData("tiny.toml") + " --participants 1 --db " + tlab::testing::quoted(wrongUser)),
                      "role \"mallory\" does not exist");
+}
+
+TEST(PostgresCli, FourStationsOnOneNewDatabaseStoreEveryAcknowledgedAnswerOnce) {
+  const std::string url = sharedPostgresCluster().createDatabase("stations");
+  const auto dir = freshDir("pg_cli_stations");
+  constexpr int kEach = 10, kTrials = 12;  // crash.toml: 12 questions per participant
+  std::vector<pid_t> stations;
+  for (int s = 0; s < 4; ++s) stations.push_back(station(dir, url, 1 + kEach * s, kEach, "s" + std::to_string(s)));
+  std::set<std::pair<std::string, int>> acknowledged;
+  for (int s = 0; s < 4; ++s) {
+    EXPECT_EQ(waitProcess(stations[std::size_t(s)]), 0) << readText((dir / ("s" + std::to_string(s) + ".err")).string());
+    for (const auto& a : parseAcks(readText((dir / ("s" + std::to_string(s) + ".out")).string()))) acknowledged.insert({a.participant, a.sequence});
+  }
+  auto& db = storeBackend("postgres");
+  EXPECT_EQ(acknowledged.size(), std::size_t(4 * kEach * kTrials));
+  EXPECT_EQ(db.peek(url, "SELECT count(*) FROM responses"), std::to_string(4 * kEach * kTrials));
+  EXPECT_EQ(db.peek(url, "SELECT count(DISTINCT slot) || ' ' || max(slot) FROM assignments"), std::to_string(4 * kEach) + " " + std::to_string(4 * kEach - 1));
+  EXPECT_EQ(db.peek(url, "SELECT count(*) FROM experiments"), "1");
+  EXPECT_EQ(db.peek(url, "SELECT count(*) FROM participants WHERE status = 'finished'"), std::to_string(4 * kEach));
+}
+
+TEST(PostgresCli, AStationKilledInsideAResponseLosesOnlyThatUnacknowledgedAnswer) {
+  const std::string url = sharedPostgresCluster().createDatabase("killed");
+  const auto dir = freshDir("pg_cli_killed");
+  // Stopped inside the 5th response transaction, after its inserts, before COMMIT; then killed.
+  const pid_t a = station(dir, url, 1, 1, "a", {"TLAB_STOP_AT=commit:5"});
+  int status = 0;
+  ::waitpid(a, &status, WUNTRACED);
+  ASSERT_TRUE(WIFSTOPPED(status)) << readText((dir / "a.err").string());
+  ::kill(a, SIGKILL);
+  waitProcess(a);
+  const auto acks = parseAcks(readText((dir / "a.out").string()));
+  EXPECT_EQ(acks.size(), 4u);
+  auto& db = storeBackend("postgres");
+  // The server notices the dead connection and rolls its transaction back.
+  std::string stored;
+  for (int i = 0; i < 100 && (stored = db.peek(url, "SELECT count(*) FROM responses")) != "4"; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(stored, "4");
+  const pid_t b = station(dir, url, 1, 1, "b", {}, true);  // --resume: the dead station's session is resumed
+  EXPECT_EQ(waitProcess(b), 0) << readText((dir / "b.err").string());
+  EXPECT_EQ(db.peek(url, "SELECT count(*) FROM responses"), "12");
+  EXPECT_EQ(db.peek(url, "SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by IS NOT NULL"), "1");
 }
