@@ -92,7 +92,7 @@ void runDatabase(const ReportOptions& o) {
 }
 
 void run(const ReportOptions& o) {
-  if (std::filesystem::path(o.file).extension() == ".db") return runDatabase(o);
+  if (std::filesystem::path(o.file).extension() == ".db" || study::isServerLocation(o.file)) return runDatabase(o);
   if (o.dvs.empty()) throw an::AnalysisError("--dv is required for a CSV file");
   if (!o.within.empty() && o.subject.empty())
     throw an::AnalysisError("--within needs --subject (the column naming the participant)");
@@ -112,7 +112,7 @@ void addReportCommand(CLI::App& app) {
   auto* cmd = app.add_subcommand("report", "Write an HTML (and Markdown) analysis report for a long-format CSV file or a study database");
   const auto options = std::make_shared<ReportOptions>();
   ReportOptions& o = *options;
-  cmd->add_option("file", o.file, "Long-format CSV file (header row), or a study database (.db)")->required();
+  cmd->add_option("file", o.file, "Long-format CSV file (header row), or a study database (.db file or postgresql:// URL)")->required();
   cmd->add_option("--dv", o.dvs, "Dependent variable column(s), comma-separated (CSV files)")->delimiter(',');
   cmd->add_option("--between", o.between, "Between-subject factor column(s)")->delimiter(',');
   cmd->add_option("--within", o.within, "Within-subject factor column(s)")->delimiter(',');

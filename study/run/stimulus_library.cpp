@@ -51,6 +51,16 @@ Canvas markQuestion(const core::Image& picture, const tasks::Question& question,
 }
 
 std::string stimulusDirectoryFor(const std::string& databasePath) {
+  // A server URL (postgresql://user@host/NAME?...): NAME-stimuli in the working directory, as for
+  // a database file NAME.db there (a server has no folder next to which the pictures could lie).
+  const auto scheme = databasePath.find("://");
+  if (databasePath.rfind("postgres", 0) == 0 && scheme != std::string::npos) {
+    const auto slash = databasePath.find('/', scheme + 3);
+    std::string name = slash == std::string::npos ? "" : databasePath.substr(slash + 1, databasePath.find_first_of("?#", slash + 1) - slash - 1);
+    for (auto& c : name)
+      if (!((c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' || c == '_' || c == '.')) c = '_';
+    return (name.empty() ? std::string("postgresql") : name) + "-stimuli";
+  }
   const std::filesystem::path db(databasePath);
   return (db.parent_path() / (db.stem().string() + "-stimuli")).string();
 }

@@ -6,27 +6,23 @@
 #include <chrono>
 #include <csignal>
 #include <ctime>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <thread>
 
-#include <nlohmann/json.hpp>
 #include <sqlite3.h>
 #include <unistd.h>
 
 #include "core/sha256.hpp"
 #include "study/run/fault_point.hpp"
 #include "study/store/schema_migrations.hpp"
+#include "study/store/store_records.hpp"
+#include "study/store/store_sql.hpp"
 
 namespace tlab::study {
 
 namespace {
-
-std::string blockOrderText(const Design& design, const SlotDesign& slot) {
-  std::string text;
-  for (std::size_t b = 0; b < slot.blocks.size(); ++b) text += (b ? " | " : "") + design.describe(slot.blocks[b]);
-  return text;
-}
 
 std::string hostName() {
   char host[256] = {};
@@ -167,70 +163,54 @@ void SqliteStore::checkIntegrity() {
 }
 
 std::vector<ExperimentVersion> SqliteStore::versions(const std::string& experimentId) {
-  Statement s = db_->prepare(
-      "SELECT id, experiment_id, version, sha256, file_path, file_text FROM experiments WHERE experiment_id = ?1 ORDER BY version, id");
+  Statement s = db_->prepare(store_sql::kVersions);
   s.bind(1, experimentId);
   std::vector<ExperimentVersion> out;
   while (s.step()) out.push_back({s.integer(0), s.text(1), int(s.integer(2)), s.text(3), s.text(4), s.text(5)});
   return out;
 }
 
-std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) {
-  const std::string hash = core::sha256Hex(e.text);
-  for (auto& v : versions(e.id))
-    if (v.sha256 == hash) return v;
-  return std::nullopt;
-}
+std::optional<ExperimentVersion> SqliteStore::findVersion(const Experiment& e) { return versionWithText(versions(e.id), e.text); }
 
 std::vector<std::string> SqliteStore::experimentIds() {
-  Statement s = db_->prepare("SELECT experiment_id FROM experiments GROUP BY experiment_id ORDER BY min(id)");
+  Statement s = db_->prepare(store_sql::kExperimentIds);
   std::vector<std::string> ids;
   while (s.step()) ids.push_back(s.text(0));
   return ids;
 }
 
 int SqliteStore::sessionCount(std::int64_t versionRow) {
-  Statement count = db_->prepare("SELECT count(*) FROM sessions WHERE experiment = ?1");
+  Statement count = db_->prepare(store_sql::kSessionCount);
   count.bind(1, versionRow);
   count.step();
   return int(count.integer(0));
 }
 
-std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& experimentId) {
-  const auto all = versions(experimentId);
-  if (all.empty()) return std::nullopt;
-  return all.back().row;
-}
+std::optional<std::int64_t> SqliteStore::findExperiment(const std::string& experimentId) { return newestVersionRow(versions(experimentId)); }
 
 ExperimentVersion SqliteStore::ensureVersion(const Experiment& e, const std::string& tlabVersion) {
-  if (auto known = findVersion(e)) return *known;
+  if (auto known = findVersion(e)) return *known;  // the text's own version
   const std::string hash = core::sha256Hex(e.text);
-  Statement other = db_->prepare("SELECT id FROM experiments WHERE sha256 = ?1");
+  Statement other = db_->prepare(store_sql::kVersionOfText);
   other.bind(1, hash);
   if (other.step())  // the same text under another id cannot happen: the id is part of the text
     throw StoreError(path_ + ": holds this file's text under another experiment id");
   const int version = int(versions(e.id).size()) + 1;
-  Statement insert = db_->prepare(
-      "INSERT INTO experiments (experiment_id, file_path, file_text, sha256, tlab_version, created_at, version) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7)");
+  Statement insert = db_->prepare(store_sql::kInsertVersion);
   insert.bind(1, e.id).bind(2, e.path).bind(3, e.text).bind(4, hash).bind(5, tlabVersion).bind(6, utcTimestamp()).bind(7, version);
   insert.run();
   return {db_->lastInsertId(), e.id, version, hash, e.path, e.text};
 }
 
 std::optional<ParticipantRecord> SqliteStore::findParticipant(const std::string& experimentId, const std::string& participant) {
-  Statement s = db_->prepare(
-      "SELECT p.id, p.experiment, p.participant, p.slot, p.status FROM participants p JOIN experiments x ON x.id = p.experiment "
-      "WHERE x.experiment_id = ?1 AND p.participant = ?2");
+  Statement s = db_->prepare(store_sql::kFindParticipant);
   s.bind(1, experimentId).bind(2, participant);
   if (!s.step()) return std::nullopt;
   return ParticipantRecord{s.integer(0), s.integer(1), s.text(2), int(s.integer(3)), s.text(4)};
 }
 
 int SqliteStore::nextFreeSlot(const std::string& experimentId) {
-  Statement taken = db_->prepare(
-      "SELECT DISTINCT a.slot FROM assignments a JOIN experiments x ON x.id = a.experiment "
-      "WHERE x.experiment_id = ?1 AND a.status != 'dropped' ORDER BY a.slot");
+  Statement taken = db_->prepare(store_sql::kTakenSlots);
   taken.bind(1, experimentId);
   int slot = 0;
   while (taken.step() && taken.integer(0) == slot) ++slot;
@@ -241,19 +221,15 @@ std::optional<ParticipantRecord> SqliteStore::enrol(const Experiment& e, const s
                                                      int slot, const Design& design, const std::vector<TrialRecord>& trials) {
   Transaction t(*db_);
   if (findParticipant(e.id, participant))
-    throw StoreError(path_ + ": participant '" + participant + "' was enrolled by another station a moment ago; continue with --resume "
-                     "once that station has stopped, or use another participant id");
+    throw StoreError(enrolledElsewhereMessage(path_, participant));
   if (nextFreeSlot(e.id) != slot) return std::nullopt;
   const ExperimentVersion version = ensureVersion(e, tlabVersion);
-  Statement insert = db_->prepare(
-      "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, ?3, 'active', ?4)");
+  Statement insert = db_->prepare(store_sql::kInsertParticipant);
   insert.bind(1, version.row).bind(2, participant).bind(3, slot).bind(4, utcTimestamp());
   insert.run();
   const std::int64_t id = db_->lastInsertId();
   const SlotDesign d = design.slot(slot);
-  Statement assign = db_->prepare(
-      "INSERT INTO assignments (experiment, slot, participant, design_row, between_cell, block_order, status, assigned_at) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, 'active', ?7)");
+  Statement assign = db_->prepare(store_sql::kInsertAssignment);
   assign.bind(1, version.row).bind(2, slot).bind(3, id).bind(4, d.row).bind(5, d.betweenCell).bind(6, blockOrderText(design, d));
   assign.bind(7, utcTimestamp());
   assign.run();
@@ -267,27 +243,24 @@ void SqliteStore::dropParticipant(const std::string& experimentId, const std::st
   if (!p) throw StoreError(path_ + ": no participant '" + participant + "' in this experiment");
   if (p->status == "dropped") throw StoreError("participant '" + participant + "' has already dropped out");
   Transaction t(*db_);
-  Statement a = db_->prepare("UPDATE participants SET status = 'dropped' WHERE id = ?1");
+  Statement a = db_->prepare(store_sql::kDropParticipant);
   a.bind(1, p->id).run();
-  Statement b = db_->prepare("UPDATE assignments SET status = 'dropped', note = ?2 WHERE participant = ?1");
+  Statement b = db_->prepare(store_sql::kDropAssignment);
   b.bind(1, p->id).bind(2, reason).run();
   t.commit();
 }
 
 void SqliteStore::finishParticipant(std::int64_t participantId) {
   Transaction t(*db_);
-  Statement a = db_->prepare("UPDATE participants SET status = 'finished', finished_at = ?2 WHERE id = ?1");
+  Statement a = db_->prepare(store_sql::kFinishParticipant);
   a.bind(1, participantId).bind(2, utcTimestamp()).run();
-  Statement b = db_->prepare("UPDATE assignments SET status = 'finished' WHERE participant = ?1 AND status = 'active'");
+  Statement b = db_->prepare(store_sql::kFinishAssignment);
   b.bind(1, participantId).run();
   t.commit();
 }
 
 std::vector<AssignmentRecord> SqliteStore::assignments(const std::string& experimentId) {
-  Statement s = db_->prepare(
-      "SELECT a.slot, a.design_row, a.between_cell, p.participant, a.status, a.block_order FROM assignments a "
-      "JOIN participants p ON p.id = a.participant JOIN experiments x ON x.id = a.experiment WHERE x.experiment_id = ?1 "
-      "ORDER BY a.slot, a.id");
+  Statement s = db_->prepare(store_sql::kAssignments);
   s.bind(1, experimentId);
   std::vector<AssignmentRecord> out;
   while (s.step())
@@ -299,9 +272,7 @@ std::int64_t SqliteStore::startSession(std::int64_t participantId, const Experim
                                         const std::string& mode) {
   Transaction t(*db_);
   const ExperimentVersion version = ensureVersion(e, tlabVersion);
-  Statement open = db_->prepare(
-      "SELECT s.id, coalesce(s.station, ''), coalesce(s.process_start, ''), s.started_at, p.participant FROM sessions s "
-      "JOIN participants p ON p.id = s.participant WHERE s.participant = ?1 AND s.ended_at IS NULL AND s.resumed_by IS NULL");
+  Statement open = db_->prepare(store_sql::kOpenSessions);
   open.bind(1, participantId);
   std::vector<std::int64_t> interrupted;
   while (open.step()) {
@@ -310,32 +281,28 @@ std::int64_t SqliteStore::startSession(std::int64_t participantId, const Experim
       interrupted.push_back(open.integer(0));
       continue;
     }
-    throw SessionConflict(path_ + ": participant '" + open.text(4) + "' is in session " + std::to_string(open.integer(0)) +
-                          " at station " + station + " (started " + open.text(3) + (state == "unknown" ? ", another machine" : "") +
-                          "); let that session finish, or stop it and continue there with --resume");
+    throw SessionConflict(sessionConflictMessage(path_, open.text(4), open.integer(0), station, open.text(3), state));
   }
-  Statement s = db_->prepare(
-      "INSERT INTO sessions (participant, mode, started_at, station, experiment, process_start) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  Statement s = db_->prepare(store_sql::kInsertSession);
   s.bind(1, participantId).bind(2, mode).bind(3, utcTimestamp()).bind(4, stationName()).bind(5, version.row);
   s.bind(6, processStartTime()).run();
   const std::int64_t session = db_->lastInsertId();
-  Statement mark = db_->prepare("UPDATE sessions SET end_reason = 'interrupted', resumed_by = ?2 WHERE id = ?1");
+  Statement mark = db_->prepare(store_sql::kMarkInterrupted);
   for (const auto id : interrupted) mark.bind(1, id).bind(2, session).run();
   t.commit();
   return session;
 }
 
 void SqliteStore::endSession(std::int64_t session, const std::string& reason) {
-  Statement s = db_->prepare("UPDATE sessions SET ended_at = ?2, end_reason = ?3 WHERE id = ?1");
+  Statement s = db_->prepare(store_sql::kEndSession);
   s.bind(1, session).bind(2, utcTimestamp()).bind(3, reason).run();
 }
 
 void SqliteStore::insertTrials(std::int64_t participantId, const std::vector<TrialRecord>& trials) {
   Transaction t(*db_);  // inside enrol's transaction: a savepoint
-  Statement s = db_->prepare(
-      "INSERT INTO trials (participant, sequence, phase, block, condition, levels_json, task_id, task, trial, question, "
-      "questions_in_trial, stimulus_key, probe_seed, question_json, answer_kind, truth_json, time_limit, trial_time_limit, "
-      "stimulus_path, stimulus_sha256) VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19, ?20)");
+  std::string sql = std::string("INSERT INTO trials (") + store_sql::kTrialColumns + ") VALUES (";
+  for (int c = 1; c <= store_sql::kTrialColumnCount; ++c) sql += (c > 1 ? ", ?" : "?") + std::to_string(c);
+  Statement s = db_->prepare(sql + ")");
   for (const auto& r : trials) {
     s.bind(1, participantId).bind(2, r.sequence).bind(3, r.phase).bind(4, r.block).bind(5, r.condition).bind(6, r.levelsJson);
     s.bind(7, r.taskId).bind(8, r.task).bind(9, r.trial).bind(10, r.question).bind(11, r.questionsInTrial);
@@ -348,11 +315,7 @@ void SqliteStore::insertTrials(std::int64_t participantId, const std::vector<Tri
 }
 
 std::vector<TrialRecord> SqliteStore::trials(std::int64_t participantId) {
-  Statement s = db_->prepare(
-      "SELECT t.id, sequence, phase, block, condition, levels_json, task_id, task, t.trial, question, questions_in_trial, "
-      "stimulus_key, probe_seed, question_json, answer_kind, truth_json, time_limit, trial_time_limit, stimulus_path, "
-      "stimulus_sha256, r.id IS NOT NULL FROM trials t LEFT JOIN responses r ON r.trial = t.id WHERE t.participant = ?1 "
-      "ORDER BY sequence");
+  Statement s = db_->prepare(store_sql::kTrials);
   s.bind(1, participantId);
   std::vector<TrialRecord> out;
   while (s.step()) {
@@ -384,9 +347,7 @@ std::vector<TrialRecord> SqliteStore::trials(std::int64_t participantId) {
 }
 
 std::map<std::string, double> SqliteStore::usedSeconds(std::int64_t participantId) {
-  Statement used = db_->prepare(
-      "SELECT t.phase, t.block, t.task_id, t.trial, coalesce(r.rt_seconds, t.time_limit) FROM responses r "
-      "JOIN trials t ON t.id = r.trial WHERE t.participant = ?1");
+  Statement used = db_->prepare(store_sql::kUsedSeconds);
   used.bind(1, participantId);
   std::map<std::string, double> out;
   while (used.step())
@@ -396,26 +357,18 @@ std::map<std::string, double> SqliteStore::usedSeconds(std::int64_t participantI
 
 int SqliteStore::recordOnset(std::int64_t session, std::int64_t trial, std::int64_t tNs, const std::string& detail) {
   Transaction t(*db_);
-  Statement count = db_->prepare("SELECT count(*) FROM events WHERE trial = ?1 AND kind = 'onset'");
+  Statement count = db_->prepare(store_sql::kOnsetCount);
   count.bind(1, trial);
   count.step();
   const int shown = int(count.integer(0)) + 1;
-  // The detail says which showing this is; 2 and more: the same stimulus again after an interruption.
-  nlohmann::json d = nlohmann::json::parse(detail.empty() ? "{}" : detail, nullptr, false);
-  if (!d.is_object()) d = nlohmann::json{{"detail", detail}};
-  d["showing"] = shown;
-  if (shown > 1) d["repeat"] = "shown again after an interruption";
-  recordEvent(session, trial, tNs, "onset", d.dump());
+  recordEvent(session, trial, tNs, "onset", onsetDetail(detail, shown));
   t.commit();
   return shown;
 }
 
 void SqliteStore::recordResponse(const ResponseRecord& r) {
   Transaction t(*db_);
-  Statement s = db_->prepare(
-      "INSERT INTO responses (trial, session, raw_answer, answered, correct, score, partial_credit, error, rt_seconds, "
-      "onset_ns, response_ns, note, recorded_at, onset_frame_ms, late_frames, onset_to_swap_ms) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16)");
+  Statement s = db_->prepare(store_sql::kInsertResponse);
   s.bind(1, r.trial).bind(2, r.session).bind(3, r.rawAnswer).bind(4, int(r.answered)).bind(5, int(r.correct)).bind(6, r.score);
   s.bind(7, r.partialCredit).bind(8, r.error).bind(9, r.rtSeconds).bind(10, r.onsetNs).bind(11, r.responseNs).bind(12, r.note);
   s.bind(13, utcTimestamp()).bind(14, r.onsetFrameMs).bind(16, r.onsetToSwapMs);
@@ -425,11 +378,9 @@ void SqliteStore::recordResponse(const ResponseRecord& r) {
     s.run();
   } catch (const StoreError& e) {
     if (e.code() != SQLITE_CONSTRAINT_UNIQUE) throw;
-    throw StoreError(path_ + ": trial " + std::to_string(r.trial) +
-                         " already has a response: is this participant's session running at another station too?",
-                     e.code());
+    throw StoreError(duplicateResponseMessage(path_, r.trial), e.code());
   }
-  Statement e = db_->prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, 'response', ?4)");
+  Statement e = db_->prepare(store_sql::kInsertResponseEvent);
   e.bind(1, r.session).bind(2, r.trial).bind(3, r.responseNs).bind(4, r.answered ? "answered" : "missing").run();
   faultPoint("commit", ++responses_);
   t.commit();
@@ -437,7 +388,7 @@ void SqliteStore::recordResponse(const ResponseRecord& r) {
 
 void SqliteStore::recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                                const std::string& detail) {
-  Statement e = db_->prepare("INSERT INTO events (session, trial, t_ns, kind, detail) VALUES (?1, ?2, ?3, ?4, ?5)");
+  Statement e = db_->prepare(store_sql::kInsertEvent);
   e.bind(1, session);
   if (trial) e.bind(2, *trial);
   else e.bindNull(2);
@@ -447,9 +398,7 @@ void SqliteStore::recordEvent(std::int64_t session, std::optional<std::int64_t> 
 void SqliteStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                       const std::vector<FormAnswer>& answers) {
   Transaction t(*db_);
-  Statement s = db_->prepare(
-      "INSERT INTO questionnaire_answers (participant, session, questionnaire, block, item, value, answer, recorded_at) "
-      "VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8)");
+  Statement s = db_->prepare(store_sql::kInsertQuestionnaireAnswer);
   for (const auto& a : answers) {
     s.bind(1, participantId).bind(2, session).bind(3, questionnaire).bind(4, block).bind(5, a.field).bind(6, a.number).bind(7, a.value);
     s.bind(8, utcTimestamp()).run();
@@ -461,46 +410,44 @@ void SqliteStore::recordDecline(const Experiment& e, const std::string& tlabVers
   Transaction t(*db_);
   if (findParticipant(e.id, participant)) throw StoreError(path_ + ": participant '" + participant + "' is already known");
   const ExperimentVersion version = ensureVersion(e, tlabVersion);
-  Statement insert = db_->prepare(
-      "INSERT INTO participants (experiment, participant, slot, status, created_at) VALUES (?1, ?2, -1, 'declined', ?3)");
+  Statement insert = db_->prepare(store_sql::kInsertDecliner);
   insert.bind(1, version.row).bind(2, participant).bind(3, utcTimestamp()).run();
-  Statement consent = db_->prepare("INSERT INTO consent (participant, session, decision, recorded_at) VALUES (?1, NULL, 'declined', ?2)");
+  Statement consent = db_->prepare(store_sql::kInsertDecline);
   consent.bind(1, db_->lastInsertId()).bind(2, utcTimestamp()).run();
   t.commit();
 }
 
 void SqliteStore::recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) {
-  Statement s = db_->prepare("INSERT INTO consent (participant, session, decision, recorded_at) VALUES (?1, ?2, ?3, ?4)");
+  Statement s = db_->prepare(store_sql::kInsertConsent);
   s.bind(1, participantId).bind(2, session).bind(3, accepted ? "accepted" : "declined").bind(4, utcTimestamp()).run();
 }
 
 bool SqliteStore::hasConsent(std::int64_t participantId) {
-  Statement s = db_->prepare("SELECT 1 FROM consent WHERE participant = ?1 AND decision = 'accepted' LIMIT 1");
+  Statement s = db_->prepare(store_sql::kHasConsent);
   s.bind(1, participantId);
   return s.step();
 }
 
 void SqliteStore::recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) {
   Transaction t(*db_);
-  Statement s = db_->prepare(
-      "INSERT INTO participant_info (participant, session, field, value, number, recorded_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)");
+  Statement s = db_->prepare(store_sql::kInsertInfo);
   for (const auto& a : answers) s.bind(1, participantId).bind(2, session).bind(3, a.field).bind(4, a.value).bind(5, a.number).bind(6, utcTimestamp()).run();
   t.commit();
 }
 
 bool SqliteStore::hasInfo(std::int64_t participantId) {
-  Statement s = db_->prepare("SELECT 1 FROM participant_info WHERE participant = ?1 LIMIT 1");
+  Statement s = db_->prepare(store_sql::kHasInfo);
   s.bind(1, participantId);
   return s.step();
 }
 
 void SqliteStore::recordDisplay(std::int64_t session, const std::string& displayJson) {
-  Statement s = db_->prepare("UPDATE sessions SET display_json = ?2 WHERE id = ?1");
+  Statement s = db_->prepare(store_sql::kRecordDisplay);
   s.bind(1, session).bind(2, displayJson).run();
 }
 
 bool SqliteStore::hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) {
-  Statement s = db_->prepare("SELECT 1 FROM questionnaire_answers WHERE participant = ?1 AND questionnaire = ?2 AND block = ?3 LIMIT 1");
+  Statement s = db_->prepare(store_sql::kHasQuestionnaireAnswers);
   s.bind(1, participantId).bind(2, questionnaire).bind(3, block);
   return s.step();
 }

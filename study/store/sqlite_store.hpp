@@ -56,7 +56,7 @@ class SqliteStore : public Store {
   void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) override;
   bool hasInfo(std::int64_t participantId) override;
   void recordDisplay(std::int64_t session, const std::string& displayJson) override;
-  DataTable exportTable(ExportTable table, const Experiment& experiment) override;  // study/store/sqlite_store_tables.cpp
+  DataTable exportTable(ExportTable table, const Experiment& experiment) override;  // study/store/store_tables.cpp
   std::vector<AnalysisRecord> analysisRecords(const std::string& experimentId, const std::string& dependentVariable) override;
   std::vector<std::map<std::string, int>> sessionModes(const std::string& experimentId) override;
   std::vector<StoredAnswer> formAnswers(const std::string& experimentId) override;
@@ -67,10 +67,6 @@ class SqliteStore : public Store {
   int requireStudyDatabase();  // the schema version
   void checkIntegrity();
   ExperimentVersion ensureVersion(const Experiment& experiment, const std::string& tlabVersion);
-  std::map<std::string, std::string> sessionStatuses();
-  DataTable trialsTable(const Experiment& experiment);
-  DataTable sessionsTable(const Experiment& experiment);
-  DataTable queryTable(const std::string& experimentId, std::vector<std::string> header, const std::string& sql);
   std::string path_;
   std::unique_ptr<Database> db_;
   int responses_ = 0;  // response transactions of this process (fault points)

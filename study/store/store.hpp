@@ -3,7 +3,7 @@
 // counterbalancing slots, sessions, the plan, onsets, responses, events and questionnaire answers,
 // and the tables that export and analysis read. study/ code sees only this interface and never an
 // SQL statement or a database handle; SqliteStore (study/store/sqlite_store.hpp) implements it on one
-// SQLite file. Every write a participant's progress depends on is one transaction, committed
+// SQLite file, PostgresStore (study/store/postgres_store.hpp) on a PostgreSQL server. Every write a participant's progress depends on is one transaction, committed
 // before the runner goes on.
 #include <cstdint>
 #include <map>
