@@ -86,7 +86,7 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
                        "try again; if this keeps happening, contact the researcher."},
               {"retry", true}};
     channel_->publish(std::move(s));
-    channel_->close(ex.what());
+    channel_->close("the server could not continue the session");  // the details go to the log, not to the page
     std::lock_guard lock(mutex_);
     ended_ = std::string("error: ") + ex.what();
   }

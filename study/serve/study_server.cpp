@@ -80,7 +80,12 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
       what = e.what();
     } catch (...) {
     }
-    refuse(res, 500, req.method + " " + req.path + ": " + what);
+    if (req.path.rfind("/api/", 0) == 0) return refuse(res, 500, req.method + " " + req.path + ": " + what);
+    std::fprintf(stderr, "serve: 500: %s %s: %s\n", req.method.c_str(), req.path.c_str(), what.c_str());
+    res.status = 500;  // a page for people: what happened, in words, and what to do
+    res.set_content(messagePage("Please try again", "The study server has a problem right now. Your answers so far are stored. "
+                                                    "Please try again in a few minutes."),
+                    "text/html; charset=utf-8");
   });
   routes();
 }

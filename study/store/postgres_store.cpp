@@ -189,7 +189,7 @@ std::int64_t PostgresStore::startSession(std::int64_t participantId, const Exper
     const ExperimentVersion version = ensureVersionIn(t, location(), e, tlabVersion);
     std::vector<std::int64_t> interrupted;
     for (const auto& r : t.exec(store_sql::kOpenSessions, pgParams(participantId))) {
-      const std::string station = text(r[1]), state = stationState(station, text(r[2]));
+      const std::string station = text(r[1]), state = openSessionState(station, text(r[2]));
       if (state != "dead")
         throw SessionConflict(sessionConflictMessage(location(), text(r[4]), r[0].as<std::int64_t>(), station, text(r[3]), state));
       interrupted.push_back(r[0].as<std::int64_t>());

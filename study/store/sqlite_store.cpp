@@ -91,6 +91,11 @@ std::string stationState(const std::string& station, const std::string& processS
   return processStart.empty() || processStart == started ? "alive" : "dead";
 }
 
+std::string openSessionState(const std::string& station, const std::string& processStart) {
+  if (station == stationName() && processStart == processStartTime()) return "dead";
+  return stationState(station, processStart);
+}
+
 std::string utcTimestamp() {
   const auto now = std::chrono::system_clock::now();
   const std::time_t t = std::chrono::system_clock::to_time_t(now);
@@ -276,7 +281,7 @@ std::int64_t SqliteStore::startSession(std::int64_t participantId, const Experim
   open.bind(1, participantId);
   std::vector<std::int64_t> interrupted;
   while (open.step()) {
-    const std::string station = open.text(1), state = stationState(station, open.text(2));
+    const std::string station = open.text(1), state = openSessionState(station, open.text(2));
     if (state == "dead") {
       interrupted.push_back(open.integer(0));
       continue;

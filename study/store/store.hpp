@@ -218,6 +218,10 @@ std::string stationName();
 // Whether the process of a session's station still runs: "alive" for this machine's live processes
 // started at `processStart`, "dead" for this machine's others, "unknown" for another machine's.
 std::string stationState(const std::string& station, const std::string& processStart);
+// What an open session of this participant means to a new one: stationState(), except that a
+// session of this very process is "dead" — a process walks one flow per participant at a time, so
+// a session it left open (its flow stopped on a storage error) has ended. startSession uses it.
+std::string openSessionState(const std::string& station, const std::string& processStart);
 // This process's start time (clock ticks since boot, /proc/self/stat), stored with each session.
 std::string processStartTime();
 

@@ -16,11 +16,6 @@ using nlohmann::json;
 
 const std::string kStudy = "serve-tiny";
 
-struct Walk {
-  std::vector<json> screens;
-  int answered = 0;
-};
-
 class Serve : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -35,45 +30,8 @@ class Serve : public ::testing::Test {
     EXPECT_EQ(token.size(), 64u);
     return token;
   }
-  static json display() { return {{"screen_width", 1920}, {"screen_height", 1080}, {"device_pixel_ratio", 1}, {"refresh_hz", 60}}; }
 
-  // Answers every screen until `stopAfter` trials were answered (or the end); `answer` gives each trial's answer.
-  static Walk walk(PageClient& page, const std::string& token, json screen, int stopAfter = 1 << 20) {
-    Walk w;
-    for (int step = 0; step < 200; ++step) {
-      w.screens.push_back(screen);
-      const std::string kind = screen["kind"];
-      if (kind == "end" || kind == "error") break;
-      if (kind == "wait") {
-        screen = page.screen(token).body;
-        continue;
-      }
-      if (kind != "trial") {
-        screen = page.api(token, "reply", continueReply(screen)).body;
-        continue;
-      }
-      if (w.answered == stopAfter) break;
-      EXPECT_EQ(page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "onset"}, {"painted_ms", 10.5}}).status, 200);
-      const Reply r = page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "answer"}, {"answer", 1 + w.answered % 2}, {"rt_ms", 850.0}});
-      EXPECT_EQ(r.status, 200) << r.body.dump();
-      ++w.answered;
-      screen = r.body;
-    }
-    return w;
-  }
-
-  std::vector<std::vector<std::string>> exported(const std::string& table) {
-    const auto csv = dir_ / "csv";
-    std::filesystem::remove_all(csv);
-    const auto r = runCommand(commandLine({TLAB_EXE, "export", db_, "--csv", csv.string()}));
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    return parseCsv(readText((csv / (table + ".csv")).string()));
-  }
-  static std::size_t column(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
-    for (std::size_t i = 0; i < rows.front().size(); ++i)
-      if (rows.front()[i] == name) return i;
-    throw std::runtime_error("no column " + name);
-  }
+  std::vector<std::vector<std::string>> exported(const std::string& table) { return exportedTable(db_, dir_, table); }
 
   std::filesystem::path dir_;
   std::string db_;

@@ -3,10 +3,16 @@
 // cpp-httplib's client (study/serve/study_server.hpp documents the routes).
 #include <httplib.h>
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
+
+#include "tests/study/study_test_support.hpp"
+#include "tests/support/run_command.hpp"
 
 namespace tlab::testing {
 
@@ -52,6 +58,55 @@ inline nlohmann::json continueReply(const nlohmann::json& screen) {
   if (kind == "form")
     for (std::size_t i = 0; i < screen["fields"].size(); ++i) r["values"].push_back("3");
   return r;
+}
+
+// What a page reports of its display.
+inline nlohmann::json display() { return {{"screen_width", 1920}, {"screen_height", 1080}, {"device_pixel_ratio", 1}, {"refresh_hz", 60}}; }
+
+struct Walk {
+  std::vector<nlohmann::json> screens;
+  int answered = 0;
+};
+
+// Answers every screen from `screen` on until `stopAfter` trials were answered (or the end);
+// trial answers alternate 1, 2, 1, ... with an RT of 850 ms.
+inline Walk walk(PageClient& page, const std::string& token, nlohmann::json screen, int stopAfter = 1 << 20) {
+  Walk w;
+  for (int step = 0; step < 200; ++step) {
+    w.screens.push_back(screen);
+    const std::string kind = screen["kind"];
+    if (kind == "end" || kind == "error") break;
+    if (kind == "wait") {
+      screen = page.screen(token).body;
+      continue;
+    }
+    if (kind != "trial") {
+      screen = page.api(token, "reply", continueReply(screen)).body;
+      continue;
+    }
+    if (w.answered == stopAfter) break;
+    EXPECT_EQ(page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "onset"}, {"painted_ms", 10.5}}).status, 200);
+    const Reply r = page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "answer"}, {"answer", 1 + w.answered % 2}, {"rt_ms", 850.0}});
+    EXPECT_EQ(r.status, 200) << r.body.dump();
+    if (r.body.value("kind", "") != "error") ++w.answered;
+    screen = r.body;
+  }
+  return w;
+}
+
+// One table of `tlab export DB --csv` (DB: a file or a postgresql:// URL).
+inline std::vector<std::vector<std::string>> exportedTable(const std::string& db, const std::filesystem::path& dir, const std::string& table) {
+  const auto csv = dir / "csv";
+  std::filesystem::remove_all(csv);
+  const auto r = runCommand(commandLine({TLAB_EXE, "export", db, "--csv", csv.string()}));
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  return parseCsv(readText((csv / (table + ".csv")).string()));
+}
+
+inline std::size_t column(const std::vector<std::vector<std::string>>& rows, const std::string& name) {
+  for (std::size_t i = 0; i < rows.front().size(); ++i)
+    if (rows.front()[i] == name) return i;
+  throw std::runtime_error("no column " + name);
 }
 
 }  // namespace tlab::testing
