@@ -187,17 +187,19 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
   const std::string id = req.has_param(parameter.c_str()) ? req.get_param_value(parameter.c_str()) : "";
   if (!validParticipantId(id))
     return page(400, "Link incomplete", "The link is missing the participant id (" + parameter + "=...: 1 to 128 letters, digits or _.@-).");
+  // The store first: a participant who finished (declined, was dropped) in this server's run has a
+  // session in memory too, whose walk would be refused by the runner if it started again.
+  const auto existing = study_.store.findParticipant(e.id, id);
+  if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
+  if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
+  if (existing && existing->status == "dropped")
+    return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
   std::shared_ptr<ParticipantSession> s;
   {
     std::lock_guard lock(mutex_);
     if (const auto it = byParticipant_.find(id); it != byParticipant_.end()) s = it->second;
   }
   if (!s) {
-    const auto existing = study_.store.findParticipant(e.id, id);
-    if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
-    if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
-    if (existing && existing->status == "dropped")
-      return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
     json arrival{{"participant", id}, {"user_agent", req.get_header_value("User-Agent").substr(0, 400)}};
     for (const std::string& p : {e.online.studyParameter, e.online.sessionParameter})
       if (!p.empty() && req.has_param(p.c_str())) arrival[p] = req.get_param_value(p.c_str()).substr(0, 200);
