@@ -262,8 +262,14 @@ function trial(s) {
     if (current !== s) return;
     onset = t;
     reply({ type: 'onset', painted_ms: t }).then(() => { if (current === s) main.dataset.onset = 'reported'; });
+    // The time limit runs from the first showing (as on the server): after a reload of the page
+    // the countdown goes on where it was, it does not start again.
+    const key = 'tlab-shown-' + token + '-' + s.seq;
+    const first = Number(sessionStorage.getItem(key)) || Date.now();
+    sessionStorage.setItem(key, String(first));
+    const before = Math.max(0, Date.now() - first) / 1000;
     const tick = () => {
-      const left = Math.max(0, s.limit_s - (performance.now() - onset) / 1000);
+      const left = Math.max(0, s.limit_s - before - (performance.now() - onset) / 1000);
       clock.textContent = Math.floor(left / 60) + ':' + String(Math.floor(left % 60)).padStart(2, '0');
       if (left <= 0 && !done) { done = true; reply({ type: 'timeout' }); }
     };
