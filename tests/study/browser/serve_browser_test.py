@@ -217,6 +217,11 @@ def check_countdown(p, what):
     check(not overlap, f"{what}: the countdown overlaps the question")
 
 
+def countdown_seconds(p):
+    m = re.fullmatch(r"(\d+):(\d\d)", p.find("#countdown").text)
+    return int(m.group(1)) * 60 + int(m.group(2)) if m else 10 ** 9
+
+
 def check_hits_on_labels(p, what):
     """Each label's hit box is centred on the label's pixel in the picture."""
     misplaced = p.driver.execute_script(
@@ -306,11 +311,16 @@ def walk_session(p, server):
             answer_kind = s["answer"]
             training = p.driver.execute_script("return current.phase;") == "training"
             if answer_kind == "label" and not reloaded:
-                # A reload in the middle of a trial: the same trial comes back (shown a second time).
+                # A reload in the middle of a trial: the same trial comes back (shown a second time),
+                # its countdown going on from where it was (once it has dropped below its start).
+                start = countdown_seconds(p)
+                p.until(lambda: countdown_seconds(p) < start, "the countdown to go down")
                 p.driver.refresh()
                 again = p.next_screen(-1)
                 check(again["seq"] == seq and again["kind"] == "trial", f"after the reload: {again}, expected trial screen {seq}")
                 p.trial_ready()
+                check_countdown(p, "trial after reload")
+                check(countdown_seconds(p) < start, f"the countdown started again after the reload: {p.find('#countdown').text}")
                 check_picture_unscaled(p, "trial after reload")
                 p.screenshot("trial-label-after-reload")
                 reloaded = True
