@@ -376,9 +376,21 @@ def answer_trial(p, answer_kind, training):
         return expected
     if answer_kind == "floor-point":
         plan = p.find("#floor-plan")
-        check(plan.size["width"] > 20 and plan.size["height"] > 20, f"the floor plan is {plan.size}")
-        ActionChains(p.driver).move_to_element_with_offset(plan, plan.size["width"] // 4, plan.size["height"] // 4 - plan.size["height"] // 2).click().perform()
-        return "floor-point"  # world coordinates: checked for their form
+        box = p.driver.execute_script(
+            "const i = document.getElementById('floor-plan'); const r = i.getBoundingClientRect();"
+            "return {left: r.left, top: r.top, border: i.clientLeft, width: i.clientWidth, height: i.clientHeight, plan: current.floor_plan};")
+        check(box["width"] == box["plan"]["width"] and box["height"] == box["plan"]["height"], f"the floor plan is scaled: {box}")
+        # The replies the page sends, to compare the clicked plan pixel (the store has world coordinates).
+        p.driver.execute_script(
+            "window.sentReplies = []; const send = window.fetch;"
+            "window.fetch = (url, options) => { if (options && options.body) sentReplies.push(JSON.parse(options.body)); return send(url, options); };")
+        target = (box["width"] // 4, box["height"] * 3 // 4)  # in the plan's pixels
+        centre = (plan.size["width"] / 2, plan.size["height"] / 2)  # Selenium's offsets are from the element's centre
+        ActionChains(p.driver).move_to_element_with_offset(plan, int(box["border"] + target[0] - centre[0]), int(box["border"] + target[1] - centre[1])).click().perform()
+        sent = p.until(lambda: [r for r in p.driver.execute_script("return window.sentReplies || [];") if r.get("type") == "answer"], "the floor-plan answer")
+        point = sent[0]["answer"]
+        check(abs(point["x"] - target[0]) <= 1.5 and abs(point["y"] - target[1]) <= 1.5, f"clicked the plan at {target}, the page sent {point}")
+        return "floor-point"  # world coordinates in the store: checked for their form
     if answer_kind == "letter":
         buttons = p.finds("#screen button.letter")
         check([b.text for b in buttons] == ["C", "K", "R", "X", "Y"], f"letter buttons: {[b.text for b in buttons]}")
