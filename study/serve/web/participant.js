@@ -51,9 +51,18 @@ async function reply(body) {
   return r;
 }
 
+// A refused answer, said on the page; a form field's ("field 'age': ...") below that field, in
+// words without the field's id.
 function showInlineError(text) {
-  const box = main.querySelector('.error') || main.appendChild(el('p', { class: 'error' }));
-  box.textContent = text;
+  main.querySelectorAll('.error').forEach((e) => e.remove());
+  const m = /^field '([^']+)': (.*)$/.exec(text);
+  const field = m && main.querySelector('.field[data-field="' + CSS.escape(m[1]) + '"]');
+  if (field) {
+    field.append(el('p', { class: 'error' }, 'Please check this answer: ' + m[2] + '.'));
+    field.scrollIntoView({ block: 'nearest' });
+  } else {
+    main.append(el('p', { class: 'error' }, text));
+  }
 }
 
 async function poll() {
