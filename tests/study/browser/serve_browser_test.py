@@ -285,6 +285,13 @@ def walk_session(p, server):
             check(p.find("#decline").is_displayed(), "the consent screen has no decline button")
             p.find("#accept").click()
         elif kind == "form":
+            if seen[key] == 1:  # the information form sent empty first: refused, said on the page
+                p.find("#submit").click()
+                error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the form's error message")[0]
+                check(error.find_element(By.XPATH, "..").get_attribute("data-field") == "age" and "required" in error.text
+                      and "'age'" not in error.text, f"the empty form's error, under the age field in words: {error.text!r}")
+                check(p.state()["seq"] == seq, "the refused form was left")
+                p.screenshot("form-refused")
             fill_form(p)
             p.find("#submit").click()
         elif kind == "feedback":
@@ -424,7 +431,8 @@ def check_database(tlab, db, folder, answers):
     onsets = [json.loads(e["detail"]) for e in events if e["kind"] == "onset"]
     check(any(o.get("showing") == 2 and o.get("via") == "browser" for o in onsets), f"no onset with showing 2: {onsets}")
     check(sum(1 for e in events if e["kind"] == "camera") >= 1, "no camera event from the turntable drag")
-    check(not [e for e in events if e["kind"] == "refused-reply"], "refused replies: " + str([e for e in events if e["kind"] == "refused-reply"]))
+    refused = [json.loads(e["detail"]) for e in events if e["kind"] == "refused-reply"]
+    check(len(refused) == 1 and '"form"' in refused[0]["body"], f"refused replies (expected the empty form only): {refused}")
     sessions = read_csv(folder, "sessions.csv")
     check(len(sessions) == 1, f"{len(sessions)} sessions")
     session = sessions[0]
