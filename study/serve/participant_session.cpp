@@ -37,6 +37,9 @@ ParticipantSession::~ParticipantSession() {
 void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser) {
   std::lock_guard lock(mutex_);
   if (running_) return;
+  // A session that ended (finished, declined, timed out) keeps its end screen: a reload of the
+  // page shows it again. Only a session stopped by an error starts again ("Try again").
+  if (!ended_.empty() && ended_.rfind("error: ", 0) != 0) return;
   if (thread_.joinable()) thread_.join();
   if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
   ended_.clear();

@@ -200,7 +200,8 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
   const std::string id = req.has_param(parameter.c_str()) ? req.get_param_value(parameter.c_str()) : "";
   if (!validParticipantId(id))
     return page(400, "Link incomplete", "The link is missing the participant id (" + parameter + "=...: 1 to 128 letters, digits or _.@-).");
-  // The store says who may continue (also for a session of this server that has ended).
+  // The store first: a participant who finished (declined, was dropped) in this server's run has a
+  // session in memory too, whose walk would be refused by the runner if it started again.
   const auto existing = study_.store.findParticipant(e.id, id);
   if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
   if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");

@@ -51,9 +51,18 @@ async function reply(body) {
   return r;
 }
 
+// A refused answer, said on the page; a form field's ("field 'age': ...") below that field, in
+// words without the field's id.
 function showInlineError(text) {
-  const box = main.querySelector('.error') || main.appendChild(el('p', { class: 'error' }));
-  box.textContent = text;
+  main.querySelectorAll('.error').forEach((e) => e.remove());
+  const m = /^field '([^']+)': (.*)$/.exec(text);
+  const field = m && main.querySelector('.field[data-field="' + CSS.escape(m[1]) + '"]');
+  if (field) {
+    field.append(el('p', { class: 'error' }, 'Please check this answer: ' + m[2] + '.'));
+    field.scrollIntoView({ block: 'nearest' });
+  } else {
+    main.append(el('p', { class: 'error' }, text));
+  }
 }
 
 async function poll() {
@@ -79,6 +88,11 @@ function show(screen) {
   if (current && screen.seq === current.seq && screen.kind === current.kind && screen.kind !== 'wait') return;
   clear();
   current = screen;
+  // What is shown, for the page's style sheet and for browser tests (tests/study/browser).
+  main.dataset.kind = screen.kind;
+  main.dataset.seq = screen.seq;
+  if (screen.kind === 'trial') main.dataset.answerKind = screen.answer_kind; else delete main.dataset.answerKind;
+  delete main.dataset.onset;
   const views = { message, consent, form, trial, feedback, break: pause, end, error: failed, wait };
   (views[screen.kind] || wait)(screen);
 }
@@ -122,19 +136,21 @@ function form(s) {
   s.fields.forEach((f, i) => {
     const [input, get] = fieldInput(f, i);
     getters.push(get);
-    main.append(el('div', { class: 'field' }, el('p', {}, f.text + (f.required ? '' : ' (optional)')), input));
+    main.append(el('div', { class: 'field', 'data-field': f.id }, el('p', {}, f.text + (f.required ? '' : ' (optional)')), input));
   });
   main.append(el('button', { type: 'button', id: 'submit', onclick: () => reply({ type: 'form', values: getters.map((g) => g()) }) }, 'Continue'));
 }
 
-// The picture at its rendered size in device pixels; a warning when the window is too small.
-function picture(image, src) {
+// The picture at its rendered size in device pixels; a warning when the window is too small for
+// it (and for what stands beside it: besideWidth device pixels, the floor plan).
+function picture(image, src, besideWidth = 0) {
   const img = el('img', { src, alt: 'stimulus', draggable: 'false' });
   img.style.width = image.width / devicePixelRatio + 'px';
   img.style.height = image.height / devicePixelRatio + 'px';
   const fits = () => {
-    const small = innerWidth < image.width / devicePixelRatio + 40 || innerHeight < image.height / devicePixelRatio + 160;
-    document.getElementById('needed').textContent = Math.ceil(image.width / devicePixelRatio + 40) + ' × ' + Math.ceil(image.height / devicePixelRatio + 160);
+    const width = (image.width + besideWidth) / devicePixelRatio + (besideWidth ? 64 : 40), height = image.height / devicePixelRatio + 160;
+    const small = innerWidth < width || innerHeight < height;
+    document.getElementById('needed').textContent = Math.ceil(width) + ' × ' + Math.ceil(height);
     document.getElementById('toosmall').hidden = !small;
   };
   fits();
@@ -149,7 +165,7 @@ function painted(img) {
 }
 
 function answerControls(s, stage, submit) {
-  const box = el('div', {});
+  const box = el('div', { class: 'answer' });
   const kind = s.answer_kind;
   if (kind === 'layer-number' || kind === 'count') {
     const input = el('input', { type: 'number', id: 'answer', min: kind === 'count' ? '0' : '1', step: '1' });
@@ -161,8 +177,12 @@ function answerControls(s, stage, submit) {
     const chosen = new Set();
     s.labels.forEach((l) => {
       const hit = el('button', { type: 'button', class: 'hit', 'data-label': l.label, title: l.label });
-      hit.style.left = l.x / devicePixelRatio + 'px';
-      hit.style.top = l.y / devicePixelRatio + 'px';
+      // A round hit box centred on the mark, at most 22 CSS px wide and never reaching past the
+      // middle to the next mark: every mark is clickable where it is drawn, the nearest one wins.
+      const x = l.x / devicePixelRatio, y = l.y / devicePixelRatio;
+      const gap = Math.min(...s.labels.filter((o) => o !== l).map((o) => Math.hypot(o.x / devicePixelRatio - x, o.y / devicePixelRatio - y)));
+      const size = Math.max(8, Math.min(22, gap - 1));
+      Object.assign(hit.style, { left: x - size / 2 + 'px', top: y - size / 2 + 'px', width: size + 'px', height: size + 'px' });
       const button = el('button', { type: 'button', class: 'label', 'data-label': l.label }, l.label);
       const pick = (e) => {
         if (kind === 'label') return submit(l.label, e);
@@ -186,11 +206,13 @@ function answerControls(s, stage, submit) {
 function floorPlan(s, submit) {
   const img = el('img', { src: api('image/' + s.floor_plan.sha256 + '.png'), alt: 'floor plan', id: 'floor-plan', draggable: 'false' });
   img.style.width = s.floor_plan.width / devicePixelRatio + 'px';
+  img.style.height = s.floor_plan.height / devicePixelRatio + 'px';
   img.addEventListener('click', (e) => {
-    const r = img.getBoundingClientRect();
-    submit({ x: (e.clientX - r.left) * s.floor_plan.width / r.width, y: (e.clientY - r.top) * s.floor_plan.height / r.height }, e);
+    // offsetX/Y: from the picture's own top-left corner, inside its border (the box's size would
+    // include the border and shift and stretch the click).
+    submit({ x: e.offsetX * s.floor_plan.width / img.clientWidth, y: e.offsetY * s.floor_plan.height / img.clientHeight }, e);
   });
-  return el('div', { class: 'plan' }, el('p', { class: 'muted' }, 'Click the place on the floor plan:'), img);
+  return el('div', { class: 'plan' }, img);
 }
 
 // Orbit trials online: drag through the pre-rendered views (every change is logged).
@@ -202,7 +224,8 @@ function turntable(s, stage, img) {
   stage.classList.add('turntable');
   const perStep = Math.max(4, 360 / t.azimuths);
   stage.addEventListener('pointerdown', (ev) => { dragging = { x: ev.clientX, y: ev.clientY, a, e }; stage.setPointerCapture(ev.pointerId); });
-  stage.addEventListener('pointerup', () => { dragging = null; });
+  // After a drag the answer box has the keyboard again (the count is typed right after turning).
+  stage.addEventListener('pointerup', () => { dragging = null; const answer = document.getElementById('answer'); if (answer) answer.focus(); });
   stage.addEventListener('pointermove', (ev) => {
     if (!dragging) return;
     const na = ((dragging.a + Math.round((ev.clientX - dragging.x) / perStep)) % t.azimuths + t.azimuths) % t.azimuths;
@@ -215,6 +238,17 @@ function turntable(s, stage, img) {
   return src(a, e);
 }
 
+// How to answer with the mouse or keys (the server's format text describes typed answers).
+function hint(s) {
+  switch (s.answer_kind) {
+    case 'label': return 'Click the marked point on the picture (or its button below).';
+    case 'label-set': return 'Click every marked point you choose (on the picture or below; click again to undo), then Done.';
+    case 'floor-point': return 'Click the place on the floor plan.';
+    case 'letter': return 'Click the letter (or press its key).';
+    default: return s.format + ' — type it and press Enter.';
+  }
+}
+
 function trial(s) {
   let onset = null, done = false;
   const submit = (answer, ev) => {
@@ -224,20 +258,27 @@ function trial(s) {
     reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset) });
   };
   const stage = el('div', { class: 'stage', id: 'stage' });
-  const img = picture(s.image, api('image/' + s.image.sha256 + '.png'));
+  const img = picture(s.image, api('image/' + s.image.sha256 + '.png'), s.floor_plan ? s.floor_plan.width : 0);
   if (s.turntable) img.src = turntable(s, stage, img);
   stage.append(img);
-  const clock = el('span', { class: 'countdown', id: 'countdown' }, '');
-  main.append(el('div', { class: 'top' }, el('h1', {}, s.question), el('span', { class: 'muted' }, (s.phase === 'training' ? 'training ' : 'trial ') + s.index + '/' + s.total), clock));
+  const clock = el('span', { class: 'countdown', id: 'countdown', title: 'time left' }, '');
+  main.append(el('div', { class: 'top' }, el('span', { class: 'muted progress' }, (s.phase === 'training' ? 'Training ' : 'Trial ') + s.index + ' of ' + s.total), clock),
+    el('h1', { class: 'question' }, s.question));
   const row = el('div', { class: 'row' }, stage);
   if (s.floor_plan) row.append(floorPlan(s, submit));
-  main.append(row, el('p', { class: 'muted' }, s.format), answerControls(s, stage, submit));
+  main.append(row, el('p', { class: 'muted', id: 'hint' }, hint(s)), answerControls(s, stage, submit));
   painted(img).then((t) => {
     if (current !== s) return;
     onset = t;
-    reply({ type: 'onset', painted_ms: t });
+    reply({ type: 'onset', painted_ms: t }).then(() => { if (current === s) main.dataset.onset = 'reported'; });
+    // The time limit runs from the first showing (as on the server): after a reload of the page
+    // the countdown goes on where it was, it does not start again.
+    const key = 'tlab-shown-' + token + '-' + s.seq;
+    const first = Number(sessionStorage.getItem(key)) || Date.now();
+    sessionStorage.setItem(key, String(first));
+    const before = Math.max(0, Date.now() - first) / 1000;
     const tick = () => {
-      const left = Math.max(0, s.limit_s - (performance.now() - onset) / 1000);
+      const left = Math.max(0, s.limit_s - before - (performance.now() - onset) / 1000);
       clock.textContent = Math.floor(left / 60) + ':' + String(Math.floor(left % 60)).padStart(2, '0');
       if (left <= 0 && !done) { done = true; reply({ type: 'timeout' }); }
     };
