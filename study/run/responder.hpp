@@ -78,6 +78,11 @@ class Responder {
   virtual std::optional<std::vector<std::string>> fillForm(const std::string& title, const std::vector<FormField>& fields) = 0;
   // nullopt: the session was closed before an answer (the trial stays unanswered).
   virtual std::optional<Response> respond(const TrialView& view) = 0;
+  // The last screen (the debrief with its completion code): a message the participant closes, or
+  // for a browser the page that stays (study/serve/browser_responder.hpp).
+  virtual void showDebrief(const std::string& title, const DebriefSpec& debrief) {
+    showMessage(title, debrief.text + (debrief.completionCode.empty() ? "" : "\n\nYour completion code: " + debrief.completionCode));
+  }
   // After a training answer: the stimulus with the right answer drawn, and whether it was right.
   virtual bool showFeedback(const TrialView& view, const Feedback& feedback) = 0;
   // A pause of at least spec.minSeconds; returns when the participant continues.

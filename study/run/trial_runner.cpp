@@ -389,8 +389,7 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
   }
   if (!runQuestionnaires(s, "end", 0)) return close(SessionOutcome::Closed);
   store_.finishParticipant(s.participant.id);
-  const std::string& code = experiment_.debrief.completionCode;
-  responder.showMessage(participantTitle(), experiment_.debrief.text + (code.empty() ? "" : "\n\nYour completion code: " + code));
+  responder.showDebrief(participantTitle(), experiment_.debrief);
   return close(SessionOutcome::Finished);
 }
 

@@ -86,6 +86,10 @@ std::optional<Response> BrowserResponder::respond(const TrialView& view) {
 
 bool BrowserResponder::showFeedback(const TrialView& view, const Feedback& feedback) { return show(feedbackScreen(view, feedback)).has_value(); }
 
+void BrowserResponder::showDebrief(const std::string& title, const DebriefSpec& debrief) {
+  channel_->publish(endScreen(title, debrief.text, debrief.completionCode, completionUrl_));
+}
+
 bool BrowserResponder::takeBreak(const BreakSpec& spec) {
   const auto earliest = std::chrono::steady_clock::now() + std::chrono::duration_cast<SteadyTime::duration>(std::chrono::duration<double>(spec.minSeconds));
   channel_->publish(breakScreen(spec));

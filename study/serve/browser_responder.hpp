@@ -33,6 +33,9 @@ class BrowserResponder : public Responder {
   std::optional<Response> respond(const TrialView& view) override;
   bool showFeedback(const TrialView& view, const Feedback& feedback) override;
   bool takeBreak(const BreakSpec& spec) override;
+  // The end page: the debrief, the completion code and the link back to the platform; it stays.
+  void showDebrief(const std::string& title, const DebriefSpec& debrief) override;
+  void completionUrl(std::string url) { completionUrl_ = std::move(url); }
   std::vector<ResponderEvent> takeEvents() override;
   std::optional<DisplayInfo> display() const override { return display_; }
 
@@ -46,6 +49,7 @@ class BrowserResponder : public Responder {
   ImagesFor images_;
   DisplayInfo display_;
   std::vector<ResponderEvent> events_;
+  std::string completionUrl_;
 };
 
 }  // namespace tlab::study

@@ -69,10 +69,12 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
     const RunOptions options{participant_, existing.has_value(), study.tlabVersion};
     BrowserResponder responder(
         channel_, [&](const TrialView& view) { return study.worker.images(view.plan, view.prepared); }, display, std::move(arrival));
+    responder.completionUrl(e.online.completionUrl);
     TrialRunner runner(e, study.store, study.worker);
     const SessionResult r = runner.run(options, responder);
     if (r.outcome == SessionOutcome::Finished) {
-      endWith(title, "The session is complete. Thank you!", e.debrief.completionCode, e.online.completionUrl);
+      std::lock_guard lock(mutex_);  // the responder showed the debrief page, which stays
+      ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
       endWith(title, "You chose not to take part. You can close this page.");
     } else if (channel_->timedOut()) {

@@ -3,6 +3,8 @@
 // per trial, and hostile participant ids and answers (quotes, SQL, 1 MB) stored and exported byte
 // for byte. SQLite-only behaviour (file header, WAL): sqlite_store_test.cpp; PostgreSQL-only
 // (concurrency, lost server, read-only readers): postgres_store_test.cpp.
+#include <unistd.h>
+
 #include <gtest/gtest.h>
 
 #include "study/design/experiment_file.hpp"
@@ -87,7 +89,14 @@ TEST_P(StoreContract, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
   const std::string location = fresh("store_session_claim");
   const auto store = openStore(location);
   const auto p = *store->enrol(e, "test", "p", 0, design, {fakeTrial(1)});
-  const auto open = store->startSession(p.id, e, "test", "window");  // this process: alive
+  const auto left = store->startSession(p.id, e, "test", "browser");
+  // A session this process left open (its flow stopped on a storage error; tlab serve walks one
+  // flow per participant) does not block this process: it is resumed.
+  const auto open = store->startSession(p.id, e, "test", "browser");
+  EXPECT_EQ(peek(location, "SELECT resumed_by FROM sessions WHERE id = " + std::to_string(left)), std::to_string(open));
+  // Another live process's session is refused: the parent process (alive) as its station.
+  const std::string station = stationName().substr(0, stationName().rfind(':') + 1) + std::to_string(::getppid());
+  backend().execute(location, "UPDATE sessions SET station = '" + station + "', process_start = '' WHERE id = " + std::to_string(open));
   EXPECT_THROW(store->startSession(p.id, e, "test", "window"), SessionConflict);
   // The same session as if its process had died (another start time on this host): resumed.
   backend().execute(location, "UPDATE sessions SET process_start = 'not-this-process' WHERE id = " + std::to_string(open));
