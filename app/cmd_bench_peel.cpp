@@ -14,7 +14,7 @@
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/peel/layered_grid_scene.hpp"
-#include "renderer/peel/peeling_renderer.hpp"
+#include "renderer/pipeline/renderer.hpp"
 
 namespace tlab::app {
 
@@ -63,19 +63,21 @@ void runPeelBench(const PeelBenchOptions& o) {
   for (int L : o.layers) {
     const render::Scene scene = render::makeLayeredGridScene(L, o.triangles);
     render::Renderer buffer(scene);
-    render::PeelingRenderer peeler(scene);
+    render::Renderer peeler(scene);
+    render::RenderRequest peelRequest = request;
+    peelRequest.depthPeeling = true;
     render::RenderStats bufferStats;
-    render::PeelStats peelStats;
+    render::RenderStats peelStats;
     const double bufferMs = medianMs(o.repeats, [&] { buffer.render(request, &bufferStats); });
-    const double peelMs = medianMs(o.repeats, [&] { peeler.render(request, &peelStats); });
+    const double peelMs = medianMs(o.repeats, [&] { peeler.render(peelRequest, &peelStats); });
     const double ratio = peelMs / bufferMs;
     if (o.json) {
       rows.push_back({{"layers", L}, {"triangles", scene.triangleCount()}, {"fragments", bufferStats.fragments},
-                      {"buffer_ms", bufferMs}, {"peel_ms", peelMs}, {"peel_iterations", peelStats.iterations},
+                      {"buffer_ms", bufferMs}, {"peel_ms", peelMs}, {"peel_iterations", peelStats.peelIterations},
                       {"ratio", ratio}, {"target", L / 2.0}});
     } else {
       std::printf("%4d %9zu %10llu %10.1f %10.1f %10d %8.2f %8.1f\n", L, scene.triangleCount(),
-                  static_cast<unsigned long long>(bufferStats.fragments), bufferMs, peelMs, peelStats.iterations, ratio, L / 2.0);
+                  static_cast<unsigned long long>(bufferStats.fragments), bufferMs, peelMs, peelStats.peelIterations, ratio, L / 2.0);
     }
   }
   if (o.json) std::cout << rows.dump(2) << "\n";

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/pipeline/frame_context.hpp"
 
 namespace tlab::render {
 
@@ -176,6 +177,8 @@ void FragmentBuffer::fillLinkedList(const GpuScene& scene, const RasterUniforms&
     fragmentCount_ = prefixSum();
   });
 }
+
+void FragmentBuffer::build(FrameContext& frame, PassTimer& timer) { build(frame.gpuScene, frame.raster, timer); }
 
 void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {
   rerenders_ = 0;

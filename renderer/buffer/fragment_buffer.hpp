@@ -18,6 +18,7 @@
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
+#include "renderer/pipeline/fill.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
 #include "renderer/pipeline/pass_timer.hpp"
 
@@ -42,7 +43,7 @@ void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int he
                           const RasterUniforms& u);
 void endFragmentCapture(const GpuScene& scene);
 
-class FragmentBuffer {
+class FragmentBuffer final : public Fill {
  public:
   // `initialCapacity` fragments are allocated up front (0: one per pixel); the pool grows as
   // needed up to `maxBytes` per fragment array (0: the GL limit for one shader storage block),
@@ -52,6 +53,7 @@ class FragmentBuffer {
 
   // Fill (rasterize all layers) and sort. Timed as passes "fill" and "sort".
   void build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer);
+  void build(FrameContext& frame, PassTimer& timer) override;  // Fill: the frame's scene and camera
 
   // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes.
   void bindSorted() const;

@@ -5,7 +5,7 @@
 namespace tlab::render {
 
 void BlendCompositor::run(FrameContext& frame) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/blend.comp", buffer.layout().defines());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
   buffer.bindSorted();

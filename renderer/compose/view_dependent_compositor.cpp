@@ -47,7 +47,7 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
 }  // namespace
 
 void composeViewDependent(FrameContext& frame, const ViewDependentAlpha& alpha, const ViewDependentSettings& settings) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/view_dependent_compose.comp", buffer.layout().defines());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4)), visibleDepth(buffer.pixels() * 2 * sizeof(float));
   buffer.bindSorted();

@@ -1,6 +1,8 @@
 #pragma once
-// What every render pass of one frame sees: the scene on the GPU, the illustration buffer (when
-// the style uses fragment lists), the style's parameters, and the image the frame produces.
+// What every render pass of one frame sees: the scene on the GPU, the fill the style declared
+// (when it declared one), the style's parameters, and the image the frame produces.
+#include <stdexcept>
+
 #include <glm/glm.hpp>
 
 #include "renderer/buffer/fragment_buffer.hpp"
@@ -8,13 +10,12 @@
 #include "renderer/ops/group_draw_order.hpp"
 #include "core/image.hpp"
 #include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/pipeline/fill.hpp"
 #include "renderer/pipeline/pass_timer.hpp"
 #include "renderer/scene/scene.hpp"
 #include "renderer/styles/style_params.hpp"
 
 namespace tlab::render {
-
-class BucketedKBuffer;
 
 struct FrameContext {
   const Scene& scene;
@@ -25,11 +26,18 @@ struct FrameContext {
   int width;
   int height;
   glm::vec4 background;
-  FragmentBuffer* buffer;  // null for styles without fragment lists
-  core::Image& image;            // the frame's result, row 0 = top
+  Fill* fill;          // the fill the style declared; null for styles without one
+  core::Image& image;  // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
-  BucketedKBuffer* kbuffer = nullptr;  // the bucketed k-buffer, for styles that fill with it
+
+  // The fill as the type a pass needs (a style's passes know which fill the style declared).
+  template <typename T>
+  T& fillAs() const {
+    T* const typed = dynamic_cast<T*>(fill);
+    if (!typed) throw std::logic_error("a render pass ran on a fill its style did not declare");
+    return *typed;
+  }
 };
 
 // One pass of a style (VTK render-pass style): a small object with one job.

@@ -18,7 +18,7 @@ class BucketNeighborsPass final : public RenderPass {
  public:
   explicit BucketNeighborsPass(kbuffer::NeighborSearch search) : search_(search) {}
   std::string name() const override { return "neighbors"; }
-  void run(FrameContext& frame) override { findBucketNeighbors(*frame.kbuffer, frame.shaders, search_); }
+  void run(FrameContext& frame) override { findBucketNeighbors(frame.fillAs<BucketedKBuffer>(), frame.shaders, search_); }
 
  private:
   kbuffer::NeighborSearch search_;
@@ -29,7 +29,7 @@ class CurvaturePass final : public RenderPass {
   explicit CurvaturePass(float scale) : scale_(scale) {}
   std::string name() const override { return "curvature"; }
   void run(FrameContext& frame) override {
-    computeScreenSpaceCurvature(*frame.kbuffer, frame.shaders, scale_, frame.scene.boundingSphere().radius,
+    computeScreenSpaceCurvature(frame.fillAs<BucketedKBuffer>(), frame.shaders, scale_, frame.scene.boundingSphere().radius,
                                 frame.raster.projection[1][1]);
   }
 
@@ -44,7 +44,7 @@ class CurvatureComposePass final : public RenderPass {
       : stylization_(s), alpha_(alpha), shading_(std::move(shading)), opacity_(std::move(opacity)) {}
   std::string name() const override { return "compose"; }
   void run(FrameContext& frame) override {
-    composeCurvature(frame, *frame.kbuffer, stylization_, alpha_, shading_, opacity_);
+    composeCurvature(frame, frame.fillAs<BucketedKBuffer>(), stylization_, alpha_, shading_, opacity_);
   }
 
  private:
@@ -81,12 +81,12 @@ std::vector<ParamSpec> CurvatureStyle::params() const {
 
 FragmentProperties CurvatureStyle::properties(const StyleParams&, const SceneFacts&) const { return {}; }
 
-std::optional<KBufferSettings> CurvatureStyle::kBufferFill(const StyleParams& params) const {
+FillSpec CurvatureStyle::fill(const StyleParams& params) const {
   KBufferSettings s;
   s.k = static_cast<std::uint32_t>(params.number("k"));
   s.buckets = stylizationOf(params) != CurvatureStylization::Plain;
   s.shapeId = params.is("shape_id", "component") ? ShapeIdSource::Component : ShapeIdSource::Object;
-  return s;
+  return {FillSpec::Kind::BucketedKBuffer, s};
 }
 
 void CurvatureStyle::validate(const StyleParams& params) const {

@@ -22,7 +22,7 @@ class ConnectRenderPass final : public RenderPass {
   explicit ConnectRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
   std::string name() const override { return "connect"; }
   void run(FrameContext& frame) override {
-    frame_->fields = connectFragments(*frame.buffer, frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
+    frame_->fields = connectFragments(frame.fillAs<FragmentBuffer>(), frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
     if (!frame_->solves) operations_ = DiffusionSolver(frame.shaders, frame_->settings).operations();
   }
   std::vector<std::string> operations() const override { return operations_; }
