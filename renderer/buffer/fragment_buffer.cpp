@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 
@@ -91,27 +91,6 @@ void FragmentBuffer::ensureCapacity(std::size_t fragments) {
   fragsSorted_ = gpu::Buffer(capacity_ * recordBytes);
   order_ = gpu::Buffer(capacity_ * 8);  // (depth bits, source) per fragment
   if (method_ == FillMethod::LinkedList) listNext_ = gpu::Buffer(capacity_ * 4);
-}
-
-void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int height, const gpu::ShaderProgram& program,
-                          const RasterUniforms& u) {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  glViewport(0, 0, width, height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
-  glUniform1i(program.uniform("uLighting"), u.lighting);  // -1 (absent) is ignored by GL
-  glUniform1i(program.uniform("uWidth"), width);
-}
-
-void endFragmentCapture(const GpuScene& scene) {
-  scene.bindObjectTable();
-  scene.draw();
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {

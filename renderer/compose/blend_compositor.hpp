@@ -1,6 +1,6 @@
 #pragma once
 #include "renderer/gpu/shader_program.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 

@@ -1,5 +1,5 @@
 #pragma once
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 

@@ -1,6 +1,7 @@
 #include "renderer/compose/smart_compositor.hpp"
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 

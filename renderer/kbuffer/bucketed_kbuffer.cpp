@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 #include "renderer/kbuffer/bucket_table.hpp"
 
 namespace tlab::render {

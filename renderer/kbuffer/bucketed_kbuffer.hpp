@@ -14,12 +14,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/frame/fragment_capture.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
-#include "renderer/pipeline/fill.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
-#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
 
 namespace tlab::render {
 

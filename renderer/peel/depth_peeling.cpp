@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "renderer/gpu/gl_error.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 

@@ -9,14 +9,14 @@
 // picture itself, with the local shading of the style (setShading).
 #include <glm/glm.hpp>
 
-#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/frame/raster_uniforms.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
 #include "core/image.hpp"
-#include "renderer/pipeline/fill.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
-#include "renderer/pipeline/pass_timer.hpp"
-#include "renderer/styles/illustrative_settings.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
+#include "renderer/params/illustrative_settings.hpp"
 
 namespace tlab::render {
 

@@ -12,9 +12,9 @@
 #include "core/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/frame/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
-#include "renderer/styles/style_params.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
 

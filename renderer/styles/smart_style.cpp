@@ -3,6 +3,7 @@
 #include "renderer/compose/smart_compositor.hpp"
 #include "renderer/ops/connect_pass.hpp"
 #include "renderer/ops/diffusion_solver.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 

@@ -10,12 +10,12 @@
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/pipeline/frame_context.hpp"
-#include "renderer/styles/style_params.hpp"
+#include "renderer/frame/frame_context.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
 
-// The fill a style declares (renderer/pipeline/fill.hpp): none (the nearest surface only), the
+// The fill a style declares (renderer/frame/fill.hpp): none (the nearest surface only), the
 // illustration buffer, or the bucketed k-buffer (seed 002) with its settings (near/far are set
 // from the camera). Depth peeling is asked for by the request (RenderRequest::depthPeeling) and
 // takes the local styles only.

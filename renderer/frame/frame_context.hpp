@@ -5,17 +5,18 @@
 
 #include <glm/glm.hpp>
 
-#include "renderer/buffer/fragment_buffer.hpp"
-#include "renderer/gpu/shader_cache.hpp"
-#include "renderer/ops/group_draw_order.hpp"
 #include "core/image.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
-#include "renderer/pipeline/fill.hpp"
-#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
+#include "renderer/frame/raster_uniforms.hpp"
+#include "renderer/gpu/shader_cache.hpp"
+#include "renderer/params/style_params.hpp"
 #include "renderer/scene/scene.hpp"
-#include "renderer/styles/style_params.hpp"
 
 namespace tlab::render {
+
+class GroupDrawOrder;  // ops/group_draw_order.hpp, for the one style that keeps it across frames
 
 struct FrameContext {
   const Scene& scene;
