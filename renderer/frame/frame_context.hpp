@@ -41,16 +41,6 @@ struct FrameContext {
   }
 };
 
-// One pass of a style (VTK render-pass style): a small object with one job.
-class RenderPass {
- public:
-  virtual ~RenderPass() = default;
-  virtual std::string name() const = 0;
-  virtual void run(FrameContext& frame) = 0;
-  // What the pass computes and what it leaves out for these parameters (for --stats-json).
-  virtual std::vector<std::string> operations() const { return {}; }
-};
-
 // Reads an RGBA float SSBO of width*height texels in GL order (row 0 = bottom) into the image,
 // flipping so that row 0 is the top.
 void readOutputBuffer(const gpu::Buffer& output, core::Image& image);

@@ -10,7 +10,7 @@
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/frame/frame_context.hpp"
+#include "renderer/frame/render_pass.hpp"
 #include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
