@@ -3,7 +3,6 @@
 // Eq. 8's Laplacian (normalised: the default; sum), so a user can choose
 // iterations by accuracy per millisecond (Carnecky Eq. 8; see ops/diffuse_alpha.comp).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,10 +14,9 @@
 #include "analysis/svg_plots.hpp"
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
-#include "renderer/gpu/gl.hpp"
+#include "bench/measure/diffusion_frame.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "core/image.hpp"
-#include "renderer/ops/connect_pass.hpp"
 #include "renderer/ops/diffusion_solver.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/smart_style.hpp"
@@ -41,37 +39,6 @@ struct Run {
   std::string setting;
   int passes = 0;
   double ms = 0, maxError = 0, rmsError = 0;
-};
-
-// The fields of one frame, reconnected for every run so each starts from the same α.
-struct Frame {
-  render::Scene scene;
-  render::GpuScene gpu;
-  gpu::ShaderCache shaders;
-  std::unique_ptr<render::FragmentBuffer> buffer;
-  float radius;
-  Frame(render::Scene s, int w, int h) : scene(std::move(s)), gpu(scene), radius(scene.boundingSphere().radius) {
-    const render::SmartStyle style;
-    const auto params = style.resolve({});
-    buffer = std::make_unique<render::FragmentBuffer>(shaders, w, h, render::FragmentLayout(style.properties(params, {gpu.componentCount()})),
-                                                      render::FillMethod::CountScatter);
-    const render::Camera camera = scene.camera ? *scene.camera : render::fitCamera(scene.boundingSphere(), float(w) / float(h));
-    render::RasterUniforms u;
-    u.view = camera.view();
-    u.projection = camera.projection(float(w) / float(h));
-    render::PassTimer timer(false);
-    buffer->build(gpu, u, timer);
-  }
-  // α after diffusing for the settings' n·λα, and the milliseconds the solve took.
-  std::vector<float> diffuse(const render::SmartSettings& s, double* ms) {
-    auto fields = render::connectFragments(*buffer, shaders, s, radius);
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    render::DiffusionSolver(shaders, s).solve(*fields);
-    glFinish();
-    *ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-    return fields->read(render::Field::Alpha);
-  }
 };
 
 // "1/4" for 0.25, "1" for 1: the λ of a run as the table prints it.
@@ -97,7 +64,7 @@ render::SmartSettings settingsFor(bool normalized, render::DiffusionScheme schem
 void runDiffusionBench(const DiffusionBenchOptions& o) {
   const auto [w, h] = parseSize(o.size);
   const auto context = gpu::createHeadlessContext();
-  Frame frame(render::loadScene(o.scene, sceneCatalog()), w, h);
+  bench::DiffusionFrame frame(render::loadScene(o.scene, sceneCatalog()), w, h);
   const auto T = o.time;
   std::vector<Run> runs;
   for (const bool normalized : {true, false}) {

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "bench/measure/gl_timing.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
@@ -29,22 +30,6 @@ struct PeelBenchOptions {
   int repeats = 3;
   bool json = false;
 };
-
-// Median wall-clock milliseconds of `repeats` frames after one warm-up frame (each frame ends
-// with a read-back, so the GPU work is included).
-template <typename F>
-double medianMs(int repeats, F&& frame) {
-  frame();
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    frame();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 void runPeelBench(const PeelBenchOptions& o) {
   const auto context = gpu::createHeadlessContext();
@@ -68,8 +53,8 @@ void runPeelBench(const PeelBenchOptions& o) {
     peelRequest.depthPeeling = true;
     render::RenderStats bufferStats;
     render::RenderStats peelStats;
-    const double bufferMs = medianMs(o.repeats, [&] { buffer.render(request, &bufferStats); });
-    const double peelMs = medianMs(o.repeats, [&] { peeler.render(peelRequest, &peelStats); });
+    const double bufferMs = bench::medianFrameMs(o.repeats, [&] { buffer.render(request, &bufferStats); });
+    const double peelMs = bench::medianFrameMs(o.repeats, [&] { peeler.render(peelRequest, &peelStats); });
     const double ratio = peelMs / bufferMs;
     if (o.json) {
       rows.push_back({{"layers", L}, {"triangles", scene.triangleCount()}, {"fragments", bufferStats.fragments},

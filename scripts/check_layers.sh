@@ -6,13 +6,13 @@
 #               → {scene, gpu}   (renderer/CMakeLists.txt says what each floor holds)
 # A file may include its own folder and any folder below it; siblings ({tasks, stimuli},
 # {buffer, kbuffer, peel}, {scene, gpu}) do not include each other. tests/, bench/ and fuzz/
-# sit outside the floors and may include anything.
+# sit outside the floors and may include anything; app/ may include bench/measure (tlab bench).
 set -euo pipefail
 cd "${1:-$(dirname "$0")/..}"
 
 # Which top-level folders each folder may include (besides itself).
 declare -A below=(
-  [app]="study tasks stimuli renderer analysis core"
+  [app]="bench study tasks stimuli renderer analysis core"
   [study]="tasks stimuli renderer analysis core"
   [tasks]="renderer core"
   [stimuli]="renderer core"
