@@ -1,7 +1,7 @@
 #pragma once
-// A transparency style: its parameters, the fragment properties it needs, and the ordered passes
-// (operators, then compositing) it runs on the illustration buffer. The pipeline builds exactly
-// what the style declares.
+// A transparency style: its parameters, the fill and fragment properties it needs, and the ordered
+// passes (operators, then compositing) it runs on that fill. The pipeline builds exactly what the
+// style declares.
 #include <cstdint>
 #include <memory>
 #include <optional>
