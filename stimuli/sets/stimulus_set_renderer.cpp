@@ -18,7 +18,7 @@
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
 #include "stimuli/sets/progress_bar.hpp"
-#include "core/sha256.hpp"
+#include "stimuli/sets/stimulus_producer.hpp"
 
 namespace tlab::stimuli {
 
@@ -57,14 +57,6 @@ std::string twoDigits(std::size_t i) {
 std::string resolveSource(const std::string& source, const std::string& setFile) {
   if (source.rfind("builtin:", 0) == 0 || fs::path(source).is_absolute()) return source;
   return (fs::path(setFile).parent_path() / source).string();
-}
-
-// Marks with the role "target" are ground truth (where the answer is), never drawn.
-std::vector<ProbeMark> visibleMarks(const std::vector<ProbeMark>& marks) {
-  std::vector<ProbeMark> shown;
-  for (const auto& m : marks)
-    if (m.role != "target") shown.push_back(m);
-  return shown;
 }
 
 // Runs body(i) for i in [0, count) on `jobs` threads (the caller's thread is one of them), each
@@ -190,23 +182,18 @@ class SetJob {
     }
     const SceneEntry& sceneEntry = spec_.scenes[u.scene];
     const StyleEntry& style = spec_.styles[u.index];
-    render::RenderRequest request;
-    request.width = spec_.width;
-    request.height = spec_.height;
-    request.style = style.name;
-    request.settings = style.settings;
-    request.camera = cameras_[u.scene][u.view];
-    request.timePasses = false;
-    const core::Image image = worker.renderer->render(request);
+    const StimulusView view{spec_.width, spec_.height, style.name, style.settings, cameras_[u.scene][u.view]};
+    const core::Image image = StimulusProducer::picture(*worker.renderer, view);
     recordGpu(*worker.context);
+    const StimulusProducer producer(*worker.painter);
     const std::string stem = stimulusStem(u, sceneEntry, style);
     RenderedStimulus base;
-    base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = *request.camera;
+    base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = view.camera;
     std::vector<RenderedStimulus> out;
     const auto& probeSets = questions_[u.scene][u.view];
     if (probeSets.empty()) {
       base.id = stem;
-      out.push_back(save(base, image));
+      out.push_back(save(base, producer.produce(image, {})));
       return out;
     }
     for (std::size_t p = 0; p < probeSets.size(); ++p)
@@ -216,9 +203,7 @@ class SetJob {
         s.question = int(q);
         s.probes = probeSets[p][q];
         s.id = stem + "_p" + std::to_string(p + 1) + "_q" + std::to_string(q + 1);
-        core::Image labelled = image;
-        worker.painter->paint(labelled, visibleMarks(s.probes.marks));
-        out.push_back(save(s, labelled));
+        out.push_back(save(s, producer.produce(image, s.probes.marks)));
       }
     return out;
   }
@@ -233,11 +218,10 @@ class SetJob {
   gpu::GpuInfo gpu() const { return gpu_; }
 
  private:
-  RenderedStimulus save(RenderedStimulus s, const core::Image& image) {
-    const std::vector<std::uint8_t> png = core::encodePng(image);
+  RenderedStimulus save(RenderedStimulus s, const ProducedStimulus& produced) {
     s.image = "images/" + s.id + ".png";
-    s.sha256 = core::sha256Hex(png);
-    core::writeFileAtomically((out_ / s.image).string(), png);
+    s.sha256 = produced.sha256;
+    core::writeFileAtomically((out_ / s.image).string(), produced.png);
     progress_->advance();
     return s;
   }
