@@ -35,8 +35,7 @@ void rasterScene(FrameContext& frame, RasterMode mode, float alpha) {
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &frame.raster.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &frame.raster.projection[0][0]);
+  setCameraUniforms(program, frame.raster);
   glUniform1i(program.uniform("uLighting"), frame.raster.lighting);
   glUniform1f(program.uniform("uAlpha"), mode == RasterMode::ZBuffer ? 1.0f : alpha);
   frame.gpuScene.bindObjectTable();

@@ -30,8 +30,7 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
   glViewport(0, 0, frame.width, frame.height);
   glDisable(GL_DEPTH_TEST);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &frame.raster.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &frame.raster.projection[0][0]);
+  setCameraUniforms(program, frame.raster);
   glUniform1i(program.uniform("uWidth"), frame.width);
   glUniform1i(program.uniform("uHeight"), frame.height);
   glUniform3fv(program.uniform("uLineColor"), 1, &color[0]);

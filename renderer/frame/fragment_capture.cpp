@@ -12,8 +12,7 @@ void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int he
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
+  setCameraUniforms(program, u);
   glUniform1i(program.uniform("uLighting"), u.lighting);  // -1 (absent) is ignored by GL
   glUniform1i(program.uniform("uWidth"), width);
 }

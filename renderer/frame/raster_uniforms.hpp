@@ -3,6 +3,8 @@
 // silhouette lines, the opaque and unsorted styles) sets as uView, uProjection and uLighting.
 #include <glm/glm.hpp>
 
+#include "renderer/gpu/shader_program.hpp"
+
 namespace tlab::render {
 
 struct RasterUniforms {
@@ -10,5 +12,8 @@ struct RasterUniforms {
   glm::mat4 projection{1.0f};
   int lighting = 1;  // 0 none, 1 headlight
 };
+
+// Sets uView and uProjection of `program` (in use) from `u`.
+void setCameraUniforms(const gpu::ShaderProgram& program, const RasterUniforms& u);
 
 }  // namespace tlab::render

@@ -57,8 +57,7 @@ bool DepthPeeling::peel(const GpuScene& scene, const RasterUniforms& u, const Il
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
+  setCameraUniforms(program, u);
   glUniform1i(program.uniform("uLayer"), layer);
   glUniform1i(program.uniform("uPreviousDepth"), 0);
   glBindTextureUnit(0, depth_[1 - current].id());
