@@ -1,19 +1,17 @@
 #include "stimuli/sets/stimulus_set_renderer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/walkthrough_scene.hpp"
+#include "stimuli/sets/parallel_for.hpp"
 #include "stimuli/sets/booklet_pdf.hpp"
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
@@ -57,33 +55,6 @@ std::string twoDigits(std::size_t i) {
 std::string resolveSource(const std::string& source, const std::string& setFile) {
   if (source.rfind("builtin:", 0) == 0 || fs::path(source).is_absolute()) return source;
   return (fs::path(setFile).parent_path() / source).string();
-}
-
-// Runs body(i) for i in [0, count) on `jobs` threads (the caller's thread is one of them), each
-// thread first calling setUp() for its own state. The first exception stops the others and is
-// rethrown. Results must be written to per-index slots: the order of execution never matters.
-template <class SetUp, class Body>
-void parallelFor(std::size_t count, int jobs, SetUp setUp, Body body) {
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::mutex failureMutex;
-  std::exception_ptr failure;
-  const auto work = [&] {
-    try {
-      auto state = setUp();
-      for (std::size_t i = next++; i < count && !stop; i = next++) body(i, state);
-    } catch (...) {
-      const std::lock_guard lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      stop = true;
-    }
-  };
-  const int workers = std::max(1, std::min<int>(jobs, int(count)));
-  std::vector<std::thread> threads;
-  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
 }
 
 // What a GL worker keeps between its units: its context, the label font, the last scene uploaded.
