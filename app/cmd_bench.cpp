@@ -10,7 +10,7 @@
 
 #include "app/bench_scene.hpp"
 #include "app/commands.hpp"
-#include "app/frame_timing.hpp"
+#include "bench/measure/render_sweep.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
@@ -25,16 +25,6 @@ struct BenchRenderOptions {
   std::string fill = "both";
   std::string style = "constant";
   int repeats = 3;
-};
-
-struct Row {
-  std::string sweep, scene;
-  int size = 0;
-  std::size_t triangles = 0;
-  std::string fill;
-  std::uint64_t fragments = 0;
-  std::vector<std::pair<std::string, double>> passes;  // medians
-  double listMs = 0, floorMs = 0;
 };
 
 // Least-squares line through (x, y) and its coefficient of determination.
@@ -62,24 +52,6 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-Row measure(const std::string& sweep, const std::string& source, int size, render::FillMethod fill,
-            const BenchRenderOptions& o) {
-  render::Renderer renderer(render::loadScene(source));
-  render::RenderRequest q;
-  q.width = q.height = size;
-  q.style = o.style;
-  q.fill = fill;
-  Row row{sweep, source, size, renderer.scene().triangleCount(), render::fillMethodName(fill)};
-  const FrameTiming t = timeFrames(renderer, q, o.repeats);
-  row.passes = t.passes;
-  row.fragments = t.fragments;
-  row.listMs = passSum(row.passes);
-  render::RenderRequest floor = q;
-  floor.style = "unsorted";
-  row.floorMs = passSum(timeFrames(renderer, floor, o.repeats).passes);
-  return row;
-}
-
 void runBenchRender(const BenchRenderOptions& o) {
   const auto context = gpu::createHeadlessContext();
   std::vector<render::FillMethod> fills;
@@ -88,12 +60,13 @@ void runBenchRender(const BenchRenderOptions& o) {
   if (fills.empty()) throw std::invalid_argument("--fill must be scatter, list or both");
   const std::vector<int> sizes = o.quick ? std::vector<int>{128, 256, 512} : std::vector<int>{128, 256, 512, 1024, 2048};
   const std::vector<int> triangles = o.quick ? std::vector<int>{10000, 100000} : std::vector<int>{10000, 30000, 100000, 300000, 1000000};
-  std::vector<Row> rows;
+  std::vector<bench::RenderSweepRow> rows;
   for (auto fill : fills) {
-    for (int s : sizes) rows.push_back(measure("resolution", "builtin:torus?triangles=100000", s, fill, o));
+    for (int s : sizes) rows.push_back(bench::measureRenderSweep("resolution", "builtin:torus?triangles=100000", s, fill, o.style, o.repeats));
     for (int t : triangles)
-      rows.push_back(measure("triangles", "builtin:torus?triangles=" + std::to_string(t), o.quick ? 512 : 1024, fill, o));
-    rows.push_back(measure("layers", "builtin:quad-stack?n=16", 512, fill, o));
+      rows.push_back(bench::measureRenderSweep("triangles", "builtin:torus?triangles=" + std::to_string(t), o.quick ? 512 : 1024, fill,
+                                                o.style, o.repeats));
+    rows.push_back(bench::measureRenderSweep("layers", "builtin:quad-stack?n=16", 512, fill, o.style, o.repeats));
   }
   // Columns: every pass that ran, in the order passes run (fill, sort, [connect, solve,] compose).
   std::vector<std::string> passNames;

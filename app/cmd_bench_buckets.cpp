@@ -5,8 +5,6 @@
 // filtered by shape, as in the illustration buffer) on the same filled buffer, the k-buffer
 // passes, and a whole plain k-buffer frame with constant opacity as the floor. Target: buckets >= 5x faster at >= 16 objects.
 #include <algorithm>
-#include <chrono>
-#include <ctime>
 #include <cstdio>
 #include <iostream>
 #include <map>
@@ -15,12 +13,9 @@
 
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
-#include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
-#include "renderer/kbuffer/bucket_neighbors.hpp"
-#include "renderer/ops/screen_space_curvature.hpp"
-#include "renderer/pipeline/renderer.hpp"
-#include "renderer/scene/scene_source.hpp"
+#include "bench/measure/bucket_measurement.hpp"
+#include "renderer/kbuffer/bucketed_kbuffer.hpp"
 
 namespace tlab::app {
 
@@ -34,91 +29,6 @@ struct BucketBenchOptions {
   int repeats = 3;
   bool json = false;
 };
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-// Wall-clock and process CPU milliseconds of one GL job, finished with glFinish. The CPU time
-// counts llvmpipe's worker threads too, so it is the robust figure on a shared machine.
-struct Timing {
-  double wallMs = 0, cpuMs = 0;
-};
-template <typename F>
-Timing timeJob(F&& job) {
-  glFinish();
-  const auto wall = std::chrono::steady_clock::now();
-  const std::clock_t cpu = std::clock();
-  job();
-  glFinish();
-  return {std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - wall).count(),
-          1000.0 * double(std::clock() - cpu) / CLOCKS_PER_SEC};
-}
-
-struct BucketRow {
-  int objects = 0;
-  std::uint64_t fragments = 0;
-  double zInsertMs = 0, bucketsMs = 0, dataMs = 0, curvatureMs = 0;
-  Timing bucketQuery, bruteQuery, plainFrame;
-};
-
-// One object count: the k-buffer is filled once; the two neighbour queries then run
-// alternately on the same buffer, `repeats` times each after a warm-up (medians).
-BucketRow measure(const BucketBenchOptions& o, int width, int height, int objects) {
-  const render::Scene scene =
-      render::loadScene("builtin:quad-stack?n=" + std::to_string(o.layers) + "&m=" + std::to_string(objects));
-  const render::Camera camera = *scene.camera;
-  render::GpuScene gpuScene(scene);
-  gpu::ShaderCache shaders;
-  render::RasterUniforms raster;
-  raster.view = camera.view();
-  raster.projection = camera.projection(float(width) / float(height));
-  render::KBufferSettings settings;
-  settings.k = static_cast<std::uint32_t>(o.k);
-  settings.nearPlane = camera.nearPlane;
-  settings.farPlane = camera.farPlane;
-  render::BucketedKBuffer kb(shaders, width, height, settings);
-  render::PassTimer warmTimer(true);
-  kb.build(gpuScene, raster, warmTimer);  // compiles the fill shaders
-  render::PassTimer timer(true);
-  kb.build(gpuScene, raster, timer);
-  BucketRow row;
-  row.objects = objects;
-  row.fragments = kb.fragmentCount();
-  row.zInsertMs = timer.get("z-insert");
-  row.bucketsMs = timer.get("buckets");
-  row.dataMs = timer.get("data");
-  using render::kbuffer::NeighborSearch;
-  render::findBucketNeighbors(kb, shaders, NeighborSearch::Buckets);
-  render::findBucketNeighbors(kb, shaders, NeighborSearch::BruteForce);
-  std::vector<double> bw, bc, fw, fc;
-  for (int i = 0; i < o.repeats; ++i) {
-    const Timing b = timeJob([&] { render::findBucketNeighbors(kb, shaders, NeighborSearch::Buckets); });
-    const Timing f = timeJob([&] { render::findBucketNeighbors(kb, shaders, NeighborSearch::BruteForce); });
-    bw.push_back(b.wallMs), bc.push_back(b.cpuMs), fw.push_back(f.wallMs), fc.push_back(f.cpuMs);
-  }
-  row.bucketQuery = {median(bw), median(bc)};
-  row.bruteQuery = {median(fw), median(fc)};
-  render::computeScreenSpaceCurvature(kb, shaders, 64.0f);
-  row.curvatureMs = timeJob([&] { render::computeScreenSpaceCurvature(kb, shaders, 64.0f); }).wallMs;
-  // The floor: a whole plain k-buffer frame (Z pass, data pass, blending with constant α).
-  render::Renderer renderer(scene);
-  render::RenderRequest plain;
-  plain.width = width;
-  plain.height = height;
-  plain.style = "curvature";
-  plain.settings = {{"k", std::to_string(o.k)}, {"mode", "plain"}};
-  plain.timePasses = false;
-  renderer.render(plain);
-  std::vector<double> pw, pc;
-  for (int i = 0; i < o.repeats; ++i) {
-    const Timing t = timeJob([&] { renderer.render(plain); });
-    pw.push_back(t.wallMs), pc.push_back(t.cpuMs);
-  }
-  row.plainFrame = {median(pw), median(pc)};
-  return row;
-}
 
 void runBucketBench(const BucketBenchOptions& o) {
   const auto context = gpu::createHeadlessContext();
@@ -138,7 +48,7 @@ void runBucketBench(const BucketBenchOptions& o) {
                 "data", "nbr_bkt", "nbr_brute", "cpu_bkt", "cpu_brute", "x_wall", "x_cpu", "curvature", "plain_kbuf");
   }
   for (int m : o.objects) {
-    const BucketRow r = measure(o, width, height, m);
+    const bench::BucketRow r = bench::measureBuckets({o.layers, o.k, o.repeats, width, height}, m);
     const double xWall = r.bruteQuery.wallMs / r.bucketQuery.wallMs, xCpu = r.bruteQuery.cpuMs / r.bucketQuery.cpuMs;
     if (o.json) {
       rows.push_back({{"objects", m}, {"layers", o.layers}, {"k", o.k}, {"fragments", r.fragments},

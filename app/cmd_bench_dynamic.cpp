@@ -13,6 +13,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "bench/measure/frame_timing.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
@@ -31,35 +32,6 @@ struct DynamicBenchOptions {
   double degreesPerFrame = 2.0;
   bool json = false;
 };
-
-struct Timing {
-  double medianMs = 0, meanMs = 0;
-  std::uint64_t fragments = 0;
-  std::vector<std::pair<std::string, double>> passes;  // of the last frame
-};
-
-// Wall-clock time of `frames` frames (each ends with the image read back, so the GPU work is in
-// it) after one warm-up frame; frame i uses camera i of the orbit.
-Timing timeStyle(render::Renderer& renderer, render::RenderRequest request, const std::vector<render::Camera>& orbit) {
-  render::RenderStats stats;
-  request.camera = orbit.front();
-  renderer.render(request, &stats);  // warm-up: shader compilation, pool growth
-  std::vector<double> ms;
-  for (const auto& camera : orbit) {
-    request.camera = camera;
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    renderer.render(request, &stats);
-    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  Timing t;
-  for (double m : ms) t.meanMs += m / double(ms.size());
-  std::sort(ms.begin(), ms.end());
-  t.medianMs = ms[ms.size() / 2];
-  t.fragments = stats.fragments;
-  t.passes = stats.passMilliseconds;
-  return t;
-}
 
 void runDynamicBench(const DynamicBenchOptions& o) {
   const auto context = gpu::createHeadlessContext();
@@ -81,8 +53,8 @@ void runDynamicBench(const DynamicBenchOptions& o) {
   render::RenderRequest dynamic = request;
   dynamic.style = "dynamic";
   render::findStyle("dynamic").resolve(dynamic.settings);  // bad --set: fail before timing
-  const Timing opaqueTime = timeStyle(renderer, opaque, orbit);
-  const Timing dynamicTime = timeStyle(renderer, dynamic, orbit);
+  const bench::OrbitTiming opaqueTime = bench::timeOrbit(renderer, opaque, orbit);
+  const bench::OrbitTiming dynamicTime = bench::timeOrbit(renderer, dynamic, orbit);
   const double ratio = dynamicTime.medianMs / opaqueTime.medianMs;
   if (o.json) {
     nlohmann::json passes = nlohmann::json::object();

@@ -10,11 +10,12 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "bench/measure/gl_timing.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gl.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/peel/layered_grid_scene.hpp"
-#include "renderer/peel/peeling_renderer.hpp"
+#include "renderer/pipeline/renderer.hpp"
 
 namespace tlab::app {
 
@@ -29,22 +30,6 @@ struct PeelBenchOptions {
   int repeats = 3;
   bool json = false;
 };
-
-// Median wall-clock milliseconds of `repeats` frames after one warm-up frame (each frame ends
-// with a read-back, so the GPU work is included).
-template <typename F>
-double medianMs(int repeats, F&& frame) {
-  frame();
-  std::vector<double> t;
-  for (int i = 0; i < repeats; ++i) {
-    glFinish();
-    const auto start = std::chrono::steady_clock::now();
-    frame();
-    t.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
-}
 
 void runPeelBench(const PeelBenchOptions& o) {
   const auto context = gpu::createHeadlessContext();
@@ -63,19 +48,21 @@ void runPeelBench(const PeelBenchOptions& o) {
   for (int L : o.layers) {
     const render::Scene scene = render::makeLayeredGridScene(L, o.triangles);
     render::Renderer buffer(scene);
-    render::PeelingRenderer peeler(scene);
+    render::Renderer peeler(scene);
+    render::RenderRequest peelRequest = request;
+    peelRequest.depthPeeling = true;
     render::RenderStats bufferStats;
-    render::PeelStats peelStats;
-    const double bufferMs = medianMs(o.repeats, [&] { buffer.render(request, &bufferStats); });
-    const double peelMs = medianMs(o.repeats, [&] { peeler.render(request, &peelStats); });
+    render::RenderStats peelStats;
+    const double bufferMs = bench::medianFrameMs(o.repeats, [&] { buffer.render(request, &bufferStats); });
+    const double peelMs = bench::medianFrameMs(o.repeats, [&] { peeler.render(peelRequest, &peelStats); });
     const double ratio = peelMs / bufferMs;
     if (o.json) {
       rows.push_back({{"layers", L}, {"triangles", scene.triangleCount()}, {"fragments", bufferStats.fragments},
-                      {"buffer_ms", bufferMs}, {"peel_ms", peelMs}, {"peel_iterations", peelStats.iterations},
+                      {"buffer_ms", bufferMs}, {"peel_ms", peelMs}, {"peel_iterations", peelStats.peelIterations},
                       {"ratio", ratio}, {"target", L / 2.0}});
     } else {
       std::printf("%4d %9zu %10llu %10.1f %10.1f %10d %8.2f %8.1f\n", L, scene.triangleCount(),
-                  static_cast<unsigned long long>(bufferStats.fragments), bufferMs, peelMs, peelStats.iterations, ratio, L / 2.0);
+                  static_cast<unsigned long long>(bufferStats.fragments), bufferMs, peelMs, peelStats.peelIterations, ratio, L / 2.0);
     }
   }
   if (o.json) std::cout << rows.dump(2) << "\n";

@@ -7,7 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench_scene.hpp"
-#include "app/frame_timing.hpp"
+#include "bench/measure/frame_timing.hpp"
 #include "app/gl_option.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gl_backend.hpp"
@@ -21,7 +21,7 @@ namespace {
 
 struct BenchRow {
   std::string scene, style, size, error;
-  FrameTiming timing;
+  bench::FrameTiming timing;
   double ratio = 0;  // frame time over the reference style's on the same scene and size
 };
 
@@ -78,7 +78,7 @@ std::vector<BenchRow> benchScene(const std::string& source, const std::string& c
     row.scene = source, row.style = style, row.size = size;
     try {
       so.style = style;
-      row.timing = timeFrames(renderer, so.request(renderer.scene()), frames);
+      row.timing = bench::timeFrames(renderer, so.request(renderer.scene()), frames);
     } catch (const std::exception& e) {
       row.error = e.what();
     }

@@ -9,7 +9,7 @@
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "core/image.hpp"
-#include "renderer/peel/peeling_renderer.hpp"
+#include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/sets/label_painter.hpp"
 
@@ -33,8 +33,8 @@ core::Image renderFigure(const FigureSpec& f, const std::string& size) {
   o.size = size;
   o.camera = f.camera;
   render::Scene scene = render::loadScene(f.scene, sceneCatalog());
-  const render::RenderRequest request = o.request(scene);
-  if (f.renderer == "peel") return render::PeelingRenderer(std::move(scene)).render(request);
+  render::RenderRequest request = o.request(scene);
+  request.depthPeeling = f.renderer == "peel";
   return render::Renderer(std::move(scene)).render(request);
 }
 

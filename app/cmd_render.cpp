@@ -1,7 +1,6 @@
 // tlab render: one picture of a scene in a transparency style.
 #include <fstream>
 #include <iostream>
-#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -11,7 +10,7 @@
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/gpu/window_context.hpp"
 #include "core/image.hpp"
-#include "renderer/peel/peeling_renderer.hpp"
+#include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
 
@@ -39,25 +38,10 @@ std::string styleListing() {
   return out + "  (every style also takes lighting=headlight|none)";
 }
 
-// Depth peeling (IRIS Sec. 5.1) instead of the illustration buffer, for the local styles.
-core::Image renderPeeled(render::Scene scene, const render::RenderRequest& request, render::RenderStats& stats,
-                           int& iterations) {
-  render::PeelingRenderer peeler(std::move(scene));
-  render::PeelStats peel;
-  core::Image image = peeler.render(request, &peel);
-  stats.triangles = peeler.scene().triangleCount();
-  stats.passMilliseconds = peel.passMilliseconds;
-  stats.camera = peel.camera;
-  stats.width = request.width;
-  stats.height = request.height;
-  iterations = peel.iterations;
-  return image;
-}
-
 void runRender(const RenderOptions& o) {
   if (o.output.empty() && !o.window) throw std::invalid_argument("render: give -o FILE.png (or --window)");
   render::Scene scene = render::loadScene(o.scene.scene, sceneCatalog());
-  const render::RenderRequest request = o.scene.request(scene);
+  render::RenderRequest request = o.scene.request(scene);
   std::unique_ptr<gpu::GpuContext> context;
   gpu::WindowContext* window = nullptr;
   if (o.window) {
@@ -69,27 +53,21 @@ void runRender(const RenderOptions& o) {
   }
   if (o.renderer != "buffer" && o.renderer != "peel") throw std::invalid_argument("--renderer must be buffer or peel");
   if (o.renderer == "peel" && !o.layersOut.empty()) throw std::invalid_argument("--layers-out needs --renderer buffer");
+  request.depthPeeling = o.renderer == "peel";  // IRIS Sec. 5.1, local styles only
   render::RenderStats stats;
-  int peelIterations = 0;
-  std::optional<render::Renderer> renderer;
-  core::Image image;
-  if (o.renderer == "peel") {
-    image = renderPeeled(std::move(scene), request, stats, peelIterations);
-  } else {
-    renderer.emplace(std::move(scene));
-    image = renderer->render(request, &stats);
-  }
+  render::Renderer renderer(std::move(scene));
+  const core::Image image = renderer.render(request, &stats);
   std::vector<std::pair<std::string, std::vector<std::uint8_t>>> files;  // written all or none
   if (!o.output.empty()) files.emplace_back(o.output, core::encodePng(image));
   if (!o.layersOut.empty())
-    files.emplace_back(o.layersOut, core::encodePgm16(renderer->layerCounts(), image.width, image.height));
+    files.emplace_back(o.layersOut, core::encodePgm16(renderer.layerCounts(), image.width, image.height));
   if (!o.statsJson.empty()) {
     nlohmann::json j = statsToJson(stats, context->info());
     j["style"] = request.style;
     j["settings"] = request.settings;
     j["scene"] = o.scene.scene;
     j["renderer"] = o.renderer;
-    if (o.renderer == "peel") j["peel_iterations"] = peelIterations;
+    if (request.depthPeeling) j["peel_iterations"] = stats.peelIterations;
     const std::string text = j.dump(2) + "\n";
     files.emplace_back(o.statsJson, std::vector<std::uint8_t>(text.begin(), text.end()));
   }

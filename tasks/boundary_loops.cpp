@@ -5,7 +5,7 @@
 #include <map>
 #include <stdexcept>
 
-#include "tasks/mesh_edges.hpp"
+#include "renderer/scene/mesh_welding.hpp"
 
 namespace tlab::tasks {
 
@@ -33,7 +33,7 @@ glm::dvec3 BoundaryLoop::pointAt(double arc) const {
 std::vector<BoundaryLoop> boundaryLoops(const WeldedMesh& mesh, int object) {
   // Directed boundary edges, as their single triangle traverses them.
   std::multimap<std::uint32_t, std::uint32_t> next;
-  for (const auto& e : meshEdges(mesh))
+  for (const auto& e : render::triangleEdges(mesh.triangles))
     if (e.isBoundary()) {
       if (e.firstRunsForward) next.emplace(e.v0, e.v1);
       else next.emplace(e.v1, e.v0);

@@ -1,6 +1,6 @@
 #include "tasks/silhouette_edges.hpp"
 
-#include "tasks/mesh_edges.hpp"
+#include "renderer/scene/mesh_welding.hpp"
 
 namespace tlab::tasks {
 
@@ -16,7 +16,7 @@ std::vector<SilhouetteEdge> silhouetteEdges(const std::vector<WeldedMesh>& welde
   std::vector<SilhouetteEdge> out;
   for (std::size_t o = 0; o < welded.size(); ++o) {
     const WeldedMesh& mesh = welded[o];
-    for (const auto& e : meshEdges(mesh)) {
+    for (const auto& e : render::triangleEdges(mesh.triangles)) {
       SilhouetteEdge s{mesh.positions[e.v0], mesh.positions[e.v1], SilhouetteKind::Boundary, int(o)};
       if (e.isBoundary()) {
         out.push_back(s);

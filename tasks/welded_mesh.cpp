@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <map>
-#include <tuple>
 
 namespace tlab::tasks {
 
@@ -32,35 +30,10 @@ WeldedMesh weldMesh(const render::TriangleMesh& mesh, double relativeTolerance) 
     hi = glm::max(hi, glm::dvec3(p));
   }
   const double extent = mesh.positions.empty() ? 1.0 : std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-30});
-  const double tolerance = extent * relativeTolerance;
-  // Grid cells of the tolerance size; a vertex welds to the first earlier vertex within the
-  // tolerance in its own or a neighbouring cell (order-independent of the cell boundaries).
-  using Cell = std::tuple<long long, long long, long long>;
-  std::map<Cell, std::vector<std::uint32_t>> grid;
+  render::WeldedPositions<double> welded = render::weldPositions(mesh.positions, extent * relativeTolerance);
   WeldedMesh out;
-  std::vector<std::uint32_t> remap(mesh.positions.size());
-  for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-    const glm::dvec3 p(mesh.positions[v]);
-    const long long cx = std::llround(p.x / tolerance), cy = std::llround(p.y / tolerance), cz = std::llround(p.z / tolerance);
-    std::uint32_t found = UINT32_MAX;
-    for (int dx = -1; dx <= 1 && found == UINT32_MAX; ++dx)
-      for (int dy = -1; dy <= 1 && found == UINT32_MAX; ++dy)
-        for (int dz = -1; dz <= 1 && found == UINT32_MAX; ++dz) {
-          const auto it = grid.find({cx + dx, cy + dy, cz + dz});
-          if (it == grid.end()) continue;
-          for (const auto w : it->second)
-            if (glm::length(out.positions[w] - p) <= tolerance) {
-              found = w;
-              break;
-            }
-        }
-    if (found == UINT32_MAX) {
-      found = static_cast<std::uint32_t>(out.positions.size());
-      out.positions.push_back(p);
-      grid[{cx, cy, cz}].push_back(found);
-    }
-    remap[v] = found;
-  }
+  out.positions = std::move(welded.positions);
+  const std::vector<std::uint32_t>& remap = welded.index;
   for (std::size_t t = 0; t < mesh.triangles.size(); ++t) {
     const auto& tri = mesh.triangles[t];
     const std::array<std::uint32_t, 3> w = {remap[tri[0]], remap[tri[1]], remap[tri[2]]};

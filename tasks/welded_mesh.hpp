@@ -1,13 +1,15 @@
 #pragma once
 // A triangle mesh with coincident vertices welded (seams of duplicated vertices, UV-sphere poles)
 // in double precision: the topology the tasks reason about — boundaries are edges used by one
-// triangle of the welded mesh, geodesics cross seams.
+// triangle of the welded mesh (render::triangleEdges), geodesics cross seams. The welding itself
+// is the renderer's (renderer/scene/mesh_welding), in double.
 #include <array>
 #include <cstdint>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "renderer/scene/mesh_welding.hpp"
 #include "renderer/scene/triangle_mesh.hpp"
 
 namespace tlab::tasks {

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 
@@ -92,27 +93,6 @@ void FragmentBuffer::ensureCapacity(std::size_t fragments) {
   if (method_ == FillMethod::LinkedList) listNext_ = gpu::Buffer(capacity_ * 4);
 }
 
-void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int height, const gpu::ShaderProgram& program,
-                          const RasterUniforms& u) {
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.id());
-  glViewport(0, 0, width, height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_CULL_FACE);
-  glDisable(GL_BLEND);
-  program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
-  glUniform1i(program.uniform("uLighting"), u.lighting);  // -1 (absent) is ignored by GL
-  glUniform1i(program.uniform("uWidth"), width);
-}
-
-void endFragmentCapture(const GpuScene& scene) {
-  scene.bindObjectTable();
-  scene.draw();
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
 void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {
   beginFragmentCapture(emptyFbo_, width_, height_, program, u);
   glUniform1ui(program.uniform("uCapacity"), static_cast<GLuint>(capacity_));
@@ -176,6 +156,8 @@ void FragmentBuffer::fillLinkedList(const GpuScene& scene, const RasterUniforms&
     fragmentCount_ = prefixSum();
   });
 }
+
+void FragmentBuffer::build(FrameContext& frame, PassTimer& timer) { build(frame.gpuScene, frame.raster, timer); }
 
 void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {
   rerenders_ = 0;

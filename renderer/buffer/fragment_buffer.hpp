@@ -18,8 +18,10 @@
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
-#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/fragment_capture.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
 
 namespace tlab::render {
 
@@ -27,22 +29,7 @@ enum class FillMethod { CountScatter, LinkedList };
 FillMethod parseFillMethod(const std::string& name);  // "scatter" | "list"
 std::string fillMethodName(FillMethod m);
 
-struct RasterUniforms {
-  glm::mat4 view{1.0f};
-  glm::mat4 projection{1.0f};
-  int lighting = 1;  // 0 none, 1 headlight
-};
-
-// A raster pass that captures fragments into storage buffers (the illustration buffer's fills,
-// the k-buffer's passes): binds the attachment-less framebuffer at width × height with depth
-// test, culling and blending off, uses `program` and sets uView, uProjection, uLighting and uWidth.
-// The caller sets its own uniforms, then endFragmentCapture draws the scene and waits for the
-// storage writes.
-void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int height, const gpu::ShaderProgram& program,
-                          const RasterUniforms& u);
-void endFragmentCapture(const GpuScene& scene);
-
-class FragmentBuffer {
+class FragmentBuffer final : public Fill {
  public:
   // `initialCapacity` fragments are allocated up front (0: one per pixel); the pool grows as
   // needed up to `maxBytes` per fragment array (0: the GL limit for one shader storage block),
@@ -52,6 +39,7 @@ class FragmentBuffer {
 
   // Fill (rasterize all layers) and sort. Timed as passes "fill" and "sort".
   void build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer);
+  void build(FrameContext& frame, PassTimer& timer) override;  // Fill: the frame's scene and camera
 
   // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes.
   void bindSorted() const;

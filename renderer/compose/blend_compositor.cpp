@@ -1,11 +1,12 @@
 #include "renderer/compose/blend_compositor.hpp"
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
-void BlendCompositor::run(FrameContext& frame) {
-  FragmentBuffer& buffer = *frame.buffer;
+void composeBlend(FrameContext& frame, float alpha) {
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/blend.comp", buffer.layout().defines());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
   buffer.bindSorted();
@@ -13,7 +14,7 @@ void BlendCompositor::run(FrameContext& frame) {
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
-  glUniform1f(program.uniform("uAlpha"), alpha_);
+  glUniform1f(program.uniform("uAlpha"), alpha);
   gpu::dispatchLinear(buffer.pixels());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   readOutputBuffer(output, frame.image);

@@ -5,8 +5,8 @@
 //  Shading:      mean-curvature shading, colour × 2·tf1(κ), constant α (Fig. 6, Fig. 9(b));
 //  Transparency: mean-curvature shading and opacity tf2(|κ|, depth) (Figs. 7-8, Fig. 9(c)).
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/pipeline/frame_context.hpp"
-#include "renderer/styles/transfer_function.hpp"
+#include "renderer/frame/frame_context.hpp"
+#include "renderer/params/transfer_function.hpp"
 
 namespace tlab::render {
 

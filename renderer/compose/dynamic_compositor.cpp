@@ -1,6 +1,7 @@
 #include "renderer/compose/dynamic_compositor.hpp"
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
@@ -11,7 +12,7 @@ constexpr GLuint kBindOutput = 9, kBindCoverTarget = 10, kBindCoverDepth = 11, k
 
 // Per pixel (GL order): 1 + the farthest drawn target's object id (0: none) and its depth.
 TargetCoverage coverTargets(FrameContext& frame, int maxLayers, bool allAreTargets, int maskSize) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/dynamic_coverage.comp", buffer.layout().defines());
   gpu::Buffer target(buffer.pixels() * sizeof(std::uint32_t)), depth(buffer.pixels() * sizeof(float));
   target.bindBase(GL_SHADER_STORAGE_BUFFER, kBindCoverTarget);
@@ -33,7 +34,7 @@ TargetCoverage coverTargets(FrameContext& frame, int maxLayers, bool allAreTarge
 
 // Binds what compose/dynamic_surfaces.glsl reads; the returned buffer must outlive the dispatch.
 gpu::Buffer bindSurfaceInputs(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks) {
-  frame.buffer->bindSorted();
+  frame.fillAs<FragmentBuffer>().bindSorted();
   frame.gpuScene.bindObjectTable();
   gpu::Buffer ranks(drawRanks.size() * sizeof(std::uint32_t), drawRanks.data());
   ranks.bindBase(GL_SHADER_STORAGE_BUFFER, kBindDrawRank);
@@ -50,7 +51,7 @@ AlphaMask buildDynamicMask(FrameContext& frame, const std::vector<std::uint32_t>
 
 void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawRanks, const AlphaMask& mask,
                     const DynamicSettings& settings) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const gpu::Buffer ranks = bindSurfaceInputs(frame, drawRanks);
   const gpu::Buffer maskAlpha(mask.alpha.size() * sizeof(float), mask.alpha.data());
   const gpu::Buffer maskDepth(mask.depth.size() * sizeof(float), mask.depth.data());

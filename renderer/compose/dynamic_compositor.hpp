@@ -8,7 +8,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/ops/alpha_mask.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 

@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
@@ -11,7 +12,7 @@ constexpr GLuint kBindOutput = 9;  // BIND_OUTPUT in buffer/fragment_layout.glsl
 }  // namespace
 
 void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const FragmentProperties stored = buffer.layout().properties;
   if ((settings.opacity == IllustrativeSettings::Opacity::NormalVariation && !stored.has(FragmentProperty::NormalZGradient)) ||
       (settings.stripes != 0 && !stored.has(FragmentProperty::StGradient)))

@@ -3,8 +3,8 @@
 // (compose/illustrative_compose.comp): shading, opacity, window, stripes and silhouettes per
 // fragment, front-to-back blending with float accumulation.
 #include "renderer/gpu/gl_objects.hpp"
-#include "renderer/pipeline/frame_context.hpp"
-#include "renderer/styles/illustrative_settings.hpp"
+#include "renderer/frame/frame_context.hpp"
+#include "renderer/params/illustrative_settings.hpp"
 
 namespace tlab::render {
 

@@ -7,7 +7,7 @@
 
 namespace tlab::render {
 
-void RasterPass::run(FrameContext& frame) {
+void rasterScene(FrameContext& frame, RasterMode mode, float alpha) {
   const int w = frame.width, h = frame.height;
   gpu::Renderbuffer color = gpu::makeRenderbuffer(), depth = gpu::makeRenderbuffer();
   glNamedRenderbufferStorage(color.id(), GL_RGBA32F, w, h);
@@ -21,7 +21,7 @@ void RasterPass::run(FrameContext& frame) {
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glViewport(0, 0, w, h);
   glDisable(GL_CULL_FACE);
-  if (mode_ == Mode::ZBuffer) {
+  if (mode == RasterMode::ZBuffer) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -35,10 +35,9 @@ void RasterPass::run(FrameContext& frame) {
   glClearDepth(1.0);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &frame.raster.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &frame.raster.projection[0][0]);
+  setCameraUniforms(program, frame.raster);
   glUniform1i(program.uniform("uLighting"), frame.raster.lighting);
-  glUniform1f(program.uniform("uAlpha"), mode_ == Mode::ZBuffer ? 1.0f : alpha_);
+  glUniform1f(program.uniform("uAlpha"), mode == RasterMode::ZBuffer ? 1.0f : alpha);
   frame.gpuScene.bindObjectTable();
   frame.gpuScene.draw();
   std::vector<glm::vec4> gl(std::size_t(w) * h);

@@ -1,20 +1,13 @@
 #pragma once
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 
-// Rasterizes the scene straight into a float colour target and reads it back: with the z-buffer
-// (style `opaque`) or with plain alpha blending in submission order (style `unsorted`).
-class RasterPass final : public RenderPass {
- public:
-  enum class Mode { ZBuffer, UnsortedBlend };
-  explicit RasterPass(Mode mode = Mode::ZBuffer, float alpha = 1.0f) : mode_(mode), alpha_(alpha) {}
-  std::string name() const override { return mode_ == Mode::ZBuffer ? "raster" : "blend"; }
-  void run(FrameContext& frame) override;
+enum class RasterMode { ZBuffer, UnsortedBlend };
 
- private:
-  Mode mode_;
-  float alpha_;
-};
+// Rasterizes the scene straight into a float colour target and reads it back: with the z-buffer
+// (style `opaque`) or with plain alpha blending of opacity `alpha` in submission order (style
+// `unsorted`).
+void rasterScene(FrameContext& frame, RasterMode mode, float alpha = 1.0f);
 
 }  // namespace tlab::render

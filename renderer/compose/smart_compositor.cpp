@@ -1,11 +1,12 @@
 #include "renderer/compose/smart_compositor.hpp"
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
 void composeSmart(FrameContext& frame, const TransparencyFields& fields, const SmartSettings& settings) {
-  const FragmentBuffer& buffer = *frame.buffer;
+  const FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   gpu::ShaderDefines defines = buffer.layout().defines();
   for (const auto& d : fields.defines()) defines.push_back(d);
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);

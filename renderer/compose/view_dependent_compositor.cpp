@@ -1,6 +1,7 @@
 #include "renderer/compose/view_dependent_compositor.hpp"
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
@@ -29,8 +30,7 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
   glViewport(0, 0, frame.width, frame.height);
   glDisable(GL_DEPTH_TEST);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &frame.raster.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &frame.raster.projection[0][0]);
+  setCameraUniforms(program, frame.raster);
   glUniform1i(program.uniform("uWidth"), frame.width);
   glUniform1i(program.uniform("uHeight"), frame.height);
   glUniform3fv(program.uniform("uLineColor"), 1, &color[0]);
@@ -47,7 +47,7 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
 }  // namespace
 
 void composeViewDependent(FrameContext& frame, const ViewDependentAlpha& alpha, const ViewDependentSettings& settings) {
-  FragmentBuffer& buffer = *frame.buffer;
+  FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/view_dependent_compose.comp", buffer.layout().defines());
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4)), visibleDepth(buffer.pixels() * 2 * sizeof(float));
   buffer.bindSorted();

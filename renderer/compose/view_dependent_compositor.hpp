@@ -3,8 +3,8 @@
 // (compose/view_dependent_compose.comp) and the black silhouette lines drawn over it
 // (ops/silhouette_lines.*).
 #include "renderer/ops/view_dependent_alpha.hpp"
-#include "renderer/pipeline/frame_context.hpp"
-#include "renderer/styles/illustrative_settings.hpp"
+#include "renderer/frame/frame_context.hpp"
+#include "renderer/params/illustrative_settings.hpp"
 
 namespace tlab::render {
 

@@ -4,6 +4,7 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/frame/frame_context.hpp"
 #include "renderer/kbuffer/bucket_table.hpp"
 
 namespace tlab::render {
@@ -54,6 +55,8 @@ void BucketedKBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScen
   glUniform1f(program.uniform("uFar"), settings_.farPlane);
   endFragmentCapture(scene);
 }
+
+void BucketedKBuffer::build(FrameContext& frame, PassTimer& timer) { build(frame.gpuScene, frame.raster, timer); }
 
 void BucketedKBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {
   bind();

@@ -14,11 +14,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/frame/fragment_capture.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_cache.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
-#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
 
 namespace tlab::render {
 
@@ -32,7 +33,7 @@ struct KBufferSettings {
   bool operator==(const KBufferSettings&) const = default;
 };
 
-class BucketedKBuffer {
+class BucketedKBuffer final : public Fill {
  public:
   // Throws std::invalid_argument for k outside 1..32 and gpu::GlError when W·H·k·8 bytes exceed
   // the shader storage block limit.
@@ -40,6 +41,7 @@ class BucketedKBuffer {
 
   // Z pass, bucket pass (with buckets), data pass; timed as "z-insert", "buckets", "data".
   void build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer);
+  void build(FrameContext& frame, PassTimer& timer) override;  // Fill: the frame's scene and camera
 
   int width() const { return width_; }
   int height() const { return height_; }

@@ -6,7 +6,8 @@
 
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Object-space silhouette edges (Diepstraten et al. 2002, Sec. 5, after Appel): the edge
-// adjacency of a mesh after welding coincident vertices, and per view the edges whose two faces
+// adjacency of a mesh after welding coincident vertices (scene/mesh_welding, in float), and per view the edges whose two faces
 // face opposite ways as seen from the eye (Diepstraten Eq. 1), plus boundary edges (used by one
 // face), which outline open surfaces.
 #include <array>
@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "renderer/scene/mesh_welding.hpp"
 #include "renderer/scene/triangle_mesh.hpp"
 
 namespace tlab::render {
@@ -43,6 +44,7 @@ class EdgeAdjacency {
   const std::vector<bool>& buried() const { return buried_; }
 
  private:
+  void collectEdges();
   void findBuriedEdges();
   std::vector<bool> buried_;
   std::vector<std::array<std::uint32_t, 3>> faces_;  // welded triangles, one per face normal

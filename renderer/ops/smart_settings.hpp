@@ -2,7 +2,7 @@
 // The parameters of smart transparency (Carnecky Fig. 9), read once from the style parameters.
 #include <string>
 
-#include "renderer/styles/style_params.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
 

@@ -5,6 +5,8 @@
 #include <stdexcept>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/peel/depth_peeling.hpp"
+#include "renderer/styles/local_style.hpp"
 #include "renderer/styles/style.hpp"
 
 namespace tlab::render {
@@ -24,6 +26,49 @@ Camera Renderer::resolveCamera(const RenderRequest& request) const {
   return fitCamera(scene_.boundingSphere(), float(request.width) / float(request.height));
 }
 
+template <typename T, typename Fits>
+T* Renderer::reusableFill(Fits&& fits) const {
+  T* const last = dynamic_cast<T*>(fill_.get());
+  return last && fits(*last) ? last : nullptr;
+}
+
+// The fill for this frame: depth peeling when the request asks for it, else the one the style
+// declares; the last frame's is kept when its size and settings still fit.
+Fill* Renderer::prepareFill(const Style& style, const StyleParams& params, const RenderRequest& request,
+                            const Camera& camera) {
+  const int w = request.width, h = request.height;
+  if (request.depthPeeling) {
+    const IllustrativeSettings shading = localShadingOf(style, params);  // throws for styles that are not local
+    DepthPeeling* peeling = reusableFill<DepthPeeling>([&](const DepthPeeling& p) { return p.width() == w && p.height() == h; });
+    if (!peeling) fill_ = std::make_unique<DepthPeeling>(shaders_, w, h);
+    peeling = static_cast<DepthPeeling*>(fill_.get());
+    peeling->setShading(shading);
+    return peeling;
+  }
+  FillSpec spec = style.fill(params);
+  if (spec.kind == FillSpec::Kind::None) {
+    fill_.reset();
+    return nullptr;
+  }
+  if (spec.kind == FillSpec::Kind::BucketedKBuffer) {
+    spec.kBuffer.nearPlane = camera.nearPlane;
+    spec.kBuffer.farPlane = camera.farPlane;
+    const auto fits = [&](const BucketedKBuffer& k) { return k.width() == w && k.height() == h && k.settings() == spec.kBuffer; };
+    if (!reusableFill<BucketedKBuffer>(fits)) fill_ = std::make_unique<BucketedKBuffer>(shaders_, w, h, spec.kBuffer);
+    return fill_.get();
+  }
+  FragmentProperties props = style.properties(params, SceneFacts{gpuScene_.componentCount()});
+  if (request.allProperties) props.bits = 0x1Fu;  // every FragmentProperty
+  // Keep the buffer (and its pool) across frames of the same size and layout.
+  const auto fits = [&](const FragmentBuffer& b) {
+    return request.initialPoolFragments == 0 && b.width() == w && b.height() == h && b.method() == request.fill &&
+           b.layout().properties.bits == props.bits;
+  };
+  if (!reusableFill<FragmentBuffer>(fits))
+    fill_ = std::make_unique<FragmentBuffer>(shaders_, w, h, FragmentLayout(props), request.fill, request.initialPoolFragments);
+  return fill_.get();
+}
+
 core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   if (request.width <= 0 || request.height <= 0 || request.width > 16384 || request.height > 16384)
     throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
@@ -37,40 +82,17 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
 
   core::Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
-  std::optional<KBufferSettings> kBufferSettings = style.kBufferFill(params);
-  if (kBufferSettings) {
-    kBufferSettings->nearPlane = camera.nearPlane;
-    kBufferSettings->farPlane = camera.farPlane;
-    buffer_.reset();
-    const bool reusable = kbuffer_ && kbuffer_->width() == request.width && kbuffer_->height() == request.height &&
-                          kbuffer_->settings() == *kBufferSettings;
-    if (!reusable) kbuffer_ = std::make_unique<BucketedKBuffer>(shaders_, request.width, request.height, *kBufferSettings);
-    kbuffer_->build(gpuScene_, raster, timer);
-  } else if (style.usesFragmentLists()) {
-    kbuffer_.reset();
-    FragmentProperties props = style.properties(params, SceneFacts{gpuScene_.componentCount()});
-    if (request.allProperties) props.bits = 0x1Fu;  // every FragmentProperty
-    const FragmentLayout layout(props);
-    // Keep the buffer (and its pool) across frames of the same size and layout.
-    const bool reusable = buffer_ && request.initialPoolFragments == 0 && buffer_->width() == request.width &&
-                          buffer_->height() == request.height && buffer_->method() == request.fill &&
-                          buffer_->layout().properties.bits == props.bits;
-    if (!reusable)
-      buffer_ = std::make_unique<FragmentBuffer>(shaders_, request.width, request.height, layout, request.fill,
-                                                 request.initialPoolFragments);
-    buffer_->build(gpuScene_, raster, timer);
-  } else {
-    buffer_.reset();
-    kbuffer_.reset();
-  }
+  Fill* const fill = prepareFill(style, params, request, camera);
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, buffer_.get(), image, shaders_, &drawOrder_, kbuffer_.get()};
+                     scene_.background, fill, image, shaders_, &drawOrder_};
+  if (fill) fill->build(frame, timer);
   std::vector<std::string> operations;
-  for (const auto& pass : style.passes(params)) {
-    timer.time(pass->name(), [&] { pass->run(frame); });
-    for (auto& op : pass->operations()) operations.push_back(pass->name() + ": " + op);
-  }
-  gpu::checkGl("rendering style " + style.name());
+  if (!fill || !fill->composesPicture())
+    for (const auto& pass : style.passes(params)) {
+      timer.time(pass->name(), [&] { pass->run(frame); });
+      for (auto& op : pass->operations()) operations.push_back(pass->name() + ": " + op);
+    }
+  gpu::checkGl((request.depthPeeling ? "depth peeling style " : "rendering style ") + style.name());
 
   if (stats) {
     *stats = RenderStats{};
@@ -80,34 +102,45 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
     stats->camera = camera;
     stats->width = request.width;
     stats->height = request.height;
-    if (kbuffer_) {
-      stats->fragments = kbuffer_->fragmentCount();
-      stats->fillMethod = kbuffer_->settings().buckets ? "bucketed-kbuffer" : "kbuffer";
-    }
-    if (buffer_) {
-      stats->fragments = buffer_->fragmentCount();
-      stats->rerenders = buffer_->rerenders();
-      stats->poolGrowths = buffer_->poolGrowths();
-      stats->poolCapacity = buffer_->capacity();
-      stats->fillMethod = fillMethodName(buffer_->method());
-      stats->fragmentProperties = buffer_->layout().propertyNames();
-      const auto counts = buffer_->pixelCounts();
-      std::size_t covered = 0;
-      for (auto c : counts) {
-        stats->maxListLength = std::max(stats->maxListLength, c);
-        covered += c > 0;
-      }
-      stats->meanListLength = double(stats->fragments) / double(counts.size());
-      stats->meanCoveredListLength = covered ? double(stats->fragments) / double(covered) : 0.0;
-    }
+    describeFill(*stats);
   }
   return image;
 }
 
+void Renderer::describeFill(RenderStats& stats) const {
+  if (const auto* peeling = dynamic_cast<const DepthPeeling*>(fill_.get())) stats.peelIterations = peeling->iterations();
+  if (const BucketedKBuffer* kbuffer = kBuffer()) {
+    stats.fragments = kbuffer->fragmentCount();
+    stats.fillMethod = kbuffer->settings().buckets ? "bucketed-kbuffer" : "kbuffer";
+  }
+  const auto* buffer = dynamic_cast<const FragmentBuffer*>(fill_.get());
+  if (!buffer) return;
+  stats.fragments = buffer->fragmentCount();
+  stats.rerenders = buffer->rerenders();
+  stats.poolGrowths = buffer->poolGrowths();
+  stats.poolCapacity = buffer->capacity();
+  stats.fillMethod = fillMethodName(buffer->method());
+  stats.fragmentProperties = buffer->layout().propertyNames();
+  const auto counts = buffer->pixelCounts();
+  std::size_t covered = 0;
+  for (auto c : counts) {
+    stats.maxListLength = std::max(stats.maxListLength, c);
+    covered += c > 0;
+  }
+  stats.meanListLength = double(stats.fragments) / double(counts.size());
+  stats.meanCoveredListLength = covered ? double(stats.fragments) / double(covered) : 0.0;
+}
+
+const FragmentBuffer& Renderer::listsOrThrow(const std::string& what) const {
+  const auto* buffer = dynamic_cast<const FragmentBuffer*>(fill_.get());
+  if (!buffer) throw std::logic_error(what + " a style with fragment lists (not 'opaque')");
+  return *buffer;
+}
+
 std::vector<std::uint16_t> Renderer::layerCounts() const {
-  if (!buffer_) throw std::logic_error("layer counts need a style with fragment lists (not 'opaque')");
-  const auto gl = buffer_->pixelCounts();
-  const std::size_t w = buffer_->width(), h = buffer_->height();
+  const FragmentBuffer& buffer = listsOrThrow("layer counts need");
+  const auto gl = buffer.pixelCounts();
+  const std::size_t w = buffer.width(), h = buffer.height();
   std::vector<std::uint16_t> out(w * h);
   for (std::size_t y = 0; y < h; ++y)
     for (std::size_t x = 0; x < w; ++x)
@@ -116,15 +149,15 @@ std::vector<std::uint16_t> Renderer::layerCounts() const {
 }
 
 std::vector<FragmentRecord> Renderer::fragmentsAt(int x, int y) const {
-  if (!buffer_) throw std::logic_error("inspecting fragments needs a style with fragment lists (not 'opaque')");
-  if (x < 0 || y < 0 || x >= buffer_->width() || y >= buffer_->height())
+  const FragmentBuffer& buffer = listsOrThrow("inspecting fragments needs");
+  if (x < 0 || y < 0 || x >= buffer.width() || y >= buffer.height())
     throw std::invalid_argument("pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
-                                std::to_string(buffer_->width()) + "x" + std::to_string(buffer_->height()) + " image");
-  const std::size_t p = std::size_t(buffer_->height() - 1 - y) * buffer_->width() + x;
-  const auto counts = buffer_->pixelCounts();
-  const auto heads = buffer_->pixelHeads();
-  const auto words = buffer_->sortedRecords(heads[p], counts[p]);
-  const FragmentLayout& L = buffer_->layout();
+                                std::to_string(buffer.width()) + "x" + std::to_string(buffer.height()) + " image");
+  const std::size_t p = std::size_t(buffer.height() - 1 - y) * buffer.width() + x;
+  const auto counts = buffer.pixelCounts();
+  const auto heads = buffer.pixelHeads();
+  const auto words = buffer.sortedRecords(heads[p], counts[p]);
+  const FragmentLayout& L = buffer.layout();
   const auto f = [&](std::size_t i, std::uint32_t off) {
     float v;
     std::memcpy(&v, &words[i * L.stride + off], 4);

@@ -1,5 +1,6 @@
 #pragma once
-// The picture flow: Scene → (fill → sort → the style's operators → compose) → Image.
+// The picture flow: Scene → (fill → sort → the style's operators → compose) → Image. The fill is
+// the one the style declares (pipeline/fill.hpp), or depth peeling when the request asks for it.
 #include <cstdint>
 #include <map>
 #include <memory>
@@ -11,10 +12,13 @@
 #include "core/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/frame/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
+
+class Style;
 
 struct RenderRequest {
   int width = 512;
@@ -25,6 +29,9 @@ struct RenderRequest {
   FillMethod fill = FillMethod::CountScatter;
   std::size_t initialPoolFragments = 0;          // 0: one per pixel
   bool allProperties = false;                    // store every fragment property (for inspect)
+  // Depth peeling (IRIS Sec. 5.1) instead of the style's fill: local styles only (constant, angle,
+  // normal-variation, iris); fill, initialPoolFragments and allProperties do not apply.
+  bool depthPeeling = false;
   bool timePasses = true;
 };
 
@@ -37,7 +44,8 @@ struct RenderStats {
   int poolGrowths = 0;
   std::size_t poolCapacity = 0;
   std::size_t triangles = 0;
-  std::string fillMethod;
+  std::string fillMethod;              // empty for depth peeling and for styles without a fill
+  int peelIterations = 0;              // depth peeling: layers + 1
   std::vector<std::string> fragmentProperties;
   std::vector<std::pair<std::string, double>> passMilliseconds;  // in the order they ran
   std::vector<std::string> operations;  // "pass: what it did or left out", where a pass says
@@ -73,15 +81,21 @@ class Renderer {
   std::vector<std::uint16_t> layerCounts() const;
   std::vector<FragmentRecord> fragmentsAt(int x, int y) const;
   // After render() with a style that fills with the bucketed k-buffer: that buffer, else null.
-  const BucketedKBuffer* kBuffer() const { return kbuffer_.get(); }
+  const BucketedKBuffer* kBuffer() const { return dynamic_cast<const BucketedKBuffer*>(fill_.get()); }
 
  private:
+  Fill* prepareFill(const Style& style, const StyleParams& params, const RenderRequest& request, const Camera& camera);
+  // The fill of the last frame as T when it is one, and when `fits` says it suits this frame.
+  template <typename T, typename Fits>
+  T* reusableFill(Fits&& fits) const;
+  const FragmentBuffer& listsOrThrow(const std::string& what) const;
+  void describeFill(RenderStats& stats) const;
+
   Scene scene_;
   GpuScene gpuScene_;
   gpu::ShaderCache shaders_;
-  std::unique_ptr<FragmentBuffer> buffer_;
-  GroupDrawOrder drawOrder_;  // state across successive frames (seed 004, Alg. 1 line 1)
-  std::unique_ptr<BucketedKBuffer> kbuffer_;
+  std::unique_ptr<Fill> fill_;  // kept across frames of the same size and settings (its pool, its GL objects)
+  GroupDrawOrder drawOrder_;    // state across successive frames (seed 004, Alg. 1 line 1)
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.

@@ -16,7 +16,7 @@ FragmentProperties ConstantStyle::properties(const StyleParams&, const SceneFact
 
 std::vector<std::unique_ptr<RenderPass>> ConstantStyle::passes(const StyleParams& params) const {
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<BlendCompositor>(static_cast<float>(params.number("alpha"))));
+  p.push_back(functionPass("compose", [alpha = static_cast<float>(params.number("alpha"))](FrameContext& f) { composeBlend(f, alpha); }));
   return p;
 }
 

@@ -14,46 +14,6 @@ CurvatureStylization stylizationOf(const StyleParams& params) {
   return CurvatureStylization::Transparency;
 }
 
-class BucketNeighborsPass final : public RenderPass {
- public:
-  explicit BucketNeighborsPass(kbuffer::NeighborSearch search) : search_(search) {}
-  std::string name() const override { return "neighbors"; }
-  void run(FrameContext& frame) override { findBucketNeighbors(*frame.kbuffer, frame.shaders, search_); }
-
- private:
-  kbuffer::NeighborSearch search_;
-};
-
-class CurvaturePass final : public RenderPass {
- public:
-  explicit CurvaturePass(float scale) : scale_(scale) {}
-  std::string name() const override { return "curvature"; }
-  void run(FrameContext& frame) override {
-    computeScreenSpaceCurvature(*frame.kbuffer, frame.shaders, scale_, frame.scene.boundingSphere().radius,
-                                frame.raster.projection[1][1]);
-  }
-
- private:
-  float scale_;
-};
-
-class CurvatureComposePass final : public RenderPass {
- public:
-  CurvatureComposePass(CurvatureStylization s, float alpha, CurvatureShadingFunction shading,
-                       CurvatureOpacityFunction opacity)
-      : stylization_(s), alpha_(alpha), shading_(std::move(shading)), opacity_(std::move(opacity)) {}
-  std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override {
-    composeCurvature(frame, *frame.kbuffer, stylization_, alpha_, shading_, opacity_);
-  }
-
- private:
-  CurvatureStylization stylization_;
-  float alpha_;
-  CurvatureShadingFunction shading_;
-  CurvatureOpacityFunction opacity_;
-};
-
 }  // namespace
 
 std::vector<ParamSpec> CurvatureStyle::params() const {
@@ -81,12 +41,12 @@ std::vector<ParamSpec> CurvatureStyle::params() const {
 
 FragmentProperties CurvatureStyle::properties(const StyleParams&, const SceneFacts&) const { return {}; }
 
-std::optional<KBufferSettings> CurvatureStyle::kBufferFill(const StyleParams& params) const {
+FillSpec CurvatureStyle::fill(const StyleParams& params) const {
   KBufferSettings s;
   s.k = static_cast<std::uint32_t>(params.number("k"));
   s.buckets = stylizationOf(params) != CurvatureStylization::Plain;
   s.shapeId = params.is("shape_id", "component") ? ShapeIdSource::Component : ShapeIdSource::Object;
-  return s;
+  return {FillSpec::Kind::BucketedKBuffer, s};
 }
 
 void CurvatureStyle::validate(const StyleParams& params) const {
@@ -101,13 +61,21 @@ std::vector<std::unique_ptr<RenderPass>> CurvatureStyle::passes(const StyleParam
   const CurvatureStylization stylization = stylizationOf(params);
   std::vector<std::unique_ptr<RenderPass>> p;
   if (stylization != CurvatureStylization::Plain) {
-    p.push_back(std::make_unique<BucketNeighborsPass>(params.is("query", "brute-force") ? kbuffer::NeighborSearch::BruteForce
-                                                                                         : kbuffer::NeighborSearch::Buckets));
-    p.push_back(std::make_unique<CurvaturePass>(static_cast<float>(params.number("scale"))));
+    const auto search = params.is("query", "brute-force") ? kbuffer::NeighborSearch::BruteForce : kbuffer::NeighborSearch::Buckets;
+    p.push_back(functionPass("neighbors", [search](FrameContext& f) {
+      findBucketNeighbors(f.fillAs<BucketedKBuffer>(), f.shaders, search);
+    }));
+    const auto scale = static_cast<float>(params.number("scale"));
+    p.push_back(functionPass("curvature", [scale](FrameContext& f) {
+      computeScreenSpaceCurvature(f.fillAs<BucketedKBuffer>(), f.shaders, scale, f.scene.boundingSphere().radius,
+                                  f.raster.projection[1][1]);
+    }));
   }
-  p.push_back(std::make_unique<CurvatureComposePass>(stylization, static_cast<float>(params.number("alpha")),
-                                                     CurvatureShadingFunction::parse(params.text("shading_tf")),
-                                                     CurvatureOpacityFunction::parse(params.text("opacity_tf"))));
+  const auto alpha = static_cast<float>(params.number("alpha"));
+  p.push_back(functionPass("compose", [stylization, alpha, shading = CurvatureShadingFunction::parse(params.text("shading_tf")),
+                                       opacity = CurvatureOpacityFunction::parse(params.text("opacity_tf"))](FrameContext& f) {
+    composeCurvature(f, f.fillAs<BucketedKBuffer>(), stylization, alpha, shading, opacity);
+  }));
   return p;
 }
 

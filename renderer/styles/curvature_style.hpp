@@ -16,7 +16,7 @@ class CurvatureStyle final : public Style {
   }
   std::vector<ParamSpec> params() const override;
   FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const override;
-  std::optional<KBufferSettings> kBufferFill(const StyleParams& params) const override;
+  FillSpec fill(const StyleParams& params) const override;
   void validate(const StyleParams& params) const override;
   std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const override;
 };

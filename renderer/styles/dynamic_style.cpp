@@ -36,44 +36,6 @@ struct DynamicFrame {
   AlphaMask mask;
 };
 
-// Alg. 1 line 1: re-sort the groups back to front for this frame's camera (the frame-coherent
-// bubble sort on the Renderer's GroupDrawOrder).
-class GroupOrderPass final : public RenderPass {
- public:
-  explicit GroupOrderPass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "order"; }
-  void run(FrameContext& frame) override {
-    if (!frame.drawOrder) throw std::logic_error("the dynamic style needs the renderer's group draw order");
-    frame.drawOrder->update(frame.camera.eye, frame.camera.target - frame.camera.eye);
-    frame_->ranks = frame.drawOrder->objectRanks();
-  }
-
- private:
-  std::shared_ptr<DynamicFrame> frame_;
-};
-
-// Alg. 2: the alpha mask from where targets are drawn.
-class AlphaMaskPass final : public RenderPass {
- public:
-  explicit AlphaMaskPass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "mask"; }
-  void run(FrameContext& frame) override { frame_->mask = buildDynamicMask(frame, frame_->ranks, frame_->settings); }
-
- private:
-  std::shared_ptr<DynamicFrame> frame_;
-};
-
-// Alg. 1 lines 2-7 and Sec. V.3: the surfaces blended back to front through the mask.
-class DynamicComposePass final : public RenderPass {
- public:
-  explicit DynamicComposePass(std::shared_ptr<DynamicFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override { composeDynamic(frame, frame_->ranks, frame_->mask, frame_->settings); }
-
- private:
-  std::shared_ptr<DynamicFrame> frame_;
-};
-
 void requireInteger(const StyleParams& p, const std::string& key) {
   const double v = p.number(key);
   if (v != std::floor(v)) throw std::invalid_argument("style 'dynamic': " + key + " must be a whole number, got " + p.values().at(key));
@@ -126,9 +88,17 @@ std::vector<std::unique_ptr<RenderPass>> DynamicStyle::passes(const StyleParams&
   auto frame = std::make_shared<DynamicFrame>();
   frame->settings = settingsFrom(params);
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<GroupOrderPass>(frame));
-  p.push_back(std::make_unique<AlphaMaskPass>(frame));
-  p.push_back(std::make_unique<DynamicComposePass>(frame));
+  // Alg. 1 line 1: re-sort the groups back to front for this frame's camera (the frame-coherent
+  // bubble sort on the Renderer's GroupDrawOrder).
+  p.push_back(functionPass("order", [frame](FrameContext& f) {
+    if (!f.drawOrder) throw std::logic_error("the dynamic style needs the renderer's group draw order");
+    f.drawOrder->update(f.camera.eye, f.camera.target - f.camera.eye);
+    frame->ranks = f.drawOrder->objectRanks();
+  }));
+  // Alg. 2: the alpha mask from where targets are drawn.
+  p.push_back(functionPass("mask", [frame](FrameContext& f) { frame->mask = buildDynamicMask(f, frame->ranks, frame->settings); }));
+  // Alg. 1 lines 2-7 and Sec. V.3: the surfaces blended back to front through the mask.
+  p.push_back(functionPass("compose", [frame](FrameContext& f) { composeDynamic(f, frame->ranks, frame->mask, frame->settings); }));
   return p;
 }
 

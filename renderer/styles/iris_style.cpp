@@ -8,16 +8,6 @@ namespace {
 
 using Opacity = IllustrativeSettings::Opacity;
 
-class IllustrativeComposePass final : public RenderPass {
- public:
-  explicit IllustrativeComposePass(IllustrativeSettings s) : settings_(std::move(s)) {}
-  std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override { composeIllustrative(frame, settings_); }
-
- private:
-  IllustrativeSettings settings_;
-};
-
 }  // namespace
 
 IrisStyle::IrisStyle(std::string name, Opacity opacity, bool selectable)
@@ -81,7 +71,7 @@ FragmentProperties IrisStyle::properties(const StyleParams& params, const SceneF
 
 std::vector<std::unique_ptr<RenderPass>> IrisStyle::passes(const StyleParams& params) const {
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<IllustrativeComposePass>(illustrative(params)));
+  p.push_back(functionPass("compose", [settings = illustrative(params)](FrameContext& f) { composeIllustrative(f, settings); }));
   return p;
 }
 

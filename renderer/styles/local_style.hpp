@@ -1,8 +1,8 @@
 #pragma once
 // Styles whose look is purely local per fragment (IRIS Sec. 5: everything a depth-peeling layer
 // shader can compute, plus per-layer Sobel silhouettes). Their settings drive both the
-// illustration buffer and the depth-peeling renderer (renderer/peel/).
-#include "renderer/styles/illustrative_settings.hpp"
+// illustration buffer and the depth-peeling fill (renderer/peel/).
+#include "renderer/params/illustrative_settings.hpp"
 #include "renderer/styles/style.hpp"
 
 namespace tlab::render {

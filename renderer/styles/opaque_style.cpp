@@ -6,7 +6,7 @@ namespace tlab::render {
 
 std::vector<std::unique_ptr<RenderPass>> OpaqueStyle::passes(const StyleParams&) const {
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<RasterPass>(RasterPass::Mode::ZBuffer));
+  p.push_back(functionPass("raster", [](FrameContext& f) { rasterScene(f, RasterMode::ZBuffer); }));
   return p;
 }
 

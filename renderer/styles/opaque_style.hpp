@@ -10,7 +10,7 @@ class OpaqueStyle final : public Style {
   std::string name() const override { return "opaque"; }
   std::string description() const override { return "nearest surface only, z-buffered (no fragment lists)"; }
   std::vector<ParamSpec> params() const override { return {}; }
-  bool usesFragmentLists() const override { return false; }
+  FillSpec fill(const StyleParams&) const override { return {FillSpec::Kind::None}; }
   FragmentProperties properties(const StyleParams&, const SceneFacts&) const override { return {}; }
   std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const override;
 };

@@ -3,6 +3,7 @@
 #include "renderer/compose/smart_compositor.hpp"
 #include "renderer/ops/connect_pass.hpp"
 #include "renderer/ops/diffusion_solver.hpp"
+#include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
 
@@ -13,49 +14,6 @@ struct SmartFrame {
   SmartSettings settings;
   bool solves = false;  // whether a solve pass follows the connect pass
   std::unique_ptr<TransparencyFields> fields;
-};
-
-// The links (Alg. 2), initial α and boundary conditions; when no solve pass is scheduled (nothing
-// to diffuse or spread) it reports what was left out.
-class ConnectRenderPass final : public RenderPass {
- public:
-  explicit ConnectRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "connect"; }
-  void run(FrameContext& frame) override {
-    frame_->fields = connectFragments(*frame.buffer, frame.shaders, frame_->settings, frame.scene.boundingSphere().radius);
-    if (!frame_->solves) operations_ = DiffusionSolver(frame.shaders, frame_->settings).operations();
-  }
-  std::vector<std::string> operations() const override { return operations_; }
-
- private:
-  std::shared_ptr<SmartFrame> frame_;
-  std::vector<std::string> operations_;
-};
-
-class SolveRenderPass final : public RenderPass {
- public:
-  explicit SolveRenderPass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "solve"; }
-  void run(FrameContext& frame) override {
-    const DiffusionSolver solver(frame.shaders, frame_->settings);
-    solver.solve(*frame_->fields);
-    operations_ = solver.operations();
-  }
-  std::vector<std::string> operations() const override { return operations_; }
-
- private:
-  std::shared_ptr<SmartFrame> frame_;
-  std::vector<std::string> operations_;
-};
-
-class SmartComposePass final : public RenderPass {
- public:
-  explicit SmartComposePass(std::shared_ptr<SmartFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override { composeSmart(frame, *frame_->fields, frame_->settings); }
-
- private:
-  std::shared_ptr<SmartFrame> frame_;
 };
 
 }  // namespace
@@ -98,12 +56,22 @@ FragmentProperties SmartStyle::properties(const StyleParams&, const SceneFacts& 
 std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& params) const {
   auto frame = std::make_shared<SmartFrame>();
   frame->settings = SmartSettings::from(params);
-  std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<ConnectRenderPass>(frame));
   frame->solves =
       frame->settings.iterations > 0 && (frame->settings.diffusesAlpha() || frame->settings.silhouettes || frame->settings.halos);
-  if (frame->solves) p.push_back(std::make_unique<SolveRenderPass>(frame));
-  p.push_back(std::make_unique<SmartComposePass>(frame));
+  std::vector<std::unique_ptr<RenderPass>> p;
+  // The links (Alg. 2), initial α and boundary conditions; when no solve pass is scheduled
+  // (nothing to diffuse or spread) it notes what was left out.
+  p.push_back(std::make_unique<FunctionPass>("connect", [frame](FrameContext& f, std::vector<std::string>& operations) {
+    frame->fields = connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius);
+    if (!frame->solves) operations = DiffusionSolver(f.shaders, frame->settings).operations();
+  }));
+  if (frame->solves)
+    p.push_back(std::make_unique<FunctionPass>("solve", [frame](FrameContext& f, std::vector<std::string>& operations) {
+      const DiffusionSolver solver(f.shaders, frame->settings);
+      solver.solve(*frame->fields);
+      operations = solver.operations();
+    }));
+  p.push_back(functionPass("compose", [frame](FrameContext& f) { composeSmart(f, *frame->fields, frame->settings); }));
   return p;
 }
 

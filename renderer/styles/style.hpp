@@ -1,7 +1,7 @@
 #pragma once
-// A transparency style: its parameters, the fragment properties it needs, and the ordered passes
-// (operators, then compositing) it runs on the illustration buffer. The pipeline builds exactly
-// what the style declares.
+// A transparency style: its parameters, the fill and fragment properties it needs, and the ordered
+// passes (operators, then compositing) it runs on that fill. The pipeline builds exactly what the
+// style declares.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -10,10 +10,20 @@
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
-#include "renderer/pipeline/frame_context.hpp"
-#include "renderer/styles/style_params.hpp"
+#include "renderer/frame/render_pass.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
+
+// The fill a style declares (renderer/frame/fill.hpp): none (the nearest surface only), the
+// illustration buffer, or the bucketed k-buffer (seed 002) with its settings (near/far are set
+// from the camera). Depth peeling is asked for by the request (RenderRequest::depthPeeling) and
+// takes the local styles only.
+struct FillSpec {
+  enum class Kind { None, FragmentBuffer, BucketedKBuffer };
+  Kind kind = Kind::FragmentBuffer;
+  KBufferSettings kBuffer{};  // for Kind::BucketedKBuffer
+};
 
 // Facts about the scene a style may use to leave out what it does not need.
 struct SceneFacts {
@@ -27,12 +37,8 @@ class Style {
   virtual std::string description() const = 0;
   // The style's own parameters; `lighting` is added for every style (see allParams).
   virtual std::vector<ParamSpec> params() const = 0;
-  // False for styles that need only the nearest surface (no fragment lists at all).
-  virtual bool usesFragmentLists() const { return true; }
-  // How the style fills: nothing (the default) means the illustration buffer; a style that
-  // fills with the bucketed k-buffer (seed 002) returns its settings, and the pipeline builds
-  // that instead (near/far are set from the camera).
-  virtual std::optional<KBufferSettings> kBufferFill(const StyleParams&) const { return std::nullopt; }
+  // The fill the style needs; the illustration buffer unless a style says otherwise.
+  virtual FillSpec fill(const StyleParams&) const { return {}; }
   virtual FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const = 0;
   // Checks combinations of parameters (single values are checked against their ParamSpec).
   virtual void validate(const StyleParams&) const {}

@@ -10,7 +10,9 @@ std::vector<ParamSpec> UnsortedStyle::params() const {
 
 std::vector<std::unique_ptr<RenderPass>> UnsortedStyle::passes(const StyleParams& params) const {
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<RasterPass>(RasterPass::Mode::UnsortedBlend, static_cast<float>(params.number("alpha"))));
+  p.push_back(functionPass("blend", [alpha = static_cast<float>(params.number("alpha"))](FrameContext& f) {
+    rasterScene(f, RasterMode::UnsortedBlend, alpha);
+  }));
   return p;
 }
 

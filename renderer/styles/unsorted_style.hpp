@@ -10,7 +10,7 @@ class UnsortedStyle final : public Style {
   std::string name() const override { return "unsorted"; }
   std::string description() const override { return "plain alpha blending in submission order (no sorting; the speed floor)"; }
   std::vector<ParamSpec> params() const override;
-  bool usesFragmentLists() const override { return false; }
+  FillSpec fill(const StyleParams&) const override { return {FillSpec::Kind::None}; }
   FragmentProperties properties(const StyleParams&, const SceneFacts&) const override { return {}; }
   std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const override;
 };

@@ -11,30 +11,6 @@ struct ViewDependentFrame {
   std::unique_ptr<ViewDependentAlpha> alpha;
 };
 
-// Silhouette edges (Eq. 1) and per-vertex α (Eq. 2) for this frame's eye.
-class SilhouetteAlphaPass final : public RenderPass {
- public:
-  explicit SilhouetteAlphaPass(std::shared_ptr<ViewDependentFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "silhouettes"; }
-  void run(FrameContext& frame) override {
-    frame_->alpha = std::make_unique<ViewDependentAlpha>(frame.scene);
-    frame_->alpha->update(frame.camera.eye, frame_->settings.k);
-  }
-
- private:
-  std::shared_ptr<ViewDependentFrame> frame_;
-};
-
-class ViewDependentComposePass final : public RenderPass {
- public:
-  explicit ViewDependentComposePass(std::shared_ptr<ViewDependentFrame> f) : frame_(std::move(f)) {}
-  std::string name() const override { return "compose"; }
-  void run(FrameContext& frame) override { composeViewDependent(frame, *frame_->alpha, frame_->settings); }
-
- private:
-  std::shared_ptr<ViewDependentFrame> frame_;
-};
-
 ViewDependentSettings settingsFrom(const StyleParams& p) {
   ViewDependentSettings s;
   s.explicitBoundaries = p.is("boundaries", "explicit");
@@ -75,8 +51,12 @@ std::vector<std::unique_ptr<RenderPass>> ViewDependentStyle::passes(const StyleP
   auto frame = std::make_shared<ViewDependentFrame>();
   frame->settings = settingsFrom(params);
   std::vector<std::unique_ptr<RenderPass>> p;
-  p.push_back(std::make_unique<SilhouetteAlphaPass>(frame));
-  p.push_back(std::make_unique<ViewDependentComposePass>(frame));
+  // Silhouette edges (Eq. 1) and per-vertex α (Eq. 2) for this frame's eye.
+  p.push_back(functionPass("silhouettes", [frame](FrameContext& f) {
+    frame->alpha = std::make_unique<ViewDependentAlpha>(f.scene);
+    frame->alpha->update(f.camera.eye, frame->settings.k);
+  }));
+  p.push_back(functionPass("compose", [frame](FrameContext& f) { composeViewDependent(f, *frame->alpha, frame->settings); }));
   return p;
 }
 

@@ -81,6 +81,12 @@ void LabelPainter::drawText(core::Image& image, double x, double y, const std::s
   }
 }
 
+core::Image LabelPainter::drawMarks(const core::Image& picture, const std::vector<ProbeMark>& marks) {
+  core::Image marked = picture;
+  paint(marked, marks);
+  return marked;
+}
+
 void LabelPainter::paint(core::Image& image, const std::vector<ProbeMark>& marks) const {
   const double unit = std::max(12.0, image.height / 40.0);  // letter height
   const glm::vec4 dark(0.05f, 0.05f, 0.05f, 1.0f), white(1.0f), accent(1.0f, 0.85f, 0.0f, 1.0f);

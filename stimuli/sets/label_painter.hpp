@@ -7,11 +7,12 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "stimuli/sets/mark_painter.hpp"
 #include "stimuli/sets/probe_source.hpp"
 
 namespace tlab::stimuli {
 
-class LabelPainter {
+class LabelPainter final : public MarkPainter {
  public:
   // Loads the font; throws std::runtime_error naming the file when it cannot.
   explicit LabelPainter(const std::string& fontPath = defaultFontPath());
@@ -23,6 +24,7 @@ class LabelPainter {
 
   // Draws every mark; sizes scale with the image (letters about 1/40 of its height).
   void paint(core::Image& image, const std::vector<ProbeMark>& marks) const;
+  core::Image drawMarks(const core::Image& picture, const std::vector<ProbeMark>& marks) override;
   // Draws `text` with its top-left corner at (x, y), `pixelHeight` tall.
   void drawText(core::Image& image, double x, double y, const std::string& text, double pixelHeight, glm::vec4 color) const;
   // Width in pixels of `text` at `pixelHeight`.

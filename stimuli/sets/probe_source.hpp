@@ -2,7 +2,7 @@
 // Where the marked points of a stimulus and its question come from. The stimuli library knows only
 // this interface and one source of its own (SurfacePointProbes: labelled random visible surface
 // points, no question); the application plugs in the tasks library's questions with their exact
-// ground truth — the hook that keeps the dependency direction app → tasks → stimuli.
+// ground truth — the hook that keeps tasks/ and stimuli/ siblings: neither includes the other.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,24 +1,22 @@
 #include "stimuli/sets/stimulus_set_renderer.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <exception>
 #include <filesystem>
 #include <memory>
 #include <mutex>
 #include <optional>
-#include <thread>
 
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/walkthrough_scene.hpp"
+#include "stimuli/sets/parallel_for.hpp"
 #include "stimuli/sets/booklet_pdf.hpp"
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
 #include "stimuli/sets/progress_bar.hpp"
-#include "core/sha256.hpp"
+#include "stimuli/sets/stimulus_producer.hpp"
 
 namespace tlab::stimuli {
 
@@ -57,41 +55,6 @@ std::string twoDigits(std::size_t i) {
 std::string resolveSource(const std::string& source, const std::string& setFile) {
   if (source.rfind("builtin:", 0) == 0 || fs::path(source).is_absolute()) return source;
   return (fs::path(setFile).parent_path() / source).string();
-}
-
-// Marks with the role "target" are ground truth (where the answer is), never drawn.
-std::vector<ProbeMark> visibleMarks(const std::vector<ProbeMark>& marks) {
-  std::vector<ProbeMark> shown;
-  for (const auto& m : marks)
-    if (m.role != "target") shown.push_back(m);
-  return shown;
-}
-
-// Runs body(i) for i in [0, count) on `jobs` threads (the caller's thread is one of them), each
-// thread first calling setUp() for its own state. The first exception stops the others and is
-// rethrown. Results must be written to per-index slots: the order of execution never matters.
-template <class SetUp, class Body>
-void parallelFor(std::size_t count, int jobs, SetUp setUp, Body body) {
-  std::atomic<std::size_t> next{0};
-  std::atomic<bool> stop{false};
-  std::mutex failureMutex;
-  std::exception_ptr failure;
-  const auto work = [&] {
-    try {
-      auto state = setUp();
-      for (std::size_t i = next++; i < count && !stop; i = next++) body(i, state);
-    } catch (...) {
-      const std::lock_guard lock(failureMutex);
-      if (!failure) failure = std::current_exception();
-      stop = true;
-    }
-  };
-  const int workers = std::max(1, std::min<int>(jobs, int(count)));
-  std::vector<std::thread> threads;
-  for (int w = 1; w < workers; ++w) threads.emplace_back(work);
-  work();
-  for (auto& t : threads) t.join();
-  if (failure) std::rethrow_exception(failure);
 }
 
 // What a GL worker keeps between its units: its context, the label font, the last scene uploaded.
@@ -190,23 +153,18 @@ class SetJob {
     }
     const SceneEntry& sceneEntry = spec_.scenes[u.scene];
     const StyleEntry& style = spec_.styles[u.index];
-    render::RenderRequest request;
-    request.width = spec_.width;
-    request.height = spec_.height;
-    request.style = style.name;
-    request.settings = style.settings;
-    request.camera = cameras_[u.scene][u.view];
-    request.timePasses = false;
-    const core::Image image = worker.renderer->render(request);
+    const StimulusView view{spec_.width, spec_.height, style.name, style.settings, cameras_[u.scene][u.view]};
+    const core::Image image = StimulusProducer::picture(*worker.renderer, view);
     recordGpu(*worker.context);
+    const StimulusProducer producer(*worker.painter);
     const std::string stem = stimulusStem(u, sceneEntry, style);
     RenderedStimulus base;
-    base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = *request.camera;
+    base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = view.camera;
     std::vector<RenderedStimulus> out;
     const auto& probeSets = questions_[u.scene][u.view];
     if (probeSets.empty()) {
       base.id = stem;
-      out.push_back(save(base, image));
+      out.push_back(save(base, producer.produce(image, {})));
       return out;
     }
     for (std::size_t p = 0; p < probeSets.size(); ++p)
@@ -216,9 +174,7 @@ class SetJob {
         s.question = int(q);
         s.probes = probeSets[p][q];
         s.id = stem + "_p" + std::to_string(p + 1) + "_q" + std::to_string(q + 1);
-        core::Image labelled = image;
-        worker.painter->paint(labelled, visibleMarks(s.probes.marks));
-        out.push_back(save(s, labelled));
+        out.push_back(save(s, producer.produce(image, s.probes.marks)));
       }
     return out;
   }
@@ -233,11 +189,10 @@ class SetJob {
   gpu::GpuInfo gpu() const { return gpu_; }
 
  private:
-  RenderedStimulus save(RenderedStimulus s, const core::Image& image) {
-    const std::vector<std::uint8_t> png = core::encodePng(image);
+  RenderedStimulus save(RenderedStimulus s, const ProducedStimulus& produced) {
     s.image = "images/" + s.id + ".png";
-    s.sha256 = core::sha256Hex(png);
-    core::writeFileAtomically((out_ / s.image).string(), png);
+    s.sha256 = produced.sha256;
+    core::writeFileAtomically((out_ / s.image).string(), produced.png);
     progress_->advance();
     return s;
   }

@@ -1,7 +1,7 @@
 #include "study/run/live_view.hpp"
 
 #include "renderer/styles/dynamic_style.hpp"
-#include "renderer/styles/style_params.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::study {
 

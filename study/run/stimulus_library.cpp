@@ -8,7 +8,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
-#include "core/sha256.hpp"
+#include "stimuli/sets/stimulus_producer.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {
@@ -35,19 +35,7 @@ render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key)
 bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
 
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter) {
-  Canvas canvas(picture);
-  const float textSize = std::max(12.0f, float(picture.height) / 32.0f);
-  for (const auto& p : question.points) {
-    if (!isMarkedPoint(p)) continue;
-    const double x = p.pixel.x, y = p.pixel.y;
-    canvas.strokeCircle(x, y, 4.0, 3.5, {255, 255, 255, 255});
-    canvas.strokeCircle(x, y, 4.0, 1.5, {0, 0, 0, 255});
-    const int tx = int(x) + 6, ty = int(y) - int(textSize) - 2;
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy) painter.drawLine(canvas, p.label, tx + dx, ty + dy, textSize, {255, 255, 255, 255});
-    painter.drawLine(canvas, p.label, tx, ty, textSize, {0, 0, 0, 255});
-  }
-  return canvas;
+  return drawOutlinedMarks(picture, stimuli::visibleMarks(probeMarks(question)), painter);
 }
 
 std::string stimulusDirectoryFor(const std::string& databasePath) {
@@ -74,7 +62,7 @@ std::vector<std::string> effectiveTaskSettings(const PlannedTrial& trial) {
 }
 
 StimulusLibrary::StimulusLibrary(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, TextPainter& painter)
-    : directory_(std::move(directory)), catalog_(std::move(catalog)), painter_(painter) {}
+    : directory_(std::move(directory)), catalog_(std::move(catalog)), marks_(painter) {}
 
 const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& key) {
   const std::string id = key.text();
@@ -82,17 +70,16 @@ const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& ke
   if (found != pictures_.end()) return found->second;
   auto scene = std::make_shared<render::Scene>(render::loadScene(key.scene, catalog_));
   render::requireTriangles(*scene, key.scene);
-  render::RenderRequest request;
-  request.width = key.width;
-  request.height = key.height;
+  stimuli::StimulusView view;
+  view.width = key.width;
+  view.height = key.height;
   render::findStyle(key.style);
-  request.style = key.style;
-  for (const auto& s : key.renderSettings) render::addSetting(request.settings, s);
-  request.camera = resolveCamera(*scene, key);
-  request.timePasses = false;
+  view.style = key.style;
+  for (const auto& s : key.renderSettings) render::addSetting(view.settings, s);
+  view.camera = resolveCamera(*scene, key);
   render::Renderer renderer(*scene);
-  auto picture = std::make_shared<core::Image>(renderer.render(request));
-  return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), *request.camera}).first->second;
+  auto picture = std::make_shared<core::Image>(stimuli::StimulusProducer::picture(renderer, view));
+  return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), view.camera}).first->second;
 }
 
 const std::vector<tasks::Question>& StimulusLibrary::questions(const PlannedTrial& trial) {
@@ -120,14 +107,9 @@ const std::pair<FloorPlan, std::shared_ptr<const Canvas>>& StimulusLibrary::floo
   if (found != plans_.end()) return found->second;
   const Rendered& r = rendered(key);
   FloorPlan plan = makeFloorPlan(*r.scene, key.width, key.height);
-  render::RenderRequest request;
-  request.width = key.width;
-  request.height = key.height;
-  request.style = "opaque";
-  request.camera = plan.camera;
-  request.timePasses = false;
+  const stimuli::StimulusView view{key.width, key.height, "opaque", {}, plan.camera};
   render::Renderer renderer(*r.scene);
-  auto image = std::make_shared<const Canvas>(renderer.render(request));
+  auto image = std::make_shared<const Canvas>(stimuli::StimulusProducer::picture(renderer, view));
   return plans_.emplace(id, std::make_pair(plan, std::move(image))).first->second;
 }
 
@@ -142,15 +124,15 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
                          std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
   auto found = written_.find(id);
   if (found == written_.end()) {
-    auto canvas = std::make_shared<const Canvas>(markQuestion(*p.picture, p.question, painter_));
-    const std::vector<std::uint8_t> png = core::encodePng(canvas->toImage());
-    const std::string sha = core::sha256Hex(png);
-    const std::string path = (std::filesystem::path(directory_) / (sha + ".png")).string();
+    const stimuli::ProducedStimulus produced = stimuli::StimulusProducer(marks_).produce(*p.picture, probeMarks(p.question));
+    // The canvas shown is the produced image again: its 8-bit pixels convert back exactly.
+    auto canvas = std::make_shared<const Canvas>(produced.image);
+    const std::string path = (std::filesystem::path(directory_) / (produced.sha256 + ".png")).string();
     if (!std::filesystem::exists(path)) {
       std::filesystem::create_directories(directory_);  // made with its first stimulus: a failed start leaves no folder
-      core::writeFileAtomically(path, png);
+      core::writeFileAtomically(path, produced.png);
     }
-    found = written_.emplace(id, std::make_pair(sha, std::move(canvas))).first;
+    found = written_.emplace(id, std::make_pair(produced.sha256, std::move(canvas))).first;
   }
   p.stimulusSha256 = found->second.first;
   p.stimulus = found->second.second;

@@ -2,7 +2,8 @@
 // StimulusLibrary: turns a planned trial into what the participant sees and what is scored — the
 // rendered picture of its scene/style/camera (rendered once per stimulus key), the task's
 // questions for its probe seed (probed once per trial), and the marked stimulus (picture + the
-// probe marks and labels) written content-addressed as DIR/<sha256>.png. Needs a current GL
+// probe marks and labels) written content-addressed as DIR/<sha256>.png. The study-side face of
+// stimuli::StimulusProducer, which makes the picture and the marked stimulus. Needs a current GL
 // context (headless or the runner's window).
 #include <map>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "renderer/scene/camera.hpp"
 #include "study/run/canvas.hpp"
 #include "study/run/floor_plan.hpp"
+#include "study/run/question_marks.hpp"
 #include "study/design/session_plan.hpp"
 #include "study/run/stimulus_source.hpp"
 #include "study/run/text_painter.hpp"
@@ -60,7 +62,7 @@ class StimulusLibrary : public StimulusSource {
 
   std::string directory_;
   std::vector<render::BuiltinSceneSpec> catalog_;
-  TextPainter& painter_;
+  OutlinedMarkPainter marks_;  // the study's look of the marks (StimulusProducer draws with it)
   std::map<std::string, Rendered> pictures_;
   std::map<std::string, std::vector<tasks::Question>> questions_;
   std::map<std::string, std::pair<std::string, std::shared_ptr<const Canvas>>> written_;

@@ -7,7 +7,7 @@
 #include <random>
 
 #include "renderer/kbuffer/bucket_table.hpp"
-#include "renderer/styles/transfer_function.hpp"
+#include "renderer/params/transfer_function.hpp"
 
 using namespace tlab::render;
 using namespace tlab::render::kbuffer;

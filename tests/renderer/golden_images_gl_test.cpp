@@ -11,7 +11,7 @@
 #define STB_IMAGE_IMPLEMENTATION
 #include <stb/stb_image.h>
 
-#include "renderer/peel/peeling_renderer.hpp"
+#include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/scene/technical_scenes.hpp"
 #include "tests/support/gl_fixture.hpp"
@@ -51,7 +51,7 @@ tlab::core::Image renderCase(const GoldenCase& c) {
   r.width = r.height = 64;
   r.style = c.style;
   r.settings = c.settings;
-  if (c.peel) return PeelingRenderer(loadScene(c.scene, catalog)).render(r);
+  r.depthPeeling = c.peel;
   return Renderer(loadScene(c.scene, catalog)).render(r);
 }
 

@@ -7,7 +7,6 @@
 #include <complex>
 #include <optional>
 
-#include "renderer/peel/peeling_renderer.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
 #include "tests/support/gl_fixture.hpp"
@@ -294,7 +293,9 @@ TEST(IrisContext, OpaqueObjectsAreContextGeometry) {
   r.camera = frontCamera();
   r.settings = {{"opacity", "constant"}, {"alpha", "0.3"}, {"lighting", "none"}, {"specular", "0"}, {"silhouettes", "on"},
                 {"stripes", "off"}};
-  for (const tlab::core::Image& img : {Renderer(s).render(r), PeelingRenderer(s).render(r)}) {
+  RenderRequest peeled = r;
+  peeled.depthPeeling = true;
+  for (const tlab::core::Image& img : {Renderer(s).render(r), Renderer(s).render(peeled)}) {
     const glm::vec4 c = img.at(24, 24);
     EXPECT_NEAR(c.r, 0.7f, 1e-3);  // the box behind one layer of α = 0.3, never the background
     EXPECT_NEAR(c.g, 0.0f, 1e-3);
@@ -310,7 +311,8 @@ tlab::core::Image renderTorus(const std::string& style, const std::map<std::stri
   r.width = r.height = 96;
   r.style = style;
   r.settings = settings;
-  return peel ? PeelingRenderer(s).render(r) : Renderer(s).render(r);
+  r.depthPeeling = peel;
+  return Renderer(s).render(r);
 }
 
 // (largest, mean) absolute channel difference in 1/255 units.

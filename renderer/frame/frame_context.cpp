@@ -1,4 +1,4 @@
-#include "renderer/pipeline/frame_context.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 #include <vector>
 

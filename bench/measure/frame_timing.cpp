@@ -1,8 +1,11 @@
-#include "app/frame_timing.hpp"
+#include "bench/measure/frame_timing.hpp"
 
 #include <algorithm>
+#include <chrono>
 
-namespace tlab::app {
+#include "renderer/gpu/gl.hpp"
+
+namespace tlab::bench {
 
 double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
@@ -40,4 +43,25 @@ FrameTiming timeFrames(render::Renderer& r, const render::RenderRequest& q, int 
   return t;
 }
 
-}  // namespace tlab::app
+OrbitTiming timeOrbit(render::Renderer& renderer, render::RenderRequest request, const std::vector<render::Camera>& orbit) {
+  render::RenderStats stats;
+  request.camera = orbit.front();
+  renderer.render(request, &stats);  // warm-up: shader compilation, pool growth
+  std::vector<double> ms;
+  for (const auto& camera : orbit) {
+    request.camera = camera;
+    glFinish();
+    const auto start = std::chrono::steady_clock::now();
+    renderer.render(request, &stats);
+    ms.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  }
+  OrbitTiming t;
+  for (double m : ms) t.meanMs += m / double(ms.size());
+  std::sort(ms.begin(), ms.end());
+  t.medianMs = ms[ms.size() / 2];
+  t.fragments = stats.fragments;
+  t.passes = stats.passMilliseconds;
+  return t;
+}
+
+}  // namespace tlab::bench

@@ -1,4 +1,4 @@
-#include "renderer/styles/style_params.hpp"
+#include "renderer/params/style_params.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,4 +1,4 @@
-#include "renderer/styles/transfer_function.hpp"
+#include "renderer/params/transfer_function.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "renderer/pipeline/pass_timer.hpp"
+#include "renderer/frame/pass_timer.hpp"
 
 #include "renderer/gpu/gl.hpp"
 

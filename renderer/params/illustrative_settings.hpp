@@ -11,7 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "renderer/gpu/shader_program.hpp"
-#include "renderer/styles/style_params.hpp"
+#include "renderer/params/style_params.hpp"
 
 namespace tlab::render {
 

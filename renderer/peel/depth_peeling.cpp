@@ -1,8 +1,9 @@
-#include "renderer/peel/depth_peeler.hpp"
+#include "renderer/peel/depth_peeling.hpp"
 
 #include <vector>
 
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/frame/frame_context.hpp"
 
 namespace tlab::render {
 
@@ -18,7 +19,7 @@ gpu::Texture makeTarget(GLenum format, int width, int height) {
 }
 }  // namespace
 
-DepthPeeler::DepthPeeler(gpu::ShaderCache& shaders, int width, int height, int maxIterations)
+DepthPeeling::DepthPeeling(gpu::ShaderCache& shaders, int width, int height, int maxIterations)
     : shaders_(shaders), width_(width), height_(height), maxIterations_(maxIterations) {
   color_ = makeTarget(GL_RGBA32F, width, height);
   normalDepth_ = makeTarget(GL_RGBA32F, width, height);
@@ -40,7 +41,7 @@ DepthPeeler::DepthPeeler(gpu::ShaderCache& shaders, int width, int height, int m
 
 // Peel stage: renders the nearest layer behind layer − 1 into fbo_[layer % 2]; returns whether
 // any fragment was rendered (the occlusion query of IRIS Sec. 5.1).
-bool DepthPeeler::peel(const GpuScene& scene, const RasterUniforms& u, const IllustrativeSettings& settings, int layer) {
+bool DepthPeeling::peel(const GpuScene& scene, const RasterUniforms& u, const IllustrativeSettings& settings, int layer) {
   const auto& program = shaders_.graphics("buffer/scene_geometry.vert", "peel/peel_layer.frag");
   const int current = layer % 2;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[current].id());
@@ -56,8 +57,7 @@ bool DepthPeeler::peel(const GpuScene& scene, const RasterUniforms& u, const Ill
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   program.use();
-  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &u.view[0][0]);
-  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &u.projection[0][0]);
+  setCameraUniforms(program, u);
   glUniform1i(program.uniform("uLayer"), layer);
   glUniform1i(program.uniform("uPreviousDepth"), 0);
   glBindTextureUnit(0, depth_[1 - current].id());
@@ -75,7 +75,7 @@ bool DepthPeeler::peel(const GpuScene& scene, const RasterUniforms& u, const Ill
 }
 
 // Blend stage: silhouettes and under-blending of the layer just peeled.
-void DepthPeeler::blend(const IllustrativeSettings& settings) {
+void DepthPeeling::blend(const IllustrativeSettings& settings) {
   const auto& program = shaders_.compute("peel/peel_blend.comp");
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   program.use();
@@ -91,7 +91,7 @@ void DepthPeeler::blend(const IllustrativeSettings& settings) {
   glBindTextureUnit(1, 0);
 }
 
-core::Image DepthPeeler::render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
+core::Image DepthPeeling::render(const GpuScene& scene, const RasterUniforms& uniforms, const IllustrativeSettings& settings,
                           glm::vec4 background, PassTimer& timer) {
   const std::size_t pixels = std::size_t(width_) * height_;
   const std::vector<glm::vec4> start(pixels, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));  // c = 0, T = 1
@@ -114,6 +114,10 @@ core::Image DepthPeeler::render(const GpuScene& scene, const RasterUniforms& uni
     }
   gpu::checkGl("depth peeling");
   return image;
+}
+
+void DepthPeeling::build(FrameContext& frame, PassTimer& timer) {
+  frame.image = render(frame.gpuScene, frame.raster, shading_, frame.background, timer);
 }
 
 }  // namespace tlab::render

@@ -1,4 +1,4 @@
-#include "renderer/pipeline/gpu_scene.hpp"
+#include "renderer/frame/gpu_scene.hpp"
 
 #include <vector>
 

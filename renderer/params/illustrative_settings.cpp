@@ -1,4 +1,4 @@
-#include "renderer/styles/illustrative_settings.hpp"
+#include "renderer/params/illustrative_settings.hpp"
 
 #include <stdexcept>
 

@@ -1,0 +1,48 @@
+#pragma once
+// What every render pass of one frame sees: the scene on the GPU, the fill the style declared
+// (when it declared one), the style's parameters, and the image the frame produces.
+#include <stdexcept>
+
+#include <glm/glm.hpp>
+
+#include "core/image.hpp"
+#include "renderer/frame/fill.hpp"
+#include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/pass_timer.hpp"
+#include "renderer/frame/raster_uniforms.hpp"
+#include "renderer/gpu/shader_cache.hpp"
+#include "renderer/params/style_params.hpp"
+#include "renderer/scene/scene.hpp"
+
+namespace tlab::render {
+
+class GroupDrawOrder;  // ops/group_draw_order.hpp, for the one style that keeps it across frames
+
+struct FrameContext {
+  const Scene& scene;
+  const GpuScene& gpuScene;
+  const RasterUniforms& raster;
+  const Camera& camera;
+  const StyleParams& params;
+  int width;
+  int height;
+  glm::vec4 background;
+  Fill* fill;          // the fill the style declared; null for styles without one
+  core::Image& image;  // the frame's result, row 0 = top
+  gpu::ShaderCache& shaders;
+  GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
+
+  // The fill as the type a pass needs (a style's passes know which fill the style declared).
+  template <typename T>
+  T& fillAs() const {
+    T* const typed = dynamic_cast<T*>(fill);
+    if (!typed) throw std::logic_error("a render pass ran on a fill its style did not declare");
+    return *typed;
+  }
+};
+
+// Reads an RGBA float SSBO of width*height texels in GL order (row 0 = bottom) into the image,
+// flipping so that row 0 is the top.
+void readOutputBuffer(const gpu::Buffer& output, core::Image& image);
+
+}  // namespace tlab::render
