@@ -42,8 +42,12 @@ std::vector<std::string> numberRow(const FormField& f, const std::vector<StoredA
   for (const auto& a : answers)
     if (a.number) xs.push_back(*a.number);
   if (xs.empty()) return {f.id + ": " + f.text, "0", "", "", "", ""};
+  if (xs.size() == 1) {  // a pilot's one answer: no spread to estimate
+    const std::string x = analysis::formatNumber(xs.front(), 3);
+    return {f.id + ": " + f.text, "1", x, "", x, x};
+  }
   const analysis::Descriptives d = analysis::describe(xs, f.id);
-  return {f.id + ": " + f.text, std::to_string(d.n), analysis::formatNumber(d.mean, 3), xs.size() > 1 ? analysis::formatNumber(d.sd, 3) : "",
+  return {f.id + ": " + f.text, std::to_string(d.n), analysis::formatNumber(d.mean, 3), analysis::formatNumber(d.sd, 3),
           analysis::formatNumber(d.min, 3), analysis::formatNumber(d.max, 3)};
 }
 

@@ -3,7 +3,10 @@
 // cpp-httplib's client (study/serve/study_server.hpp documents the routes).
 #include <httplib.h>
 
+#include <algorithm>
+#include <chrono>
 #include <filesystem>
+#include <thread>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -48,6 +51,15 @@ class PageClient {
   httplib::Client http_;
 };
 
+// A valid answer to one form field: the middle of a scale, the first option, a number in range.
+inline std::string fieldAnswer(const nlohmann::json& field) {
+  const std::string kind = field["kind"];
+  if (kind == "likert") return std::to_string((field["points"].get<int>() + 1) / 2);
+  if (kind == "choice") return field["options"][0];
+  if (kind == "number") return std::to_string(int(std::max(30.0, field["min"].get<double>())));
+  return "fine";
+}
+
 // The reply a participant gives to a screen that is not a trial.
 inline nlohmann::json continueReply(const nlohmann::json& screen) {
   const std::string kind = screen["kind"];
@@ -56,7 +68,7 @@ inline nlohmann::json continueReply(const nlohmann::json& screen) {
   else if (kind == "form") r.update({{"type", "form"}, {"values", nlohmann::json::array()}});
   else r["type"] = "continue";
   if (kind == "form")
-    for (std::size_t i = 0; i < screen["fields"].size(); ++i) r["values"].push_back("3");
+    for (const auto& field : screen["fields"]) r["values"].push_back(fieldAnswer(field));
   return r;
 }
 
@@ -80,6 +92,8 @@ inline Walk walk(PageClient& page, const std::string& token, nlohmann::json scre
       screen = page.screen(token).body;
       continue;
     }
+    if (kind == "break")  // the participant waits as long as the break asks (an earlier press is ignored)
+      std::this_thread::sleep_for(std::chrono::duration<double>(screen["min_seconds"].get<double>() + 0.3));
     if (kind != "trial") {
       screen = page.api(token, "reply", continueReply(screen)).body;
       continue;

@@ -1,0 +1,82 @@
+// The README's "Running a study online" steps, followed as a researcher would: the tlab commands
+// of its tested block run as written (the database URL of a throw-away PostgreSQL cluster in place
+// of step 1, and a free loopback port in place of 0.0.0.0:8080), a pilot participant takes the
+// Prolific link serve printed, the admin link shows them, and export, analyze and report read
+// the database.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <regex>
+
+#include "tests/study/serve_test_client.hpp"
+#include "tests/study/served_study.hpp"
+#include "tests/support/postgres_cluster.hpp"
+
+namespace tlab::testing {
+namespace {
+
+using nlohmann::json;
+
+// The `tlab ...` lines of the README block marked "online-steps: tested".
+std::vector<std::string> readmeCommands() {
+  const std::string readme = readText(std::string(TLAB_SOURCE_DIR) + "/README.md");
+  const auto marker = readme.find("<!-- online-steps: tested -->");
+  if (marker == std::string::npos) throw std::runtime_error("README.md: no online-steps block");
+  const auto begin = readme.find("```sh\n", marker), end = readme.find("```\n", begin + 6);
+  std::istringstream block(readme.substr(begin + 6, end - begin - 6));
+  std::vector<std::string> commands;
+  for (std::string line; std::getline(block, line);)
+    if (line.rfind("tlab ", 0) == 0) commands.push_back(line);
+  return commands;
+}
+
+std::string substituted(std::string command, const std::string& url, const std::filesystem::path& dir) {
+  command = std::regex_replace(command, std::regex("^tlab "), std::string(TLAB_EXE) + " ");
+  command = std::regex_replace(command, std::regex("\"\\$DB\""), quoted(url));
+  command = std::regex_replace(command, std::regex("examples/"), std::string(TLAB_SOURCE_DIR) + "/examples/");
+  return std::regex_replace(command, std::regex(" results"), " " + (dir / "results").string());
+}
+
+TEST(ServeReadme, TheOnlineStepsWorkAsWritten) {
+  const auto commands = readmeCommands();
+  ASSERT_EQ(commands.size(), 5u);
+  EXPECT_EQ(commands[1], "tlab serve examples/online.toml --db \"$DB\" --listen 0.0.0.0:8080");
+  const auto dir = freshDir("serve_readme");
+  const std::string url = sharedPostgresCluster().createDatabase("online_demo");
+
+  const auto design = runCommand(substituted(commands[0], url, dir));
+  ASSERT_EQ(design.exitCode, 0) << design.err;
+  ServedStudy server(example("online.toml"), url, dir);  // step 2, on a free loopback port
+  std::smatch link;
+  const std::string printed = server.stdoutText();
+  ASSERT_TRUE(std::regex_search(printed, link, std::regex("for Prolific: +http://127\\.0\\.0\\.1:[0-9]+/s/([^?]+)\\?(\\S+)"))) << printed;
+  std::string query = link[2];  // step 3: a pilot takes the Prolific link
+  query = std::regex_replace(query, std::regex("\\{\\{%PROLIFIC_PID%\\}\\}"), "pilot-1");
+  query = std::regex_replace(query, std::regex("\\{\\{%(STUDY_ID|SESSION_ID)%\\}\\}"), "readme");
+  PageClient page(server.port());
+  const auto [status, token] = page.arrive(link[1], query);
+  ASSERT_EQ(status, 303);
+  json shown = display();
+  shown["px_per_cm"] = 37.8;  // the size calibration the example asks for
+  const Walk w = walk(page, token, page.api(token, "display", shown).body);
+  ASSERT_EQ(w.screens.back()["kind"], "end") << w.screens.back().dump();
+  EXPECT_EQ(w.screens.back()["completion_code"], "TLABDEMO");
+  std::smatch admin;  // step 4
+  ASSERT_TRUE(std::regex_search(printed, admin, std::regex("admin: http://127\\.0\\.0\\.1:[0-9]+(/admin\\?token=[0-9a-f]+)")));
+  const auto monitor = page.raw(admin[1]);
+  EXPECT_EQ(monitor->status, 200);
+  EXPECT_NE(monitor->body.find("pilot-1"), std::string::npos);
+  server.stop(SIGTERM);
+
+  for (std::size_t i = 2; i < commands.size(); ++i) {  // step 5
+    const auto r = runCommand(substituted(commands[i], url, dir));
+    EXPECT_EQ(r.exitCode, 0) << commands[i] << ": " << r.err;
+  }
+  const auto trials = parseCsv(readText((dir / "results" / "trials.csv").string()));
+  EXPECT_EQ(trials.size(), 1u + w.answered);
+  EXPECT_TRUE(std::filesystem::exists(dir / "results" / "report.html"));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace tlab::testing
