@@ -2,6 +2,8 @@
 // sends the participant's replies. It never sees a right answer (scoring happens on the server).
 // Stimuli are shown at their rendered size in device pixels (CSS size = pixels / devicePixelRatio),
 // never scaled by the browser; RT runs from the frame the picture was first painted to the input.
+// Over 300 lines: the whole page is one script, served as one file without a bundler; each screen
+// kind is one function below.
 'use strict';
 const token = location.pathname.split('/')[2];
 const api = (path) => '/api/' + token + '/' + path;
