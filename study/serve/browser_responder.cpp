@@ -80,6 +80,11 @@ std::optional<Response> BrowserResponder::respond(const TrialView& view) {
     }
     response.text = reply->value["text"].get<std::string>();
     response.rtSeconds = reply->value["rt_ms"].get<double>() / 1000.0;
+    // Both ends of the browser's RT, on the page's clock (performance.now()), kept as an event.
+    nlohmann::json times{{"rt_ms", reply->value["rt_ms"]}};
+    for (const char* key : {"painted_ms", "input_ms"})
+      if (reply->value.contains(key)) times[key] = reply->value[key];
+    event(reply->receivedNs, "answer-times", times.dump());
     return response;
   }
 }

@@ -132,7 +132,10 @@ Checked checkTrialReply(const AnswerContext& context, const std::optional<Turnta
     if (type == "answer") {
       if (!body.contains("answer")) throw std::invalid_argument("'answer' is missing");
       const std::string text = answerText(context, body["answer"]);
-      return {"", {type, {{"text", text}, {"rt_ms", milliseconds(body, "rt_ms")}}}};
+      json value{{"text", text}, {"rt_ms", milliseconds(body, "rt_ms")}};
+      for (const char* key : {"painted_ms", "input_ms"})  // the page's clock at the paint and at the input, when sent
+        if (body.contains(key)) value[key] = milliseconds(body, key);
+      return {"", {type, value}};
     }
   } catch (const std::exception& e) {  // json type errors included
     return {std::string(type.empty() ? "reply" : type) + ": " + e.what(), {}};

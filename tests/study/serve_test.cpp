@@ -72,6 +72,10 @@ TEST_F(Serve, AParticipantWalksTheWholeSessionAndEveryAnswerIsStoredOnce) {
   for (const auto& e : events)
     if (e[column(events, "kind")] == "arrival") arrival = e[column(events, "detail")].find("\"STUDY_ID\":\"s1\"") != std::string::npos;
   EXPECT_TRUE(arrival) << "the study and session parameters of the link are stored";
+  int times = 0;
+  for (const auto& e : events)
+    times += e[column(events, "kind")] == "answer-times" && e[column(events, "detail")] == R"({"input_ms":860.5,"painted_ms":10.5,"rt_ms":850.0})";
+  EXPECT_EQ(times, w.answered) << "both ends of every browser RT are stored";
   EXPECT_EQ(exported("questionnaires").size(), 2u);
   EXPECT_EQ(exported("consent").size(), 2u);
 }

@@ -100,7 +100,8 @@ inline Walk walk(PageClient& page, const std::string& token, nlohmann::json scre
     }
     if (w.answered == stopAfter) break;
     EXPECT_EQ(page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "onset"}, {"painted_ms", 10.5}}).status, 200);
-    const Reply r = page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "answer"}, {"answer", 1 + w.answered % 2}, {"rt_ms", 850.0}});
+    const Reply r = page.api(token, "reply", {{"seq", screen["seq"]}, {"type", "answer"}, {"answer", 1 + w.answered % 2}, {"rt_ms", 850.0},
+                                                       {"painted_ms", 10.5}, {"input_ms", 860.5}});
     EXPECT_EQ(r.status, 200) << r.body.dump();
     if (r.body.value("kind", "") != "error") ++w.answered;
     screen = r.body;

@@ -257,7 +257,7 @@ function trial(s) {
     if (done || onset === null) return;
     done = true;
     const at = ev && ev.timeStamp ? ev.timeStamp : performance.now();
-    reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset) });
+    reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset), painted_ms: onset, input_ms: at });
   };
   const stage = el('div', { class: 'stage', id: 'stage' });
   const img = picture(s.image, api('image/' + s.image.sha256 + '.png'), s.floor_plan ? s.floor_plan.width : 0);
