@@ -275,6 +275,12 @@ TEST_F(Serve, BadStartsAreOneLineAndWalkingIsRefusedOnline) {
   EXPECT_NE(walking.err.find("elmqvist.toml:68: tasks["), std::string::npos) << walking.err;
   EXPECT_NE(walking.err.find("tlab run"), std::string::npos) << walking.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "e.db")) << "nothing is written before the checks pass";
+  const auto unreachable = runCommand(commandLine({TLAB_EXE, "serve", studyData("serve_tiny.toml"), "--db",
+                                                   "postgresql://tlab:secret@127.0.0.1:1/nothing", "--listen", "127.0.0.1:0", "--quiet"}));
+  EXPECT_EQ(unreachable.exitCode, 1);
+  EXPECT_NE(unreachable.err.find("cannot connect to PostgreSQL"), std::string::npos) << unreachable.err;
+  EXPECT_EQ(unreachable.err.find("secret"), std::string::npos) << "the password is never printed";
+  EXPECT_EQ(std::count(unreachable.err.begin(), unreachable.err.end(), '\n'), 1) << unreachable.err;
   const auto help = runCommand(commandLine({TLAB_EXE, "serve", "--help"}));
   EXPECT_NE(help.out.find("127.0.0.1:8080"), std::string::npos) << "the server binds to this machine unless told otherwise";
 }
