@@ -28,7 +28,7 @@ install_with_deps() {
 install_with_deps /bin/sh
 mkdir -p "$root/lib64" "$root/tmp" "$root/dev"
 cp -L /lib64/ld-linux-x86-64.so.2 "$root/lib64/"
-for l in libc.so.6 libm.so.6 libdl.so.2 libpthread.so.0 librt.so.1; do install_with_deps "$libdir/$l"; done
+for l in libc.so.6 libm.so.6 libdl.so.2 libpthread.so.0 librt.so.1 libresolv.so.2 libutil.so.1; do install_with_deps "$libdir/$l"; done
 # The "GPU driver": libglvnd's libEGL with Mesa's vendor library and llvmpipe, and OSMesa.
 install_with_deps "$libdir/libEGL.so.1" "$libdir/libEGL_mesa.so.0" "$libdir/dri/swrast_dri.so" "$libdir/libOSMesa.so.8"
 mkdir -p "$root/usr/share/glvnd/egl_vendor.d"
@@ -40,7 +40,7 @@ cp -r "$bundle" "$root/tlab"
 chroot "$root" /lib64/ld-linux-x86-64.so.2 --library-path /tlab/lib --list /tlab/bin/tlab | awk '/=>/ {print $3}' |
   while read -r lib; do
     case "$lib" in
-      /tlab/lib/*|*/libc.so.6|*/libm.so.6|*/libdl.so.2|*/libpthread.so.0|*/librt.so.1|*/ld-linux-x86-64.so.2) ;;
+      /tlab/lib/*|*/libc.so.6|*/libm.so.6|*/libdl.so.2|*/libpthread.so.0|*/librt.so.1|*/libresolv.so.2|*/libutil.so.1|*/ld-linux-x86-64.so.2) ;;
       *) echo "bundle-test: FAILED: tlab loads $lib from outside the bundle" >&2; exit 1 ;;
     esac
   done

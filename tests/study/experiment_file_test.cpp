@@ -53,9 +53,26 @@ TEST(ExperimentFile, ReadsTheExamples) {
   EXPECT_EQ(e.factors[0].levels[1].style.value_or(""), "dynamic");  // parses before the style exists
 }
 
+TEST(ExperimentFile, TheOnlineTableIsReadAndChecked) {
+  const Experiment o = readExperimentFile(tlab::testing::example("online.toml"));
+  EXPECT_EQ(o.online.participantParameter, "PROLIFIC_PID");
+  EXPECT_EQ(o.online.studyParameter, "STUDY_ID");
+  EXPECT_EQ(o.online.timeoutMinutes, 30.0);
+  EXPECT_TRUE(o.online.sizeCalibration);
+  EXPECT_EQ(o.online.completionUrl, "https://app.prolific.com/submissions/complete?cc=TLABDEMO");
+  const Experiment d = readExperimentFile(tlab::testing::studyData("tiny.toml"));
+  EXPECT_EQ(d.online.participantParameter, "pid");  // the defaults
+  EXPECT_EQ(d.online.turntableAzimuths * d.online.turntableElevations, 180);
+  EXPECT_EQ(errorOf(kBase + "[online]\ncompletion_url = \"ftp://x\"\n"), "bad.toml:10: online.completion_url: must start with https:// or http://");
+  EXPECT_EQ(errorOf(kBase + "[online]\nturntable_azimuths = 100\nturntable_elevations = 9\n"),
+            "bad.toml:10: online.turntable_azimuths: at most 720 views in all (azimuths x elevations)");
+  EXPECT_EQ(errorOf(kBase + "[online]\nparticipant_parameter = \"\"\n"), "bad.toml:10: online.participant_parameter: must not be empty");
+  EXPECT_NE(errorOf(kBase + "[online]\nport = 80\n").find("bad.toml:10: online.port: unknown key"), std::string::npos);
+}
+
 TEST(ExperimentFile, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf("extra = 1\n" + kBase), "bad.toml:1: extra: unknown key (known: analysis, block_tasks, breaks, consent, counterbalancing, "
-                                            "debrief, factors, goodbye, id, info, observer, participant_title, participants, "
+                                            "debrief, factors, goodbye, id, info, observer, online, participant_title, participants, "
                                             "questionnaires, seed, standard_info, stimulus, tasks, title, training, welcome)");
   EXPECT_EQ(errorOf(kBase + "trials = 0\n"), "bad.toml:9: tasks[1].trials: must be >= 1");
   EXPECT_NE(errorOf(kBase + "when = { method = \"c\" }\n").find("bad.toml:9: tasks[1].when.method: must name a level"),
