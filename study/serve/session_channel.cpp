@@ -8,6 +8,8 @@ int SessionChannel::publish(Screen screen) {
   std::lock_guard lock(mutex_);
   screen_ = std::move(screen);
   images_.insert(screen_.images.begin(), screen_.images.end());
+  popped_ += std::int64_t(replies_.size());  // replies to the old screen are dropped: nothing more to handle
+  handled_ = popped_;
   replies_.clear();
   ++seq_;
   changed_.notify_all();
@@ -16,11 +18,14 @@ int SessionChannel::publish(Screen screen) {
 
 std::optional<Reply> SessionChannel::awaitReply(std::optional<SteadyTime> deadline) {
   std::unique_lock lock(mutex_);
+  handled_ = popped_;  // the thread is back for more: what it took before is handled
+  changed_.notify_all();
   for (;;) {
     if (!closedBecause_.empty()) return std::nullopt;
     if (!replies_.empty()) {
       Reply r = std::move(replies_.front());
       replies_.pop_front();
+      ++popped_;
       return r;
     }
     const SteadyTime idle = lastActivity_ + timeout_;
@@ -64,6 +69,7 @@ SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& 
   }
   c.reply.receivedNs = receivedNs;
   replies_.push_back(std::move(c.reply));
+  ++delivered_;
   changed_.notify_all();
   return Delivery::Delivered;
 }
@@ -75,6 +81,12 @@ nlohmann::json SessionChannel::awaitScreenAfter(int seq, std::chrono::millisecon
     changed_.wait_for(lock, wait, [&] { return (seq_ > seq && screen_.page.value("kind", "") != "wait") || !closedBecause_.empty(); });
   }
   return current();
+}
+
+bool SessionChannel::awaitHandled(std::chrono::milliseconds wait) {
+  std::unique_lock lock(mutex_);
+  const std::int64_t upTo = delivered_;
+  return changed_.wait_for(lock, wait, [&] { return handled_ >= upTo || !closedBecause_.empty(); });
 }
 
 bool SessionChannel::mayFetch(const std::string& sha) const {

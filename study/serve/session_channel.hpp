@@ -58,6 +58,9 @@ class SessionChannel {
   // (the page should show the current one); Refused: the check's error is in `error`.
   enum class Delivery { Delivered, Stale, Refused };
   Delivery deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error);
+  // Waits up to `wait` until the session thread has handled every reply delivered so far (an
+  // onset is then committed): the acknowledgement of replies that do not change the screen.
+  bool awaitHandled(std::chrono::milliseconds wait);
   // Waits up to `wait` for a screen after `seq`; returns the current page either way.
   nlohmann::json awaitScreenAfter(int seq, std::chrono::milliseconds wait);
   bool mayFetch(const std::string& sha) const;
@@ -81,6 +84,7 @@ class SessionChannel {
   int seq_ = 0;
   Screen screen_;
   std::deque<Reply> replies_;
+  std::int64_t delivered_ = 0, handled_ = 0, popped_ = 0;  // replies counted
   std::set<std::string> images_;
   std::vector<std::pair<std::int64_t, std::string>> refused_;
   int refusals_ = 0;

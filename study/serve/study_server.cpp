@@ -245,7 +245,8 @@ void StudyServer::reply(ParticipantSession& session, const httplib::Request& req
     case SessionChannel::Delivery::Delivered: break;
   }
   const std::string type = body->value("type", "");
-  if (type == "onset" || type == "view") return sendJson(res, 200, {{"ok", true}});
+  if (type == "onset" || type == "view")  // acknowledged once the session thread stored it
+    return sendJson(res, 200, {{"ok", channel->awaitHandled(std::chrono::milliseconds(5000))}});
   // The next screen comes after the runner stored this reply: it is the acknowledgement.
   sendJson(res, 200, channel->awaitScreenAfter(seq->get<int>(), std::chrono::milliseconds(15000)));
 }
