@@ -4,48 +4,35 @@
 #include <sstream>
 #include <stdexcept>
 
-namespace tlab::study {
+#include "analysis/number_format.hpp"
 
-std::string htmlEscape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+namespace tlab::study {
 
 namespace {
 
 std::string document(const std::string& title, const std::string& body) {
   return "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\">"
-         "<title>" + htmlEscape(title) + "</title><link rel=\"stylesheet\" href=\"/static/participant.css\"></head><body><main>" + body +
+         "<title>" + analysis::escapeHtml(title) + "</title><link rel=\"stylesheet\" href=\"/static/participant.css\"></head><body><main>" + body +
          "</main></body></html>\n";
 }
 
-std::string cell(const nlohmann::json& v) { return "<td>" + htmlEscape(v.is_string() ? v.get<std::string>() : v.dump()) + "</td>"; }
+std::string cell(const nlohmann::json& v) { return "<td>" + analysis::escapeHtml(v.is_string() ? v.get<std::string>() : v.dump()) + "</td>"; }
 
 std::string actionForm(const std::string& action, const std::string& participant, const std::string& token, const std::string& extra) {
-  return "<form method=\"post\" action=\"/admin/" + action + "\"><input type=\"hidden\" name=\"token\" value=\"" + htmlEscape(token) +
-         "\"><input type=\"hidden\" name=\"participant\" value=\"" + htmlEscape(participant) + "\">" + extra + "<button>" + action +
+  return "<form method=\"post\" action=\"/admin/" + action + "\"><input type=\"hidden\" name=\"token\" value=\"" + analysis::escapeHtml(token) +
+         "\"><input type=\"hidden\" name=\"participant\" value=\"" + analysis::escapeHtml(participant) + "\">" + extra + "<button>" + action +
          "</button></form>";
 }
 
 }  // namespace
 
 std::string messagePage(const std::string& title, const std::string& text) {
-  return document(title, "<h1>" + htmlEscape(title) + "</h1><p>" + htmlEscape(text) + "</p>");
+  return document(title, "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>");
 }
 
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken) {
-  std::string body = "<h1>" + htmlEscape(status["experiment"].get<std::string>()) + " — admin</h1>";
-  body += "<p>" + htmlEscape(status["summary"].get<std::string>()) + "</p>";
+  std::string body = "<h1>" + analysis::escapeHtml(status["experiment"].get<std::string>()) + " — admin</h1>";
+  body += "<p>" + analysis::escapeHtml(status["summary"].get<std::string>()) + "</p>";
   body += "<h2>Slots</h2><table><tr><th>slot</th><th>participant</th><th>status</th><th>answered</th><th>session</th><th></th></tr>";
   for (const auto& s : status["slots"]) {
     const std::string participant = s["participant"].get<std::string>();

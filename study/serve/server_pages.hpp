@@ -7,7 +7,6 @@
 
 namespace tlab::study {
 
-std::string htmlEscape(const std::string& text);
 std::string messagePage(const std::string& title, const std::string& text);
 // The admin page for status() (study/serve/study_server_admin.cpp), with drop/extend forms.
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken);

@@ -11,13 +11,8 @@ Uses the browser, server and participant helpers of serve_browser_test.py.
 
     tests/study/browser/serve_browser_edges_test.py --tlab build/bin/tlab
 """
-import argparse
 import json
-import os
-import shutil
 import sys
-import tempfile
-import time
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -104,47 +99,16 @@ def check_database(tlab, db, folder):
     check(abs(browser["px_per_cm"] - expected) < 0.01, f"px_per_cm {browser.get('px_per_cm')} (expected {expected:.3f})")
 
 
+def edges(tlab, p, server, db, work):
+    decline(p, server)
+    time_out_then_answer(p, server)
+    server.stop()
+    check_database(tlab, db, work / "csv")
+
+
 def main():
-    here = Path(__file__).resolve().parent
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    parser.add_argument("--tlab", default=os.environ.get("TLAB_EXE", str(here.parents[2] / "build" / "bin" / "tlab")))
-    parser.add_argument("--experiment", default=str(here.parent / "data" / "online_edges.toml"))
-    parser.add_argument("--screenshots", default="")
-    args = parser.parse_args()
-    work = Path(tempfile.mkdtemp(prefix="tlab-browser-edges-"))
-    shots = Path(args.screenshots) if args.screenshots else work / "screenshots"
-    shots.mkdir(parents=True, exist_ok=True)
-    for old in shots.glob("[0-9][0-9]-*.png"):
-        old.unlink()
-    db = str(work / "edges.db")
-    server = driver = p = None
-    ok = False
-    started = time.monotonic()
-    try:
-        server = base.Server(args.tlab, args.experiment, db, work / "serve.log")
-        driver = base.start_browser(work / "chromium-profile")
-        p = base.Participant(driver, shots)
-        decline(p, server)
-        time_out_then_answer(p, server)
-        server.stop()
-        check_database(args.tlab, db, work / "csv")
-        ok = True
-        print(f"PASS in {time.monotonic() - started:.1f} s; screenshots in {shots}")
-    except Exception as error:
-        print(f"FAIL: {type(error).__name__}: {error}\n(server log: {work / 'serve.log'}; screenshots: {shots})", file=sys.stderr)
-        if p:
-            try:
-                p.screenshot("failure")
-            except Exception:
-                pass
-    finally:
-        if driver:
-            driver.quit()
-        if server:
-            server.kill()
-        if ok and shots == work / "screenshots":
-            shutil.rmtree(work, ignore_errors=True)
-    return 0 if ok else 1
+    args = base.parse_arguments(__doc__.split("\n")[0], "online_edges.toml")
+    return base.run_in_browser(args, lambda p, server, db, work: edges(args.tlab, p, server, db, work))
 
 
 if __name__ == "__main__":

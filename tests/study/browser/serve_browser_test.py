@@ -457,21 +457,27 @@ def check_refused_again(p, server, name):
     p.screenshot(name)
 
 
-def main():
+def parse_arguments(description, experiment):
     here = Path(__file__).resolve().parent
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(description=description)
     parser.add_argument("--tlab", default=os.environ.get("TLAB_EXE", str(here.parents[2] / "build" / "bin" / "tlab")))
-    parser.add_argument("--experiment", default=str(here.parent / "data" / "online.toml"))
+    parser.add_argument("--experiment", default=str(here.parent / "data" / experiment))
     parser.add_argument("--screenshots", default=os.environ.get("TLAB_BROWSER_SCREENSHOTS", ""))
     args = parser.parse_args()
     if not os.access(args.tlab, os.X_OK):
         fail(f"no tlab binary at {args.tlab} (build it: cmake --build build --target tlab)")
+    return args
+
+
+def run_in_browser(args, body):
+    """Starts `tlab serve` on args.experiment and headless Chromium, runs body(participant, server, db,
+    work) and reports; the server and the browser always go. Returns the exit status."""
     work = Path(tempfile.mkdtemp(prefix="tlab-browser-"))
     shots = Path(args.screenshots) if args.screenshots else work / "screenshots"
     shots.mkdir(parents=True, exist_ok=True)
     for old in shots.glob("[0-9][0-9]-*.png"):  # an earlier run's
         old.unlink()
-    db = str(work / "online.db")
+    db = str(work / "study.db")
     started = time.monotonic()
     server = driver = p = None
     ok = False
@@ -480,15 +486,7 @@ def main():
         print(f"tlab serve ready in {time.monotonic() - started:.1f} s at {server.base}")
         driver = start_browser(work / "chromium-profile")
         p = Participant(driver, shots)
-        answers = walk_session(p, server)
-        print(f"session walked in {time.monotonic() - started:.1f} s: {answers}")
-        check_refused_again(p, server, "already-completed")
-        server.stop()
-        check_database(args.tlab, db, work / "csv", answers)
-        # After a restart the store remembers: the same id is refused again.
-        server = Server(args.tlab, args.experiment, db, work / "serve.log")
-        check_refused_again(p, server, "already-completed-after-restart")
-        server.stop()
+        body(p, server, db, work)
         ok = True
         print(f"PASS in {time.monotonic() - started:.1f} s; screenshots in {shots}")
     except Exception as error:  # assertions and WebDriver errors: reported with the screen on show
@@ -510,6 +508,26 @@ def main():
             if shots != work / "screenshots":
                 work.rmdir()
     return 0 if ok else 1
+
+
+def whole_session(args, p, server, db, work):
+    answers = walk_session(p, server)
+    print(f"session walked: {answers}")
+    check_refused_again(p, server, "already-completed")
+    server.stop()
+    check_database(args.tlab, db, work / "csv", answers)
+    # After a restart the store remembers: the same id is refused again.
+    again = Server(args.tlab, args.experiment, db, work / "serve.log")
+    try:
+        check_refused_again(p, again, "already-completed-after-restart")
+        again.stop()
+    finally:
+        again.kill()
+
+
+def main():
+    args = parse_arguments(__doc__.split("\n")[0], "online.toml")
+    return run_in_browser(args, lambda p, server, db, work: whole_session(args, p, server, db, work))
 
 
 if __name__ == "__main__":
