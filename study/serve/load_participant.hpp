@@ -40,9 +40,11 @@ struct LoadBehaviour {
   double retrySeconds = 0.0;  // how long one outage may last before the participant fails (0: never retry)
 };
 
-// A trial the server acknowledged: its position in the session and the answer sent (JSON).
+// A trial the server acknowledged: its phase, its position among that phase's trials (the page's
+// "index": training and test count from 1 each) and the answer sent (JSON).
 struct AckedTrial {
   std::string participant;
+  std::string phase;
   int index = 0;
   std::string answer;
 };

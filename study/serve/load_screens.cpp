@@ -39,7 +39,7 @@ void LoadParticipant::fetchImages(const json& screen) {
   for (const std::string& sha : pageImages(screen)) {
     if (fetched_.count(sha)) continue;
     const Reply r = send("GET", "/api/" + token_ + "/image/" + sha + ".png");
-    if (r.status == 404) throw std::runtime_error("image " + sha + ": HTTP 404");  // the session is known (the screen came from it)
+    if (r.status == 404) screenOf(send("GET", "/api/" + token_ + "/screen"), "screen");  // a restarted server does not know the token
     if (r.status != 200 || r.body.empty()) throw std::runtime_error("image " + sha + ": HTTP " + std::to_string(r.status));
     fetched_.insert(sha);
   }
@@ -90,7 +90,7 @@ json LoadParticipant::trial(const json& screen) {
   json next = finishing(screen, answer, &acknowledged);
   if (acknowledged) {
     run_.ackMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
-    run_.acked.push_back({participant_, screen.value("index", 0), answer.value("answer", json()).dump()});
+    run_.acked.push_back({participant_, screen.value("phase", ""), screen.value("index", 0), answer.value("answer", json()).dump()});
     if (onAck_) onAck_(run_.acked.back());
   }
   return next;

@@ -51,6 +51,8 @@ inline int stopServe(const ServeProcess& s) {
 
 struct StoredTrial {
   std::string status;  // the participant's
+  std::string phase;
+  int position = 0;    // among the participant's trials of its phase, from 1 (the page's "index")
   std::string rawAnswer;
   int rows = 0;        // one per stored response (a trial without a response: one row, responded 0)
   int responded = 0;
@@ -70,11 +72,22 @@ inline std::map<std::pair<std::string, int>, StoredTrial> exportedTrials(const s
     const auto& row = rows[i];
     StoredTrial& t = out[{row.at(column.at("participant")), std::stoi(row.at(column.at("sequence")))}];
     t.status = row.at(column.at("participant_status"));
+    t.phase = row.at(column.at("phase"));
     t.rawAnswer = row.at(column.at("raw_answer"));
     t.responded += row.at(column.at("responded")) == "1";
     ++t.rows;
   }
+  std::map<std::pair<std::string, std::string>, int> positions;  // trials come in sequence order
+  for (auto& [key, t] : out) t.position = ++positions[{key.first, t.phase}];
   return out;
+}
+
+// The stored trial the page showed as `phase` trial `index` of `participant` (nullptr if none).
+inline const StoredTrial* storedTrialAt(const std::map<std::pair<std::string, int>, StoredTrial>& trials, const std::string& participant,
+                                        const std::string& phase, int index) {
+  for (const auto& [key, t] : trials)
+    if (key.first == participant && t.phase == phase && t.position == index) return &t;
+  return nullptr;
 }
 
 }  // namespace tlab::testing
