@@ -1,10 +1,10 @@
 #include "study/serve/study_server.hpp"
 
 #include <cstdio>
-#include <regex>
 #include <stdexcept>
 
 #include "study/serve/browser_responder.hpp"
+#include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
 #include "study/serve/web_assets.hpp"
 
@@ -19,17 +19,12 @@ constexpr const char* kToken = "([0-9a-f]{64})";
 void sendJson(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
-  res.set_content(body.dump(), "application/json");
+  res.set_content(jsonText(body), "application/json");
 }
 
 void refuse(httplib::Response& res, int status, const std::string& what) {
   std::fprintf(stderr, "serve: %d: %s\n", status, what.c_str());
   sendJson(res, status, {{"error", what}});
-}
-
-bool validParticipantId(const std::string& id) {
-  static const std::regex allowed("[A-Za-z0-9_.@-]{1,128}");
-  return std::regex_match(id, allowed);
 }
 
 std::optional<json> parseBody(const httplib::Request& req, httplib::Response& res) {
@@ -39,16 +34,6 @@ std::optional<json> parseBody(const httplib::Request& req, httplib::Response& re
     return std::nullopt;
   }
   return body;
-}
-
-// The page's display report: only numbers and short strings, at most 40 keys.
-std::optional<std::string> checkDisplay(const json& body) {
-  if (body.size() > 40) return "too many fields";
-  for (const auto& [key, value] : body.items()) {
-    if (key.size() > 40) return "a field name is too long";
-    if (!(value.is_number() || value.is_boolean() || (value.is_string() && value.get<std::string>().size() <= 400))) return "field '" + key + "': expected a number or a short text";
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -199,9 +184,10 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
     if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
     if (existing && existing->status == "dropped")
       return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
-    json arrival{{"participant", id}, {"user_agent", req.get_header_value("User-Agent").substr(0, 400)}};
+    std::vector<std::pair<std::string, std::string>> link;
     for (const std::string& p : {e.online.studyParameter, e.online.sessionParameter})
-      if (!p.empty() && req.has_param(p.c_str())) arrival[p] = req.get_param_value(p.c_str()).substr(0, 200);
+      if (!p.empty() && req.has_param(p.c_str())) link.emplace_back(p, req.get_param_value(p.c_str()));
+    const json arrival = arrivalRecord(id, req.get_header_value("User-Agent"), link);
     const auto timeout = std::chrono::milliseconds(std::int64_t(e.online.timeoutMinutes * 60000.0));
     std::lock_guard lock(mutex_);
     auto& slot = byParticipant_[id];
