@@ -24,6 +24,7 @@ void loadtest(const study::LoadOptions& o) {
   std::printf("responses acknowledged: %d in %.1f s: %.1f responses/s\n", r.acknowledged, r.seconds, r.throughput());
   printLatency("answer -> acknowledgement", r.ack);
   printLatency("all requests", r.requests);
+  printLatency("display report -> first screen", r.start);
   if (r.reconnects > 0) std::printf("reconnections: %d\n", r.reconnects);
   std::fflush(stdout);
   if (r.failed > 0) throw std::runtime_error(r.firstError);

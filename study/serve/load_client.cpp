@@ -57,7 +57,7 @@ LoadResult runLoad(const LoadOptions& o) {
   }
   LoadResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::vector<double> ack, requests;
+  std::vector<double> ack, requests, starts;
   for (const auto& run : runs) {
     (run.finished ? r.finished : r.failed) += 1;
     if (!run.finished && r.firstError.empty()) r.firstError = run.error;
@@ -65,10 +65,12 @@ LoadResult runLoad(const LoadOptions& o) {
     r.acked.insert(r.acked.end(), run.acked.begin(), run.acked.end());
     ack.insert(ack.end(), run.ackMs.begin(), run.ackMs.end());
     requests.insert(requests.end(), run.requestMs.begin(), run.requestMs.end());
+    starts.insert(starts.end(), run.startMs.begin(), run.startMs.end());
   }
   r.acknowledged = int(r.acked.size());
   r.ack = percentiles(std::move(ack));
   r.requests = percentiles(std::move(requests));
+  r.start = percentiles(std::move(starts));
   return r;
 }
 

@@ -37,7 +37,7 @@ struct LoadResult {
   int acknowledged = 0;
   int reconnects = 0;
   double seconds = 0.0;  // wall time of the whole run
-  Percentiles ack, requests;
+  Percentiles ack, requests, start;  // answer → acknowledgement; every request; display report → first screen
   std::vector<AckedTrial> acked;  // every acknowledged trial, by participant
   std::string firstError;         // the first failed participant's error line
   double throughput() const { return seconds > 0.0 ? acknowledged / seconds : 0.0; }

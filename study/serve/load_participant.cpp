@@ -84,7 +84,9 @@ json LoadParticipant::arrive() {
   if (screen.value("seq", 0) == 0 || screen.value("kind", "") == "error") {
     const json display{{"screen_width", 1920}, {"screen_height", 1080}, {"window_width", 1600}, {"window_height", 900},
                        {"device_pixel_ratio", 1}, {"user_agent", "tlab loadtest"}, {"refresh_hz", 60}};
+    const auto sent = Clock::now();
     screen = screenOf(send("POST", api + "display", &display), "display");
+    run_.startMs.push_back(msSince(sent));
   }
   return pastWait(screen);
 }

@@ -54,6 +54,7 @@ struct ParticipantRun {
   std::string error;  // why the participant failed ("" when finished)
   std::vector<AckedTrial> acked;
   std::vector<double> ackMs, requestMs;  // answer → acknowledgement; every request
+  std::vector<double> startMs;           // display report → first screen (the server enrols and plans the session)
   int reconnects = 0;
 };
 
