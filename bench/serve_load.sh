@@ -32,7 +32,7 @@ slots=()
 start=$(date +%s.%N)
 "$tlab" serve "$experiment" --db "$db" --listen 127.0.0.1:0 --quiet --threads "${SERVE_THREADS:-160}" "${slots[@]}" >"$work/serve.out" 2>"$work/serve.err" &
 server=$!
-until grep -q '^participants: ' "$work/serve.out"; do
+until grep -qs '^participants: ' "$work/serve.out"; do
   if ! kill -0 "$server" 2>/dev/null; then cat "$work/serve.err" >&2; exit 1; fi
   sleep 0.5
 done
@@ -46,4 +46,8 @@ status=0
 "$tlab" loadtest "$link" --participants "$participants" --concurrency "$concurrency" --think "$think" --param "$param" \
   --seed "${SEED:-1}" --retry-seconds 30 --pid-prefix "bench-$(date +%s)-" || status=$?
 echo "server refusals and errors: $(grep -c '^serve: [45]' "$work/serve.err" || true)"
+if ! kill -0 "$server" 2>/dev/null; then
+  wait "$server" || echo "the server ended during the run (exit status $?); its last messages:" >&2
+  tail -20 "$work/serve.err" >&2
+fi
 exit "$status"
