@@ -37,6 +37,7 @@ ParticipantSession::~ParticipantSession() {
 void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser) {
   std::lock_guard lock(mutex_);
   if (running_) return;
+  if (!ended_.empty() && !channel_->closed()) return;  // finished or declined: a reloaded page shows the end screen again
   if (thread_.joinable()) thread_.join();
   if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
   ended_.clear();

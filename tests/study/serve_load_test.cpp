@@ -1,7 +1,11 @@
 // End to end: `tlab serve` on the tiny experiment and `tlab loadtest` with 8 simulated
-// participants, 4 at a time, thinking 0-20 ms; `tlab export --csv` must then hold every
-// participant finished, with every trial answered exactly once.
+// participants, 4 at a time, thinking about 10 ms (exponential); `tlab export --csv` must then
+// hold every participant finished, with every trial answered exactly once.
 #include <gtest/gtest.h>
+
+#include <httplib.h>
+
+#include <nlohmann/json.hpp>
 
 #include "tests/study/serve_test_support.hpp"
 
@@ -41,4 +45,27 @@ TEST(ServeLoad, AFailedParticipantExitsOneWithTheFirstError) {
   EXPECT_EQ(load.exitCode, 1);
   EXPECT_NE(load.out.find("participants: 0 finished, 2 failed"), std::string::npos) << load.out;
   EXPECT_NE(load.err.find("tlab: error: participant load-001: GET /s/no-such-study?pid=load-001: HTTP 404"), std::string::npos) << load.err;
+}
+
+// The end screen holds the completion code: a page reloaded after the end (POST /display again)
+// must show it again, not start the finished session anew (which ended on an error screen).
+TEST(ServeLoad, APageReloadedAfterTheEndStillShowsTheEndScreen) {
+  const auto dir = freshDir("serve_reload_end");
+  const ServeProcess server = startServe(studyData("tiny.toml"), dir, 0, "1");
+  ASSERT_GT(server.port, 0);
+  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link, "--participants", "1", "--think", "0"}));
+  ASSERT_EQ(load.exitCode, 0) << load.out << load.err;
+  httplib::Client client("127.0.0.1", server.port);
+  const auto arrived = client.Get("/s/tiny?pid=load-001");
+  ASSERT_TRUE(arrived);
+  ASSERT_EQ(arrived->status, 303);
+  const std::string api = "/api/" + arrived->get_header_value("Location").substr(3);
+  const auto shown = client.Post((api + "/display").c_str(), "{}", "application/json");
+  ASSERT_TRUE(shown);
+  EXPECT_EQ(nlohmann::json::parse(shown->body).value("kind", ""), "end");
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a restarted walk would have failed by now
+  const auto now = client.Get((api + "/screen").c_str());
+  ASSERT_TRUE(now);
+  EXPECT_EQ(nlohmann::json::parse(now->body).value("kind", ""), "end") << now->body;
+  EXPECT_EQ(stopServe(server), 0);
 }
