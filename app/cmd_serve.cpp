@@ -54,24 +54,23 @@ std::thread stopOnSignal(study::StudyServer& server, sigset_t signals) {
 
 void serve(const ServeCommandOptions& o) {
   const auto [host, port] = parseListen(o.listen);
-  const study::Experiment e = study::readExperimentFile(o.experiment);
-  study::checkOnlineExperiment(e);
-  study::LockedStore store(study::openStore(o.db));
   sigset_t signals;
   sigemptyset(&signals);
   for (const int s : {SIGINT, SIGTERM, SIGUSR1}) sigaddset(&signals, s);
-  // Blocked before any thread starts, the render worker's (and the GL driver's threads it starts)
-  // included: a thread that does not block SIGTERM would take it and end the process at once.
+  // Blocked before any thread starts (the render worker's and its GL driver's too): threads inherit
+  // the mask, and one that took SIGTERM would end the process at once instead of stopping the server.
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+  const study::Experiment e = study::readExperimentFile(o.experiment);
+  study::checkOnlineExperiment(e);
+  study::LockedStore store(study::openStore(o.db));
   study::RenderWorker worker(study::stimulusDirectoryFor(o.db), sceneCatalog(), e.online);
-  // While the stimuli are prepared, Ctrl-C ends tlab at once (this thread alone takes the signal).
-  pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
   const study::Design design = study::makeDesign(e);
   const int slots = o.slots > 0 ? o.slots : int(std::min<std::size_t>(std::size_t(std::max(e.participants, 1)), design.balancedMultiple()));
+  pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);  // Ctrl-C during the preparation ends tlab as usual
   const study::PreparedStudy prepared = study::prepareStudy(e, worker, slots, !o.quiet);
+  pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // before any server thread starts
   std::printf("prepared %d images for %d trials of %d slots (GL: %s)\n", prepared.images, prepared.trials, prepared.slots, worker.gpuInfo().renderer.c_str());
 
-  pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // before any server thread starts: they inherit it
   study::ServeOptions options;
   options.host = host;
   options.port = port;

@@ -24,6 +24,7 @@ void addTaskCommand(CLI::App& app);      // cmd_task.cpp
 void addDesignCommand(CLI::App& app);    // cmd_design.cpp
 void addRunCommand(CLI::App& app);       // cmd_run.cpp
 void addServeCommand(CLI::App& app);     // cmd_serve.cpp
+void addLoadtestCommand(CLI::App& app);  // cmd_loadtest.cpp
 void addSimulateCommand(CLI::App& app);  // cmd_simulate.cpp
 void addExportCommand(CLI::App& app);    // cmd_export.cpp
 void addAnalyzeCommand(CLI::App& app);   // cmd_analyze.cpp

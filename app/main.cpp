@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   tlab::app::addDesignCommand(app);
   tlab::app::addRunCommand(app);
   tlab::app::addServeCommand(app);
+  tlab::app::addLoadtestCommand(app);
   tlab::app::addSimulateCommand(app);
   tlab::app::addExportCommand(app);
   tlab::app::addAnalyzeCommand(app);

@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "study/serve/request_checks.hpp"
+
 namespace tlab::study {
 
 int SessionChannel::publish(Screen screen) {
@@ -60,10 +62,16 @@ SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& 
     error = "screen " + std::to_string(seq) + " is no longer shown; the current one is " + std::to_string(seq_);
     return Delivery::Stale;
   }
-  Checked c = screen_.check(body);
+  Checked c;
+  try {
+    c = screen_.check(body);
+  } catch (const std::exception& e) {  // a check that met a JSON type it did not expect ({"type": true}): still a refusal
+    c.error = std::string("reply: ") + e.what();
+  }
   if (!c.error.empty()) {
     ++refusals_;
-    if (refused_.size() < 100) refused_.emplace_back(receivedNs, nlohmann::json{{"error", c.error}, {"body", body.dump().substr(0, 500)}}.dump());
+    // jsonText: the body cut at 500 bytes may end inside a character.
+    if (refused_.size() < 100) refused_.emplace_back(receivedNs, jsonText({{"error", c.error}, {"body", body.dump().substr(0, 500)}}));
     error = c.error;
     return Delivery::Refused;
   }

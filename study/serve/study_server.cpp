@@ -3,10 +3,10 @@
 #include <sys/socket.h>
 
 #include <cstdio>
-#include <regex>
 #include <stdexcept>
 
 #include "study/serve/browser_responder.hpp"
+#include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
 #include "study/serve/web_assets.hpp"
 
@@ -21,17 +21,12 @@ constexpr const char* kToken = "([0-9a-f]{64})";
 void sendJson(httplib::Response& res, int status, const json& body) {
   res.status = status;
   res.set_header("Cache-Control", "no-store");
-  res.set_content(body.dump(), "application/json");
+  res.set_content(jsonText(body), "application/json");
 }
 
 void refuse(httplib::Response& res, int status, const std::string& what) {
   std::fprintf(stderr, "serve: %d: %s\n", status, what.c_str());
   sendJson(res, status, {{"error", what}});
-}
-
-bool validParticipantId(const std::string& id) {
-  static const std::regex allowed("[A-Za-z0-9_.@-]{1,128}");
-  return std::regex_match(id, allowed);
 }
 
 std::optional<json> parseBody(const httplib::Request& req, httplib::Response& res) {
@@ -41,16 +36,6 @@ std::optional<json> parseBody(const httplib::Request& req, httplib::Response& re
     return std::nullopt;
   }
   return body;
-}
-
-// The page's display report: only numbers and short strings, at most 40 keys.
-std::optional<std::string> checkDisplay(const json& body) {
-  if (body.size() > 40) return "too many fields";
-  for (const auto& [key, value] : body.items()) {
-    if (key.size() > 40) return "a field name is too long";
-    if (!(value.is_number() || value.is_boolean() || (value.is_string() && value.get<std::string>().size() <= 400))) return "field '" + key + "': expected a number or a short text";
-  }
-  return std::nullopt;
 }
 
 }  // namespace
@@ -66,6 +51,10 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
     const int yes = 1;
     ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
   });
+  http_.set_tcp_nodelay(true);  // headers and body go out as separate writes: without it each reply waits ~40 ms for a delayed ACK
+  // A page makes dozens of requests; closing its connection every 5 (cpp-httplib's default) makes
+  // it reconnect in bursts that overflow the listen backlog (5): dropped SYNs cost 1 s, 3 s, 7 s.
+  http_.set_keep_alive_max_count(1000);
   http_.set_read_timeout(10, 0);
   http_.set_write_timeout(10, 0);
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
@@ -213,9 +202,10 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
     if (const auto it = byParticipant_.find(id); it != byParticipant_.end()) s = it->second;
   }
   if (!s) {
-    json arrival{{"participant", id}, {"user_agent", req.get_header_value("User-Agent").substr(0, 400)}};
+    std::vector<std::pair<std::string, std::string>> link;
     for (const std::string& p : {e.online.studyParameter, e.online.sessionParameter})
-      if (!p.empty() && req.has_param(p.c_str())) arrival[p] = req.get_param_value(p.c_str()).substr(0, 200);
+      if (!p.empty() && req.has_param(p.c_str())) link.emplace_back(p, req.get_param_value(p.c_str()));
+    const json arrival = arrivalRecord(id, req.get_header_value("User-Agent"), link);
     const auto timeout = std::chrono::milliseconds(std::int64_t(e.online.timeoutMinutes * 60000.0));
     std::lock_guard lock(mutex_);
     auto& slot = byParticipant_[id];

@@ -1,0 +1,99 @@
+// LoadParticipant's answers to each kind of screen (study/serve/load_participant.hpp): what a
+// participant does on a message, consent, form, break and trial screen.
+#include <httplib.h>
+
+#include <stdexcept>
+#include <thread>
+
+#include "study/serve/load_answers.hpp"
+#include "study/serve/load_participant.hpp"
+
+namespace tlab::study {
+
+using nlohmann::json;
+
+json LoadParticipant::step(const json& screen) {
+  const std::string kind = screen.value("kind", "");
+  if (kind == "trial") return trial(screen);
+  if (kind == "message" || kind == "feedback") {
+    fetchImages(screen);
+    think(thinkTime());
+    return finishing(screen, {{"type", "continue"}});
+  }
+  if (kind == "break") {  // the server ignores a press before the break's minimum, as the page's disabled button does
+    think(screen.value("min_seconds", 0.0) * 1000.0 + 300.0 + thinkTime());
+    return finishing(screen, {{"type", "continue"}});
+  }
+  if (kind == "consent") {
+    think(thinkTime());
+    return finishing(screen, {{"type", "consent"}, {"accepted", true}});
+  }
+  if (kind == "form") {
+    think(thinkTime());
+    return finishing(screen, loadFormValues(screen, rng_));
+  }
+  throw std::runtime_error("unexpected screen kind '" + kind + "': " + screen.dump().substr(0, 200));
+}
+
+void LoadParticipant::fetchImages(const json& screen) {
+  for (const std::string& sha : pageImages(screen)) {
+    if (fetched_.count(sha)) continue;
+    const Reply r = send("GET", "/api/" + token_ + "/image/" + sha + ".png");
+    if (r.status == 404) screenOf(send("GET", "/api/" + token_ + "/screen"), "screen");  // a restarted server does not know the token
+    if (r.status != 200 || r.body.empty()) throw std::runtime_error("image " + sha + ": HTTP " + std::to_string(r.status));
+    fetched_.insert(sha);
+  }
+}
+
+// Sends a reply that ends the screen; returns the next one (the acknowledgement). A stale screen
+// (409) is not an error: the server says which screen is current.
+json LoadParticipant::finishing(const json& screen, json body, bool* acknowledged) {
+  body["seq"] = screen.value("seq", 0);
+  const Reply r = send("POST", "/api/" + token_ + "/reply", &body);
+  if (r.status == 200 && acknowledged) {
+    const json next = pastWait(screenOf(r, "reply"));  // an error screen (not stored) throws here
+    *acknowledged = next.value("seq", 0) > body.value("seq", 0);
+    return next;
+  }
+  if (r.status == 409) {
+    const json stale = json::parse(r.body, nullptr, false);
+    if (stale.is_object() && stale.contains("screen") && stale["screen"].is_object()) return pastWait(stale["screen"]);
+  }
+  if (r.status == 400) throw std::runtime_error("reply refused (" + brief(r.body) + "): " + body.dump().substr(0, 200));
+  return pastWait(screenOf(r, "reply"));
+}
+
+json LoadParticipant::trial(const json& screen) {
+  fetchImages(screen);
+  const std::string reply = "/api/" + token_ + "/reply";
+  const json onset{{"seq", screen.value("seq", 0)}, {"type", "onset"}, {"painted_ms", 16.7}};
+  if (const Reply r = send("POST", reply, &onset); r.status == 409) {
+    return pastWait(json::parse(r.body, nullptr, false).value("screen", json::object()));  // the trial is gone (timed out)
+  } else if (r.status != 200) {
+    screenOf(r, "onset");  // 404: the server restarted
+    throw std::runtime_error("onset refused: HTTP " + std::to_string(r.status) + " " + brief(r.body));
+  }
+  const double rt = thinkTime();
+  if (screen.contains("turntable")) {  // one drag to the next view, half-way through the think time
+    think(rt / 2.0);
+    const json& t = screen["turntable"];
+    const json view{{"seq", screen.value("seq", 0)}, {"type", "view"}, {"azimuth", (t["start"][0].get<int>() + 1) % t.value("azimuths", 1)},
+                    {"elevation", t["start"][1].get<int>()}, {"t_ms", rt / 2.0}};
+    send("POST", reply, &view);
+    think(rt / 2.0);
+  } else {
+    think(rt);
+  }
+  const json answer = loadAnswer(screen, rt, rng_);
+  const auto sent = std::chrono::steady_clock::now();
+  bool acknowledged = false;
+  json next = finishing(screen, answer, &acknowledged);
+  if (acknowledged) {
+    run_.ackMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
+    run_.acked.push_back({participant_, screen.value("phase", ""), screen.value("index", 0), answer.value("answer", json()).dump()});
+    if (onAck_) onAck_(run_.acked.back());
+  }
+  return next;
+}
+
+}  // namespace tlab::study
