@@ -25,7 +25,7 @@ struct ServeCommandOptions {
   std::string experiment;
   std::string db = "study.db";
   std::string listen = "127.0.0.1:8080";
-  int threads = 64;
+  int threads = 256;  // cpp-httplib holds a thread per keep-alive connection: 100 participants need well over 100
   int slots = 0;
   bool quiet = false;
 };

@@ -1,8 +1,12 @@
 #include "study/serve/study_server.hpp"
 
+#include <arpa/inet.h>
+#include <netinet/in.h>
 #include <sys/socket.h>
 
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <stdexcept>
 
 #include "study/serve/browser_responder.hpp"
@@ -85,11 +89,38 @@ StudyServer::~StudyServer() {
   for (auto& [token, s] : byToken_) s->stop();
 }
 
+namespace {
+
+// cpp-httplib listens with a backlog of 5 (compiled into Debian's library): a burst of arrivals
+// then loses SYNs, which browsers retry only after 1, 3, 7 s. Linux lets listen() be called again
+// on a listening socket to change its backlog; the socket is found by its bound port.
+void widenListenBacklog(int port) {
+  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd")) {
+    const int fd = std::atoi(entry.path().filename().c_str());
+    int listening = 0;
+    socklen_t size = sizeof listening;
+    sockaddr_storage address{};
+    socklen_t length = sizeof address;
+    if (::getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &listening, &size) != 0 || !listening) continue;
+    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) continue;
+    const int bound = address.ss_family == AF_INET    ? ntohs(reinterpret_cast<sockaddr_in*>(&address)->sin_port)
+                      : address.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&address)->sin6_port)
+                                                      : -1;
+    if (bound == port) ::listen(fd, SOMAXCONN);
+  }
+}
+
+}  // namespace
+
 int StudyServer::bind() {
   if (options_.port == 0) {  // any free port (tests): the one bound is printed
     const int port = http_.bind_to_any_port(options_.host);
-    if (port > 0) return options_.port = port;
+    if (port > 0) {
+      widenListenBacklog(port);
+      return options_.port = port;
+    }
   } else if (http_.bind_to_port(options_.host, options_.port)) {
+    widenListenBacklog(options_.port);
     return options_.port;
   }
   throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +

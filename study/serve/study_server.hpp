@@ -21,7 +21,7 @@ struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;
   std::size_t maxBodyBytes = 64 * 1024;
-  int threads = 64;  // HTTP worker threads (a reply waits for the next screen)
+  int threads = 256;  // HTTP worker threads: one per open keep-alive connection (browsers open several)
 };
 
 class StudyServer {
