@@ -55,7 +55,7 @@ TEST(ExperimentFile, ReadsTheExamples) {
 
 TEST(ExperimentFile, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf("extra = 1\n" + kBase), "bad.toml:1: extra: unknown key (known: analysis, block_tasks, breaks, consent, counterbalancing, "
-                                            "debrief, factors, goodbye, id, info, observer, participant_title, participants, "
+                                            "debrief, factors, goodbye, id, info, observer, online, participant_title, participants, "
                                             "questionnaires, seed, standard_info, stimulus, tasks, title, training, welcome)");
   EXPECT_EQ(errorOf(kBase + "trials = 0\n"), "bad.toml:9: tasks[1].trials: must be >= 1");
   EXPECT_NE(errorOf(kBase + "when = { method = \"c\" }\n").find("bad.toml:9: tasks[1].when.method: must name a level"),
