@@ -108,6 +108,17 @@ void drawAxisLines(cairo_t* cr, const Frame& f, const std::string& yLabel) {
   drawText(cr, yLabel, 18, (f.top + f.bottom) / 2, 12, Align::Center, false, -M_PI / 2);
 }
 
+Frame drawPlotFrame(cairo_t* cr, double width, double height, double rightMargin, double bottomMargin,
+                    const std::vector<double>& ticks, const std::string& title, const std::string& yLabel) {
+  Frame f = plotFrame(width, height, rightMargin, bottomMargin);
+  f.yMin = ticks.front();
+  f.yMax = ticks.back();
+  drawText(cr, title, width / 2, 22, 14, Align::Center, true);
+  drawYGrid(cr, f, ticks);
+  drawAxisLines(cr, f, yLabel);
+  return f;
+}
+
 }  // namespace svg
 
 namespace {

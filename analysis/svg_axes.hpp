@@ -54,5 +54,9 @@ Frame plotFrame(double width, double height, double rightMargin, double bottomMa
 void drawYGrid(cairo_t* cr, const Frame& f, const std::vector<double>& ticks, bool logLabels = false);
 // The left and bottom axis lines and the rotated y-axis label.
 void drawAxisLines(cairo_t* cr, const Frame& f, const std::string& yLabel);
+// The frame of a plot whose y axis runs over `ticks` (linear, no x ticks), with the title, the y
+// grid and the axis lines drawn.
+Frame drawPlotFrame(cairo_t* cr, double width, double height, double rightMargin, double bottomMargin,
+                    const std::vector<double>& ticks, const std::string& title, const std::string& yLabel);
 
 }  // namespace tlab::analysis::svg

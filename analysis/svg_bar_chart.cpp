@@ -87,13 +87,7 @@ std::vector<double> barChartTicks(const BarChart& chart) {
 std::string renderBarChartSvg(const BarChart& chart, double width, double height) {
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f = plotFrame(width, height, 20, 70);
-  const std::vector<double> ticks = barChartTicks(chart);
-  f.yMin = ticks.front();
-  f.yMax = ticks.back();
-  drawText(cr, chart.title, width / 2, 22, 14, Align::Center, true);
-  drawYGrid(cr, f, ticks);
-  drawAxisLines(cr, f, chart.yLabel);
+  const Frame f = drawPlotFrame(cr, width, height, 20, 70, barChartTicks(chart), chart.title, chart.yLabel);
   drawBars(cr, f, chart);
   drawLegend(cr, f, chart);
   return canvas.finish();

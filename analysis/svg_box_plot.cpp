@@ -84,13 +84,7 @@ void drawBox(cairo_t* cr, const Frame& f, double cx, double half, const Rgb& c, 
 std::string renderBoxPlotSvg(const BoxPlot& plot, double width, double height) {
   SvgCanvas canvas(width, height);
   cairo_t* cr = canvas.cr();
-  Frame f = plotFrame(width, height, 20, 50);
-  const std::vector<double> ticks = boxPlotTicks(plot);
-  f.yMin = ticks.front();
-  f.yMax = ticks.back();
-  drawText(cr, plot.title, width / 2, 22, 14, Align::Center, true);
-  drawYGrid(cr, f, ticks);
-  drawAxisLines(cr, f, plot.yLabel);
+  const Frame f = drawPlotFrame(cr, width, height, 20, 50, boxPlotTicks(plot), plot.title, plot.yLabel);
   const double slot = (f.right - f.left) / static_cast<double>(std::max<std::size_t>(1, plot.groups.size()));
   for (std::size_t i = 0; i < plot.groups.size(); ++i) {
     const auto& g = plot.groups[i];
