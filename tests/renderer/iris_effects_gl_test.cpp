@@ -19,17 +19,7 @@ tlab::core::Image renderQuad(std::map<std::string, std::string> settings, bool f
     s.objects[0].mesh = makeQuad({0, 0, 0}, {0, 2, 0}, {2, 0, 0});  // wound away from the viewer
   }
   s.objects[0].backColor = {0.2f, 0.4f, 0.6f, 1};
-  Renderer renderer(s);
-  RenderRequest r;
-  r.width = r.height = 64;
-  r.style = "iris";
-  r.camera = frontCamera();
-  settings["lighting"] = "none";
-  settings["specular"] = "0";
-  settings.emplace("stripes", "off");      // `iris` defaults to the IRIS look (stripes,
-  settings.emplace("silhouettes", "off");  // silhouettes); these tests look at one effect each
-  r.settings = settings;
-  return renderer.render(r);
+  return renderOneEffect(s, "iris", 64, std::move(settings));
 }
 
 }  // namespace

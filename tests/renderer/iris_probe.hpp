@@ -52,4 +52,21 @@ inline Scene stretchedQuad(glm::vec2 stScale) {
   return s;
 }
 
+// `scene` in `style` at size × size from the front camera, unlit, showing only the effect the
+// settings ask for: `iris` defaults to the IRIS look (stripes, silhouettes), off unless set.
+inline tlab::core::Image renderOneEffect(const Scene& scene, const std::string& style, int size,
+                                         std::map<std::string, std::string> settings) {
+  Renderer renderer(scene);
+  RenderRequest r;
+  r.width = r.height = size;
+  r.style = style;
+  r.camera = frontCamera();
+  settings["lighting"] = "none";
+  settings["specular"] = "0";
+  settings.emplace("stripes", "off");
+  settings.emplace("silhouettes", "off");
+  r.settings = settings;
+  return renderer.render(r);
+}
+
 }  // namespace tlab::testing

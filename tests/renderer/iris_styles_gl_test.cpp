@@ -29,17 +29,7 @@ std::optional<glm::dvec3> sphereNormalAt(double x, double y, int size) {
 }
 
 tlab::core::Image renderProbe(const std::string& style, std::map<std::string, std::string> settings) {
-  Renderer renderer(alphaProbeSphere());
-  RenderRequest r;
-  r.width = r.height = kSize;
-  r.style = style;
-  r.camera = frontCamera();
-  settings["lighting"] = "none";
-  settings["specular"] = "0";
-  settings.emplace("stripes", "off");      // `iris` defaults to the IRIS look (stripes,
-  settings.emplace("silhouettes", "off");  // silhouettes); these tests look at one effect each
-  r.settings = settings;
-  return renderer.render(r);
+  return renderOneEffect(alphaProbeSphere(), style, kSize, std::move(settings));
 }
 
 }  // namespace
