@@ -48,11 +48,8 @@ std::string betweenCellLabel(const std::vector<Factor>& factors, const std::vect
   return label;
 }
 
-}  // namespace
-
-AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
-                            const std::vector<std::string>& between,
-                            const std::vector<std::string>& within, const std::string& subject) {
+void checkColumns(const std::string& dv, const std::vector<std::string>& between, const std::vector<std::string>& within,
+                  const std::string& subject) {
   if (!within.empty() && subject.empty())
     throw AnalysisError("within-subject factors need a subject column (--subject)");
   std::vector<std::string> used = between;
@@ -62,27 +59,19 @@ AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
   requireDistinctColumns(used);
   if (between.empty() && within.empty())
     throw AnalysisError("an ANOVA needs at least one factor (--between or --within)");
+}
 
-  const std::vector<double> values = table.numericColumn(dv);
-  if (table.rowCount() == 0) throw AnalysisError(table.source() + ": no data rows");
-  std::vector<Factor> betweenFactors;
-  std::vector<Factor> withinFactors;
-  for (const auto& name : between) {
-    betweenFactors.push_back(makeFactor(table, name));
-    requireLevelCount(betweenFactors.back(), 2, SIZE_MAX, "a between-subject factor");
+std::vector<Factor> readFactors(const Table& table, const std::vector<std::string>& names, const char* what) {
+  std::vector<Factor> factors;
+  for (const auto& name : names) {
+    factors.push_back(makeFactor(table, name));
+    requireLevelCount(factors.back(), 2, SIZE_MAX, what);
   }
-  for (const auto& name : within) {
-    withinFactors.push_back(makeFactor(table, name));
-    requireLevelCount(withinFactors.back(), 2, SIZE_MAX, "a within-subject factor");
-  }
+  return factors;
+}
 
-  AnovaDesign design;
-  design.dv = dv;
-  for (const auto& f : betweenFactors) design.between.push_back({f.name, f.levels});
-  for (const auto& f : withinFactors) design.within.push_back({f.name, f.levels});
-  const std::size_t cells = design.cellCount();
-
-  // Subject of each row: the subject column, or the row itself.
+// Subject of each row: the subject column, or the row itself; fills design.subjects.
+std::vector<std::size_t> subjectOfRows(const Table& table, const std::string& subject, AnovaDesign& design) {
   std::vector<std::size_t> subjectOfRow(table.rowCount());
   if (subject.empty()) {
     for (std::size_t r = 0; r < table.rowCount(); ++r) {
@@ -94,9 +83,13 @@ AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
     subjectOfRow = s.codes;
     design.subjects = s.levels;
   }
-  const std::size_t n = design.subjects.size();
+  return subjectOfRow;
+}
 
-  // Between group of each subject (must be constant within a subject).
+// Between group of each subject (must be constant within a subject).
+void assignBetweenLevels(const Table& table, const std::vector<Factor>& betweenFactors,
+                         const std::vector<std::size_t>& subjectOfRow, AnovaDesign& design) {
+  const std::size_t n = design.subjects.size();
   design.betweenLevels.assign(n, std::vector<std::size_t>(betweenFactors.size(), SIZE_MAX));
   std::vector<std::size_t> firstRow(n, SIZE_MAX);
   for (std::size_t r = 0; r < table.rowCount(); ++r) {
@@ -114,8 +107,13 @@ AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
                             " (a between-subject factor must be constant within a subject)");
     }
   }
+}
 
-  // Cell means per subject, as R's mean() computes them (replicates of a subject in a cell).
+// Cell means per subject, as R's mean() computes them (replicates of a subject in a cell).
+void cellMeans(const Table& table, const std::vector<double>& values, const std::vector<Factor>& withinFactors,
+               const std::vector<std::size_t>& subjectOfRow, AnovaDesign& design) {
+  const std::size_t cells = design.cellCount();
+  const std::size_t n = design.subjects.size();
   std::vector<std::vector<double>> cellValues(n * cells);
   for (std::size_t r = 0; r < table.rowCount(); ++r) {
     std::size_t cell = 0;
@@ -133,24 +131,46 @@ AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
       design.maxReplicates = std::max(design.maxReplicates, replicates.size());
       design.y(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(c)) = rMean(replicates);
     }
+}
 
-  // Every between-subject cell needs subjects (otherwise the model is rank deficient).
-  if (!betweenFactors.empty()) {
-    std::map<std::vector<std::size_t>, std::size_t> perCell;
-    for (const auto& lv : design.betweenLevels) ++perCell[lv];
-    std::vector<std::size_t> lv(betweenFactors.size(), 0);
-    while (true) {
-      if (perCell[lv] == 0)
-        throw AnalysisError("between-subject cell " + betweenCellLabel(betweenFactors, lv) +
-                            " has no subjects");
-      std::size_t f = lv.size();
-      while (f-- > 0) {
-        if (++lv[f] < betweenFactors[f].levels.size()) break;
-        lv[f] = 0;
-      }
-      if (f == SIZE_MAX) break;
+// Every between-subject cell needs subjects (otherwise the model is rank deficient).
+void requireFilledBetweenCells(const std::vector<Factor>& betweenFactors, const AnovaDesign& design) {
+  if (betweenFactors.empty()) return;
+  std::map<std::vector<std::size_t>, std::size_t> perCell;
+  for (const auto& lv : design.betweenLevels) ++perCell[lv];
+  std::vector<std::size_t> lv(betweenFactors.size(), 0);
+  while (true) {
+    if (perCell[lv] == 0)
+      throw AnalysisError("between-subject cell " + betweenCellLabel(betweenFactors, lv) +
+                          " has no subjects");
+    std::size_t f = lv.size();
+    while (f-- > 0) {
+      if (++lv[f] < betweenFactors[f].levels.size()) break;
+      lv[f] = 0;
     }
+    if (f == SIZE_MAX) break;
   }
+}
+
+}  // namespace
+
+AnovaDesign makeAnovaDesign(const Table& table, const std::string& dv,
+                            const std::vector<std::string>& between,
+                            const std::vector<std::string>& within, const std::string& subject) {
+  checkColumns(dv, between, within, subject);
+  const std::vector<double> values = table.numericColumn(dv);
+  if (table.rowCount() == 0) throw AnalysisError(table.source() + ": no data rows");
+  const std::vector<Factor> betweenFactors = readFactors(table, between, "a between-subject factor");
+  const std::vector<Factor> withinFactors = readFactors(table, within, "a within-subject factor");
+
+  AnovaDesign design;
+  design.dv = dv;
+  for (const auto& f : betweenFactors) design.between.push_back({f.name, f.levels});
+  for (const auto& f : withinFactors) design.within.push_back({f.name, f.levels});
+  const std::vector<std::size_t> subjectOfRow = subjectOfRows(table, subject, design);
+  assignBetweenLevels(table, betweenFactors, subjectOfRow, design);
+  cellMeans(table, values, withinFactors, subjectOfRow, design);
+  requireFilledBetweenCells(betweenFactors, design);
   return design;
 }
 

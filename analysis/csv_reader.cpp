@@ -35,84 +35,90 @@ class CsvParser {
     while (pos_ < text_.size() && isLineBreakAt(pos_)) consumeLineBreak();
     if (pos_ >= text_.size()) return false;
     record.line = line_;
-    std::string field;
-    State state = State::FieldStart;
-    std::size_t quoteLine = line_;
-    bool recordEnded = false;
-    // After a field: a comma starts the next field, a line break ends the record. Returns whether
-    // the character at pos_ was such a delimiter (and consumes it).
-    const auto delimiter = [&](char c) {
-      if (c == ',') {
-        record.fields.push_back(std::move(field));
-        field.clear();
-        state = State::FieldStart;
-        ++pos_;
-        return true;
-      }
-      if (!isLineBreakAt(pos_)) return false;
-      consumeLineBreak();
-      record.fields.push_back(std::move(field));
-      recordEnded = true;
-      return true;
-    };
+    Cursor cur{record, {}, State::FieldStart, line_, false};
     while (pos_ < text_.size()) {
-      const char c = text_[pos_];
-      switch (state) {
-        case State::FieldStart:
-          if (c == '"') {
-            state = State::Quoted;
-            quoteLine = line_;
-            ++pos_;
-            continue;
-          }
-          state = State::Unquoted;
-          continue;  // re-read c as part of an unquoted field
-        case State::Unquoted:
-          if (delimiter(c)) {
-            if (recordEnded) return true;
-            continue;
-          }
-          if (c == '"')
-            throw AnalysisError(source_ + ":" + std::to_string(line_) +
-                                ": stray double quote inside an unquoted field (quote the whole "
-                                "field and double the quote: \"\")");
-          field.push_back(c);
-          ++pos_;
-          continue;
-        case State::Quoted:
-          if (c == '"') {
-            state = State::QuoteInQuoted;
-            ++pos_;
-            continue;
-          }
-          if (c == '\n') ++line_;
-          field.push_back(c);
-          ++pos_;
-          continue;
-        case State::QuoteInQuoted:
-          if (c == '"') {  // "" is an escaped quote
-            field.push_back('"');
-            state = State::Quoted;
-            ++pos_;
-            continue;
-          }
-          if (delimiter(c)) {
-            if (recordEnded) return true;
-            continue;
-          }
-          throw AnalysisError(source_ + ":" + std::to_string(line_) + ": unexpected character '" +
-                              std::string(1, c) + "' after a closing double quote");
-      }
+      step(cur, text_[pos_]);
+      if (cur.recordEnded) return true;
     }
-    if (state == State::Quoted)
-      throw AnalysisError(source_ + ":" + std::to_string(quoteLine) +
+    if (cur.state == State::Quoted)
+      throw AnalysisError(source_ + ":" + std::to_string(cur.quoteLine) +
                           ": quoted field is never closed (missing \")");
-    record.fields.push_back(std::move(field));
+    record.fields.push_back(std::move(cur.field));
     return true;
   }
 
  private:
   enum class State { FieldStart, Unquoted, Quoted, QuoteInQuoted };
+
+  // The record being read: its fields so far, the field being read and the machine's state.
+  struct Cursor {
+    CsvRecord& record;
+    std::string field;
+    State state;
+    std::size_t quoteLine;  // where the open quote started
+    bool recordEnded;
+  };
+
+  // After a field: a comma starts the next field, a line break ends the record. Returns whether
+  // the character at pos_ was such a delimiter (and consumes it).
+  bool delimiter(Cursor& cur, char c) {
+    if (c == ',') {
+      cur.record.fields.push_back(std::move(cur.field));
+      cur.field.clear();
+      cur.state = State::FieldStart;
+      ++pos_;
+      return true;
+    }
+    if (!isLineBreakAt(pos_)) return false;
+    consumeLineBreak();
+    cur.record.fields.push_back(std::move(cur.field));
+    cur.recordEnded = true;
+    return true;
+  }
+
+  // One character c at pos_, by the state it arrives in.
+  void step(Cursor& cur, char c) {
+    switch (cur.state) {
+      case State::FieldStart:
+        if (c == '"') {
+          cur.state = State::Quoted;
+          cur.quoteLine = line_;
+          ++pos_;
+          return;
+        }
+        cur.state = State::Unquoted;
+        return;  // re-read c as part of an unquoted field
+      case State::Unquoted:
+        if (delimiter(cur, c)) return;
+        if (c == '"')
+          throw AnalysisError(source_ + ":" + std::to_string(line_) +
+                              ": stray double quote inside an unquoted field (quote the whole "
+                              "field and double the quote: \"\")");
+        cur.field.push_back(c);
+        ++pos_;
+        return;
+      case State::Quoted:
+        if (c == '"') {
+          cur.state = State::QuoteInQuoted;
+          ++pos_;
+          return;
+        }
+        if (c == '\n') ++line_;
+        cur.field.push_back(c);
+        ++pos_;
+        return;
+      case State::QuoteInQuoted:
+        if (c == '"') {  // "" is an escaped quote
+          cur.field.push_back('"');
+          cur.state = State::Quoted;
+          ++pos_;
+          return;
+        }
+        if (delimiter(cur, c)) return;
+        throw AnalysisError(source_ + ":" + std::to_string(line_) + ": unexpected character '" +
+                            std::string(1, c) + "' after a closing double quote");
+    }
+  }
 
   bool isLineBreakAt(std::size_t i) const { return text_[i] == '\n' || text_[i] == '\r'; }
   void consumeLineBreak() {

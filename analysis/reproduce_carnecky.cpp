@@ -51,32 +51,27 @@ std::string fmt(double x, int precision = 3) {
   return out.str();
 }
 
-}  // namespace
+// One row of Table 1 checked as Welch, Student and paired tests, its sign and which sidedness
+// the p quoted in the text has.
+CarneckyRow checkRow(const CarneckyComparison& c) {
+  CarneckyRow row;
+  row.published = c;
+  const PrintedTTest printed = printedTTest(c);
+  row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Welch));
+  row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Student));
+  row.checks.push_back(checkPairedHypothesis(printed));
+  row.signMatchesMeans = (c.t.value < 0) == (c.mean1.value < c.mean2.value);
+  const Interval absT = row.checks[0].absTRange;
+  const Interval df = row.checks[0].dfRange;
+  row.pTwoSidedWelch = 2 * row.checks[0].pOneSided;
+  const Interval twoSided{2 * studentTLowerTail(-absT.hi, df.hi), 2 * studentTLowerTail(-absT.lo, df.lo)};
+  row.textPIsTwoSided = twoSided.intersects(c.pInText.interval());
+  row.textPIsOneSided = row.checks[0].pRange.intersects(c.pInText.interval());
+  return row;
+}
 
-CarneckyReproduction reproduceCarnecky() {
-  CarneckyReproduction out;
-  bool welchAll = true;
-  bool studentAny = false;
-  bool pairedAny = false;
-  for (const auto& c : carneckyTable1()) {
-    CarneckyRow row;
-    row.published = c;
-    const PrintedTTest printed = printedTTest(c);
-    row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Welch));
-    row.checks.push_back(checkTwoSampleHypothesis(printed, TTestKind::Student));
-    row.checks.push_back(checkPairedHypothesis(printed));
-    welchAll = welchAll && row.checks[0].consistent();
-    studentAny = studentAny || row.checks[1].consistent();
-    pairedAny = pairedAny || row.checks[2].consistent();
-    row.signMatchesMeans = (c.t.value < 0) == (c.mean1.value < c.mean2.value);
-    const Interval absT = row.checks[0].absTRange;
-    const Interval df = row.checks[0].dfRange;
-    row.pTwoSidedWelch = 2 * row.checks[0].pOneSided;
-    const Interval twoSided{2 * studentTLowerTail(-absT.hi, df.hi), 2 * studentTLowerTail(-absT.lo, df.lo)};
-    row.textPIsTwoSided = twoSided.intersects(c.pInText.interval());
-    row.textPIsOneSided = row.checks[0].pRange.intersects(c.pInText.interval());
-    out.rows.push_back(row);
-  }
+// Which test the table's numbers come from: Welch for every row, Student or paired for any.
+void addTestFindings(CarneckyReproduction& out, bool welchAll, bool studentAny, bool pairedAny) {
   out.findings.push_back(
       welchAll ? "Welch's unequal-variance t-test (Welch-Satterthwaite df) reproduces every printed df, |t| and "
                  "one-sided p within the rounding of the printed decimals."
@@ -93,22 +88,42 @@ CarneckyReproduction reproduceCarnecky() {
                       fmt(out.rows[2].checks[2].impliedCorrelation) +
                       ", i.e. about 0: the numbers are independent-samples statistics although the table caption "
                       "says paired and every participant saw all three methods.");
-  for (const auto& row : out.rows) {
-    if (!row.signMatchesMeans)
-      out.findings.push_back("Row '" + row.published.first + " vs " + row.published.second + "': printed t = " +
-                             row.published.t.text + " has the opposite sign of mean1 - mean2 (" +
-                             row.published.mean1.text + " - " + row.published.mean2.text +
-                             "); its p = " + row.published.pOneSided.text +
-                             " is the one-sided p of -|t|, so the sign is a transcription/ordering slip.");
-    if (row.textPIsOneSided && row.published.pOneSided.value < 0.05 && row.pTwoSidedWelch >= 0.05)
-      out.findings.push_back("'" + row.published.first + " vs " + row.published.second + "' is significant only "
-                             "one-sided: the text's p = " + row.published.pInText.text +
-                             " is one-sided; the two-sided Welch p is " + fmt(row.pTwoSidedWelch) + ".");
-    if (row.textPIsTwoSided && !row.textPIsOneSided)
-      out.findings.push_back("The text's p = " + row.published.pInText.text + " for '" + row.published.first +
-                             " vs " + row.published.second + "' is the two-sided Welch p (" +
-                             fmt(row.pTwoSidedWelch) + "), while the other comparisons quote one-sided p.");
+}
+
+// A row's own slips: a t with the wrong sign, significance only one-sided, a two-sided p in the text.
+void addRowFindings(CarneckyReproduction& out, const CarneckyRow& row) {
+  if (!row.signMatchesMeans)
+    out.findings.push_back("Row '" + row.published.first + " vs " + row.published.second + "': printed t = " +
+                           row.published.t.text + " has the opposite sign of mean1 - mean2 (" +
+                           row.published.mean1.text + " - " + row.published.mean2.text +
+                           "); its p = " + row.published.pOneSided.text +
+                           " is the one-sided p of -|t|, so the sign is a transcription/ordering slip.");
+  if (row.textPIsOneSided && row.published.pOneSided.value < 0.05 && row.pTwoSidedWelch >= 0.05)
+    out.findings.push_back("'" + row.published.first + " vs " + row.published.second + "' is significant only "
+                           "one-sided: the text's p = " + row.published.pInText.text +
+                           " is one-sided; the two-sided Welch p is " + fmt(row.pTwoSidedWelch) + ".");
+  if (row.textPIsTwoSided && !row.textPIsOneSided)
+    out.findings.push_back("The text's p = " + row.published.pInText.text + " for '" + row.published.first +
+                           " vs " + row.published.second + "' is the two-sided Welch p (" +
+                           fmt(row.pTwoSidedWelch) + "), while the other comparisons quote one-sided p.");
+}
+
+}  // namespace
+
+CarneckyReproduction reproduceCarnecky() {
+  CarneckyReproduction out;
+  bool welchAll = true;
+  bool studentAny = false;
+  bool pairedAny = false;
+  for (const auto& c : carneckyTable1()) {
+    out.rows.push_back(checkRow(c));
+    const CarneckyRow& row = out.rows.back();
+    welchAll = welchAll && row.checks[0].consistent();
+    studentAny = studentAny || row.checks[1].consistent();
+    pairedAny = pairedAny || row.checks[2].consistent();
   }
+  addTestFindings(out, welchAll, studentAny, pairedAny);
+  for (const auto& row : out.rows) addRowFindings(out, row);
   out.findings.push_back(
       "The layout (mean, variance, df rounded to an integer, 't Stat', 'P(T<=t) one-tail') matches a "
       "spreadsheet 't-Test: Two-Sample Assuming Unequal Variances' output, which would explain Welch numbers "

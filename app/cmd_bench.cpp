@@ -52,12 +52,16 @@ std::vector<std::string> splitList(const std::string& text) {
   return out;
 }
 
-void runBenchRender(const BenchRenderOptions& o) {
-  const auto context = gpu::createHeadlessContext();
+std::vector<render::FillMethod> benchFills(const BenchRenderOptions& o) {
   std::vector<render::FillMethod> fills;
   if (o.fill == "both" || o.fill == "scatter") fills.push_back(render::FillMethod::CountScatter);
   if (o.fill == "both" || o.fill == "list") fills.push_back(render::FillMethod::LinkedList);
   if (fills.empty()) throw std::invalid_argument("--fill must be scatter, list or both");
+  return fills;
+}
+
+// The three sweeps (resolution, triangles, layers) for each fill method.
+std::vector<bench::RenderSweepRow> runSweeps(const BenchRenderOptions& o, const std::vector<render::FillMethod>& fills) {
   const std::vector<int> sizes = o.quick ? std::vector<int>{128, 256, 512} : std::vector<int>{128, 256, 512, 1024, 2048};
   const std::vector<int> triangles = o.quick ? std::vector<int>{10000, 100000} : std::vector<int>{10000, 30000, 100000, 300000, 1000000};
   std::vector<bench::RenderSweepRow> rows;
@@ -68,51 +72,73 @@ void runBenchRender(const BenchRenderOptions& o) {
                                                 o.style, o.repeats));
     rows.push_back(bench::measureRenderSweep("layers", "builtin:quad-stack?n=16", 512, fill, o.style, o.repeats));
   }
-  // Columns: every pass that ran, in the order passes run (fill, sort, [connect, solve,] compose).
+  return rows;
+}
+
+// Columns: every pass that ran, in the order passes run (fill, sort, [connect, solve,] compose).
+std::vector<std::string> passColumns(const std::vector<bench::RenderSweepRow>& rows) {
   std::vector<std::string> passNames;
   for (const auto& r : rows)
     for (const auto& p : r.passes)
       if (std::find(passNames.begin(), passNames.end(), p.first) == passNames.end()) passNames.push_back(p.first);
-  nlohmann::json j = nlohmann::json::array();
-  if (!o.json) {
-    std::printf("tlab bench render: style %s, median of %d frames after a warm-up; ms per pass\n", o.style.c_str(), o.repeats);
-    std::printf("%-10s %-8s %-36s %5s %9s %9s", "sweep", "fill", "scene", "size", "triangles", "fragments");
-    for (const auto& n : passNames) std::printf(" %8s", n.c_str());
-    std::printf(" %8s %9s %9s %7s\n", "total", "Mfrag/s", "unsorted", "ratio");
+  return passNames;
+}
+
+void printTableHeader(const BenchRenderOptions& o, const std::vector<std::string>& passNames) {
+  std::printf("tlab bench render: style %s, median of %d frames after a warm-up; ms per pass\n", o.style.c_str(), o.repeats);
+  std::printf("%-10s %-8s %-36s %5s %9s %9s", "sweep", "fill", "scene", "size", "triangles", "fragments");
+  for (const auto& n : passNames) std::printf(" %8s", n.c_str());
+  std::printf(" %8s %9s %9s %7s\n", "total", "Mfrag/s", "unsorted", "ratio");
+}
+
+// One row as a JSON object (appended to j) or as a table line.
+void reportRow(const BenchRenderOptions& o, const bench::RenderSweepRow& r, const std::vector<std::string>& passNames,
+               nlohmann::json& j) {
+  const auto get = [&](const std::string& n) {
+    for (const auto& p : r.passes)
+      if (p.first == n) return p.second;
+    return 0.0;
+  };
+  const double mfs = r.listMs > 0 ? double(r.fragments) / r.listMs / 1000.0 : 0.0;
+  const double ratio = r.floorMs > 0 ? r.listMs / r.floorMs : 0.0;
+  if (o.json) {
+    nlohmann::json passes = nlohmann::json::object();
+    for (const auto& p : r.passes) passes[p.first] = p.second;
+    j.push_back({{"sweep", r.sweep}, {"fill", r.fill}, {"scene", r.scene}, {"size", r.size}, {"triangles", r.triangles},
+                 {"fragments", r.fragments}, {"pass_ms", passes}, {"total_ms", r.listMs},
+                 {"fragments_per_second", mfs * 1e6}, {"unsorted_ms", r.floorMs}, {"ratio_to_unsorted", ratio}});
+  } else {
+    std::printf("%-10s %-8s %-36s %5d %9zu %9llu", r.sweep.c_str(), r.fill.c_str(), r.scene.c_str(), r.size, r.triangles,
+                static_cast<unsigned long long>(r.fragments));
+    for (const auto& n : passNames) std::printf(" %8.1f", get(n));
+    std::printf(" %8.1f %9.1f %9.1f %7.1f\n", r.listMs, mfs, r.floorMs, ratio);
   }
-  for (const auto& r : rows) {
-    const auto get = [&](const std::string& n) {
-      for (const auto& p : r.passes)
-        if (p.first == n) return p.second;
-      return 0.0;
-    };
-    const double mfs = r.listMs > 0 ? double(r.fragments) / r.listMs / 1000.0 : 0.0;
-    const double ratio = r.floorMs > 0 ? r.listMs / r.floorMs : 0.0;
-    if (o.json) {
-      nlohmann::json passes = nlohmann::json::object();
-      for (const auto& p : r.passes) passes[p.first] = p.second;
-      j.push_back({{"sweep", r.sweep}, {"fill", r.fill}, {"scene", r.scene}, {"size", r.size}, {"triangles", r.triangles},
-                   {"fragments", r.fragments}, {"pass_ms", passes}, {"total_ms", r.listMs},
-                   {"fragments_per_second", mfs * 1e6}, {"unsorted_ms", r.floorMs}, {"ratio_to_unsorted", ratio}});
-    } else {
-      std::printf("%-10s %-8s %-36s %5d %9zu %9llu", r.sweep.c_str(), r.fill.c_str(), r.scene.c_str(), r.size, r.triangles,
-                  static_cast<unsigned long long>(r.fragments));
-      for (const auto& n : passNames) std::printf(" %8.1f", get(n));
-      std::printf(" %8.1f %9.1f %9.1f %7.1f\n", r.listMs, mfs, r.floorMs, ratio);
+}
+
+// R² of total time against fragments over the resolution sweep of one fill method.
+void reportFit(const BenchRenderOptions& o, const std::vector<bench::RenderSweepRow>& rows, render::FillMethod fill,
+               nlohmann::json& j) {
+  std::vector<double> x, y;
+  for (const auto& r : rows)
+    if (r.sweep == "resolution" && r.fill == render::fillMethodName(fill)) {
+      x.push_back(double(r.fragments));
+      y.push_back(r.listMs);
     }
-  }
-  for (const auto& fill : fills) {
-    std::vector<double> x, y;
-    for (const auto& r : rows)
-      if (r.sweep == "resolution" && r.fill == render::fillMethodName(fill)) {
-        x.push_back(double(r.fragments));
-        y.push_back(r.listMs);
-      }
-    const double r2 = rSquared(x, y);
-    if (o.json) j.push_back({{"fit", "total_ms ~ fragments (resolution sweep)"}, {"fill", render::fillMethodName(fill)}, {"r_squared", r2}});
-    else std::printf("R^2 of a linear fit of total time vs. fragments over the resolution sweep (%s): %.4f\n",
-                     render::fillMethodName(fill).c_str(), r2);
-  }
+  const double r2 = rSquared(x, y);
+  if (o.json) j.push_back({{"fit", "total_ms ~ fragments (resolution sweep)"}, {"fill", render::fillMethodName(fill)}, {"r_squared", r2}});
+  else std::printf("R^2 of a linear fit of total time vs. fragments over the resolution sweep (%s): %.4f\n",
+                   render::fillMethodName(fill).c_str(), r2);
+}
+
+void runBenchRender(const BenchRenderOptions& o) {
+  const auto context = gpu::createHeadlessContext();
+  const std::vector<render::FillMethod> fills = benchFills(o);
+  const std::vector<bench::RenderSweepRow> rows = runSweeps(o, fills);
+  const std::vector<std::string> passNames = passColumns(rows);
+  nlohmann::json j = nlohmann::json::array();
+  if (!o.json) printTableHeader(o, passNames);
+  for (const auto& r : rows) reportRow(o, r, passNames, j);
+  for (const auto& fill : fills) reportFit(o, rows, fill, j);
   if (o.json) std::cout << j.dump(2) << "\n";
 }
 

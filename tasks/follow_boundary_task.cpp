@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <numeric>
+#include <optional>
+#include <set>
 #include <stdexcept>
 
 #include "core/seeded_random.hpp"
@@ -54,17 +56,128 @@ std::size_t pickByLength(const std::vector<BoundaryLoop>& loops, const std::vect
   return among.back();
 }
 
+struct FollowSettings {
+  int markCount;
+  double margin, arcGap, pixelGap, borderPx;
+  int attempts;
+  double timeLimit;
+};
+
+FollowSettings followSettings(const std::string& task, const TaskSettings& s) {
+  FollowSettings f;
+  f.markCount = int(s.number("marks"));
+  f.margin = s.number("margin");
+  f.arcGap = s.number("min-arc-gap");
+  f.pixelGap = s.number("min-pixel-gap");
+  f.borderPx = s.number("margin-px");
+  f.attempts = int(s.number("attempts"));
+  if (f.markCount < 2) throw std::invalid_argument(task + ": setting 'marks' must be at least 2");
+  f.timeLimit = s.number("time-limit");
+  return f;
+}
+
+// A and B on one loop, the shortest way between them and the marks: [0] is A, [1] is B.
+struct Candidate {
+  std::size_t loop;
+  BoundaryArc way;
+  double otherWay;
+  std::vector<Mark> marks;
+};
+
+// Marks besides A and B: at least one on the way and one off it (on the other way or another loop).
+bool placeOtherMarks(const std::vector<BoundaryLoop>& loops, const std::vector<std::size_t>& usable, const FollowSettings& f,
+                     core::SeededRandom& random, Candidate& c) {
+  const BoundaryArc& way = c.way;
+  const int onWay = 1 + int(random.below(std::uint32_t(f.markCount - 1)));
+  Mark m = c.marks.back();
+  bool placed = true;
+  for (int k = 0; k < f.markCount && placed; ++k) {
+    double arc;
+    std::size_t markLoop = c.loop;
+    if (k < onWay) {
+      arc = way.from + way.direction * way.length * double(random.uniform());
+    } else if (usable.size() > 1 && random.below(2) == 0) {
+      markLoop = usable[random.below(std::uint32_t(usable.size() - 1))];
+      if (markLoop == c.loop) markLoop = usable.back();  // any loop but A's
+      arc = double(random.uniform()) * loops[markLoop].length();
+    } else {
+      arc = way.from - way.direction * c.otherWay * double(random.uniform());
+    }
+    placed = placeMark(loops, markLoop, arc, f.arcGap, c.marks, &m);
+    c.marks.push_back(m);
+  }
+  return placed;
+}
+
+// A and B: B at a fraction u of the loop from A, the shorter way ≤ the longer / (1 + margin);
+// then the other marks. Nothing when a draw misses.
+std::optional<Candidate> drawCandidate(const std::vector<BoundaryLoop>& loops, const std::vector<std::size_t>& usable,
+                                       const FollowSettings& f, core::SeededRandom& random) {
+  const std::size_t loop = pickByLength(loops, usable, random);
+  const BoundaryLoop& l = loops[loop];
+  const double arcA = double(random.uniform()) * l.length();
+  const double u = 0.1 + 0.8 * double(random.uniform());
+  const BoundaryArc way = shortestBoundaryArc(arcA, arcA + u * l.length(), l.length());
+  const double otherWay = l.length() - way.length;
+  if (otherWay < (1.0 + f.margin) * way.length) return std::nullopt;
+  Candidate c{loop, way, otherWay, {}};
+  Mark m;
+  placeMark(loops, loop, arcA, 0.0, c.marks, &m);
+  c.marks.push_back(m);
+  if (!placeMark(loops, loop, arcA + u * l.length(), f.arcGap, c.marks, &m)) return std::nullopt;
+  c.marks.push_back(m);
+  if (!placeOtherMarks(loops, usable, f, random, c)) return std::nullopt;
+  return c;
+}
+
+// Every point inside the image and apart from the others on screen: the smallest pixel distance
+// between them, or nothing.
+std::optional<double> screenGap(const ViewGeometry& view, const std::vector<Mark>& marks, const FollowSettings& f) {
+  std::vector<glm::dvec2> pixels;
+  double smallestGap = 1e9;
+  bool visible = true;
+  for (const auto& mk : marks) {
+    if (!view.inImage(mk.world, f.borderPx)) visible = false;
+    const glm::dvec2 p = view.project(mk.world);
+    smallestGap = std::min(smallestGap, nearestPixelDistance(p, pixels));
+    pixels.push_back(p);
+  }
+  if (!visible || smallestGap < f.pixelGap) return std::nullopt;
+  return smallestGap;
+}
+
+// The question of a candidate, its marks besides A and B labelled in the order `order`.
+Question boundaryQuestion(const std::string& task, int number, const ViewGeometry& view, const std::vector<BoundaryLoop>& loops,
+                          const Candidate& c, const std::vector<std::size_t>& order, double smallestGap, const FollowSettings& f) {
+  static const std::string labelNames = "CDEFGHJKLMNPQRSTUVWXYZ";
+  const BoundaryLoop& l = loops[c.loop];
+  Question question;
+  question.task = task;
+  question.number = number;
+  question.text = "Follow the shortest way along the surface boundary from A to B. Which marked points do you meet on the way?";
+  question.answerKind = AnswerKind::LabelSet;
+  question.points.push_back(probePoint(view, "A", "start", c.marks[0].world, l.object()));
+  question.points.push_back(probePoint(view, "B", "end", c.marks[1].world, l.object()));
+  std::set<std::string> met;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Mark& mk = c.marks[order[k]];
+    const std::string label(1, labelNames[k % labelNames.size()]);
+    question.points.push_back(probePoint(view, label, "mark", mk.world, loops[mk.loop].object()));
+    if (mk.loop == c.loop && c.way.contains(mk.arc)) met.insert(label);
+  }
+  question.truth = met;
+  question.timeLimitSeconds = f.timeLimit;
+  question.checks = {{"other way / shortest way - 1", c.otherWay / c.way.length - 1.0, f.margin},
+                     {"smallest pixel distance between points", smallestGap, f.pixelGap}};
+  question.measurements = {{"shortest-way-length", c.way.length}, {"other-way-length", c.otherWay}, {"loop-length", l.length()}};
+  return question;
+}
+
 }  // namespace
 
 std::vector<Question> FollowBoundaryTask::probe(const ProbeRequest& request) const {
   requirePositiveCount(name(), request.count);
-  const TaskSettings& s = request.settings;
-  const int markCount = int(s.number("marks"));
-  const double margin = s.number("margin"), arcGap = s.number("min-arc-gap");
-  const double pixelGap = s.number("min-pixel-gap"), borderPx = s.number("margin-px");
-  const int attempts = int(s.number("attempts"));
-  if (markCount < 2) throw std::invalid_argument(name() + ": setting 'marks' must be at least 2");
-
+  const FollowSettings f = followSettings(name(), request.settings);
   const ViewGeometry view(request.camera, request.width, request.height);
   std::vector<BoundaryLoop> loops;
   const auto welded = weldSceneObjects(request.scene);
@@ -77,79 +190,18 @@ std::vector<Question> FollowBoundaryTask::probe(const ProbeRequest& request) con
 
   core::SeededRandom random(request.seed);
   std::vector<Question> questions;
-  const std::string labelNames = "CDEFGHJKLMNPQRSTUVWXYZ";
   for (int q = 0; q < request.count; ++q) {
     bool found = false;
-    for (int a = 0; a < attempts && !found; ++a) {
-      // A and B: B at a fraction u of the loop from A, the shorter way ≤ the longer / (1 + margin).
-      const std::size_t loop = pickByLength(loops, usable, random);
-      const BoundaryLoop& l = loops[loop];
-      const double arcA = double(random.uniform()) * l.length();
-      const double u = 0.1 + 0.8 * double(random.uniform());
-      const BoundaryArc way = shortestBoundaryArc(arcA, arcA + u * l.length(), l.length());
-      const double otherWay = l.length() - way.length;
-      if (otherWay < (1.0 + margin) * way.length) continue;
-      std::vector<Mark> marks;
-      Mark m;
-      placeMark(loops, loop, arcA, 0.0, marks, &m);
-      marks.push_back(m);
-      if (!placeMark(loops, loop, arcA + u * l.length(), arcGap, marks, &m)) continue;
-      marks.push_back(m);
-      // Marks: at least one on the way and one off it (on the other way or another loop).
-      const int onWay = 1 + int(random.below(std::uint32_t(markCount - 1)));
-      bool placed = true;
-      for (int k = 0; k < markCount && placed; ++k) {
-        double arc;
-        std::size_t markLoop = loop;
-        if (k < onWay) {
-          arc = way.from + way.direction * way.length * double(random.uniform());
-        } else if (usable.size() > 1 && random.below(2) == 0) {
-          markLoop = usable[random.below(std::uint32_t(usable.size() - 1))];
-          if (markLoop == loop) markLoop = usable.back();  // any loop but A's
-          arc = double(random.uniform()) * loops[markLoop].length();
-        } else {
-          arc = way.from - way.direction * otherWay * double(random.uniform());
-        }
-        placed = placeMark(loops, markLoop, arc, arcGap, marks, &m);
-        marks.push_back(m);
-      }
-      if (!placed) continue;
-      // Every point inside the image and apart from the others on screen.
-      std::vector<glm::dvec2> pixels;
-      double smallestGap = 1e9;
-      bool visible = true;
-      for (const auto& mk : marks) {
-        if (!view.inImage(mk.world, borderPx)) visible = false;
-        const glm::dvec2 p = view.project(mk.world);
-        smallestGap = std::min(smallestGap, nearestPixelDistance(p, pixels));
-        pixels.push_back(p);
-      }
-      if (!visible || smallestGap < pixelGap) continue;
+    for (int a = 0; a < f.attempts && !found; ++a) {
+      const std::optional<Candidate> c = drawCandidate(loops, usable, f, random);
+      if (!c) continue;
+      const std::optional<double> smallestGap = screenGap(view, c->marks, f);
+      if (!smallestGap) continue;
       // Shuffle the marks so that their labels say nothing about the way.
-      std::vector<std::size_t> order(marks.size() - 2);
+      std::vector<std::size_t> order(c->marks.size() - 2);
       std::iota(order.begin(), order.end(), 2);
       for (std::size_t i = order.size(); i > 1; --i) std::swap(order[i - 1], order[random.below(std::uint32_t(i))]);
-
-      Question question;
-      question.task = name();
-      question.number = q + 1;
-      question.text = "Follow the shortest way along the surface boundary from A to B. Which marked points do you meet on the way?";
-      question.answerKind = AnswerKind::LabelSet;
-      question.points.push_back(probePoint(view, "A", "start", marks[0].world, l.object()));
-      question.points.push_back(probePoint(view, "B", "end", marks[1].world, l.object()));
-      std::set<std::string> met;
-      for (std::size_t k = 0; k < order.size(); ++k) {
-        const Mark& mk = marks[order[k]];
-        const std::string label(1, labelNames[k % labelNames.size()]);
-        question.points.push_back(probePoint(view, label, "mark", mk.world, loops[mk.loop].object()));
-        if (mk.loop == loop && way.contains(mk.arc)) met.insert(label);
-      }
-      question.truth = met;
-      question.timeLimitSeconds = s.number("time-limit");
-      question.checks = {{"other way / shortest way - 1", otherWay / way.length - 1.0, margin},
-                         {"smallest pixel distance between points", smallestGap, pixelGap}};
-      question.measurements = {{"shortest-way-length", way.length}, {"other-way-length", otherWay}, {"loop-length", l.length()}};
-      questions.push_back(std::move(question));
+      questions.push_back(boundaryQuestion(name(), q + 1, view, loops, *c, order, *smallestGap, f));
       found = true;
     }
     if (!found)

@@ -7,6 +7,7 @@
 
 #include "core/seeded_random.hpp"
 #include "tasks/geodesic_distances.hpp"
+#include "tasks/nearest_point_candidates.hpp"
 #include "tasks/probe_helpers.hpp"
 
 namespace tlab::tasks {
@@ -40,122 +41,68 @@ bool wantsEuclideanTrap(int k, double share) {
 
 namespace {
 
-struct PoolPoint {
-  SurfacePoint where;
-  glm::dvec3 world;
-  glm::dvec2 pixel;
-  double geodesic, euclidean;  // geodesic: exact, or a proven lower bound when !exact
-  bool exact;
+using namespace nearest;
+
+struct NearestSettings {
+  int count;
+  double margin, share, pixelGap, borderPx;
+  int poolSize, sources;
+  double reach;  // the neighbourhood in 3-D (infinite: anywhere)
+  double timeLimit;
 };
 
-std::size_t argMin(const std::vector<double>& v) { return std::size_t(std::min_element(v.begin(), v.end()) - v.begin()); }
-
-// The ratio second-smallest / smallest − 1 (the margin by which the smallest is unique).
-double uniquenessMargin(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v[0] > 0.0 ? v[1] / v[0] - 1.0 : 0.0;
-}
-
-struct Choice {
-  std::vector<PoolPoint> candidates;
-  double geodesicMargin, euclideanMargin;
-  bool trap;
-};
-
-// Searches the pool (in a seeded random order) for a geodesic-nearest candidate g and others
-// that are all ≥ (1 + margin) × d(g) away along the surface; with a trap, one of the others is
-// Euclidean-nearest by the same margin, else g is also Euclidean-nearest.
-std::optional<Choice> chooseCandidates(std::vector<PoolPoint> pool, int count, double margin, bool wantTrap,
-                                       double pixelGap, core::SeededRandom& random) {
-  for (std::size_t i = pool.size(); i > 1; --i) std::swap(pool[i - 1], pool[random.below(std::uint32_t(i))]);
-  const auto apart = [&](const PoolPoint& p, const std::vector<PoolPoint>& chosen) {
-    for (const auto& c : chosen)
-      if (glm::length(c.pixel - p.pixel) < pixelGap) return false;
-    return true;
-  };
-  for (const auto& g : pool) {
-    if (!g.exact) continue;  // the nearest must be known exactly; the others only need to be far enough
-    std::vector<PoolPoint> chosen = {g};
-    double euclideanLimit = g.euclidean;  // the others must be farther than this in 3-D
-    if (wantTrap) {
-      for (const auto& e : pool)
-        if (e.geodesic >= (1.0 + margin) * g.geodesic && (1.0 + margin) * e.euclidean <= g.euclidean && apart(e, chosen)) {
-          chosen.push_back(e);
-          euclideanLimit = (1.0 + margin) * e.euclidean;
-          break;
-        }
-      if (chosen.size() < 2) continue;
-    }
-    for (const auto& o : pool) {
-      if (int(chosen.size()) == count) break;
-      if (o.geodesic >= (1.0 + margin) * g.geodesic && o.euclidean > euclideanLimit && apart(o, chosen)) chosen.push_back(o);
-    }
-    if (int(chosen.size()) < count) continue;
-    // Shuffle so that the label says nothing about which candidate is nearest.
-    for (std::size_t i = chosen.size(); i > 1; --i) std::swap(chosen[i - 1], chosen[random.below(std::uint32_t(i))]);
-    Choice c;
-    std::vector<double> geo, euc;
-    for (const auto& p : chosen) geo.push_back(p.geodesic), euc.push_back(p.euclidean);
-    c.candidates = std::move(chosen);
-    c.geodesicMargin = uniquenessMargin(geo);
-    c.euclideanMargin = uniquenessMargin(euc);
-    c.trap = argMin(geo) != argMin(euc);
-    return c;
-  }
-  return std::nullopt;
-}
-
-// The upper bounds U(g) of the points g that can head a question, smallest first: any point
-// without a trap; with one, a g for which some e is Euclidean-nearer by the margin while its
-// surface distance may still exceed g's by it (U(e) ≥ (1 + m)·E(g), the most optimistic case).
-std::vector<double> headBounds(const std::vector<double>& upper, const std::vector<double>& straight, double margin, bool trap) {
-  std::vector<double> heads;
-  for (std::size_t g = 0; g < upper.size(); ++g) {
-    bool ok = !trap;
-    for (std::size_t e = 0; e < upper.size() && !ok; ++e)
-      ok = e != g && (1.0 + margin) * straight[e] <= straight[g] && upper[e] >= (1.0 + margin) * straight[g];
-    if (ok) heads.push_back(upper[g]);
-  }
-  std::sort(heads.begin(), heads.end());
-  return heads;
-}
-
-}  // namespace
-
-std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const {
-  requirePositiveCount(name(), request.count);
+NearestSettings nearestSettings(const std::string& task, const ProbeRequest& request) {
   const TaskSettings& s = request.settings;
-  const int count = int(s.number("candidates"));
-  const double margin = s.number("margin"), share = s.number("euclidean-trap-share");
-  const double pixelGap = s.number("min-pixel-gap"), borderPx = s.number("margin-px");
-  const int poolSize = int(s.number("pool")), sources = int(s.number("sources"));
+  NearestSettings f;
+  f.count = int(s.number("candidates"));
+  f.margin = s.number("margin");
+  f.share = s.number("euclidean-trap-share");
+  f.pixelGap = s.number("min-pixel-gap");
+  f.borderPx = s.number("margin-px");
+  f.poolSize = int(s.number("pool"));
+  f.sources = int(s.number("sources"));
   const double neighbourhood = s.number("neighbourhood") * double(request.scene.boundingSphere().radius);
-  const double reach = neighbourhood > 0.0 ? neighbourhood : std::numeric_limits<double>::infinity();
-  if (count < 2 || count > 6) throw std::invalid_argument(name() + ": setting 'candidates' must be 2..6");
-  if (share < 0.0 || share > 1.0) throw std::invalid_argument(name() + ": 'euclidean-trap-share' must be in [0, 1]");
+  f.reach = neighbourhood > 0.0 ? neighbourhood : std::numeric_limits<double>::infinity();
+  if (f.count < 2 || f.count > 6) throw std::invalid_argument(task + ": setting 'candidates' must be 2..6");
+  if (f.share < 0.0 || f.share > 1.0) throw std::invalid_argument(task + ": 'euclidean-trap-share' must be in [0, 1]");
+  f.timeLimit = s.number("time-limit");
+  return f;
+}
 
-  const ViewGeometry view(request.camera, request.width, request.height);
-  const auto welded = weldSceneObjects(request.scene);
+// The scene's objects as welded meshes with their geodesic distances and area samplers, and the
+// seeded, area-weighted choice of visible surface points on them. Not copied: the geodesics and
+// samplers refer to the meshes.
+struct Surfaces {
+  const ViewGeometry& view;
+  double borderPx;
+  core::SeededRandom& random;
+  const std::vector<WeldedMesh> welded;
   std::vector<GeodesicDistances> geodesics;
   std::vector<SurfaceSampler> samplers;
   double totalArea = 0.0;
-  for (const auto& w : welded) {
-    geodesics.emplace_back(w);
-    samplers.emplace_back(w);
-    totalArea += samplers.back().totalArea();
-  }
-  if (totalArea <= 0.0) throw std::runtime_error(name() + ": the scene has no surface area");
 
-  core::SeededRandom random(request.seed);
-  const auto pickObject = [&] {
+  Surfaces(const render::Scene& scene, const ViewGeometry& v, double border, core::SeededRandom& r)
+      : view(v), borderPx(border), random(r), welded(weldSceneObjects(scene)) {
+    for (const auto& w : welded) {
+      geodesics.emplace_back(w);
+      samplers.emplace_back(w);
+      totalArea += samplers.back().totalArea();
+    }
+  }
+  Surfaces(const Surfaces&) = delete;
+  Surfaces& operator=(const Surfaces&) = delete;
+
+  // An object, with probability proportional to its area.
+  std::size_t pickObject() {
     double u = double(random.uniform()) * totalArea;
     for (std::size_t o = 0; o < samplers.size(); ++o) {
       if (u < samplers[o].totalArea()) return o;
       u -= samplers[o].totalArea();
     }
     return samplers.size() - 1;
-  };
-  const auto visibleSample = [&](std::size_t o, SurfacePoint* out) {
+  }
+  // A point of object o inside the image where the geodesics are known (64 tries).
+  bool visibleSample(std::size_t o, SurfacePoint* out) {
     for (int i = 0; i < 64; ++i) {
       const SurfacePoint p = samplers[o].sample(random);
       if (geodesics[o].hasTriangle(p.triangle) && view.inImage(p.position(welded[o]), borderPx)) {
@@ -164,93 +111,139 @@ std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const
       }
     }
     return false;
-  };
+  }
+};
 
-  const std::string labels = "XYZUVW";
+// A start point A on object o.
+struct Start {
+  std::size_t o;
+  SurfacePoint a;
+  glm::dvec3 world;
+  glm::dvec2 pixel;
+};
+
+// The pool: visible points apart from A on screen, within the neighbourhood in 3-D and (by the
+// edge-path upper bound) within twice it on the surface — which keeps the exact geodesic
+// computation on a patch around A (GeodesicDistances). Their upper bounds and 3-D distances.
+struct Targets {
+  std::vector<SurfacePoint> points;
+  std::vector<double> upper, straight;
+};
+
+Targets targetsAround(Surfaces& sf, const Start& st, const NearestSettings& f) {
+  std::vector<SurfacePoint> near;
+  for (int i = 0; i < f.poolSize; ++i)
+    for (int attempt = 0; attempt < 16; ++attempt) {
+      SurfacePoint t;
+      if (!sf.visibleSample(st.o, &t)) break;
+      const glm::dvec3 tWorld = t.position(sf.welded[st.o]);
+      if (glm::length(tWorld - st.world) > f.reach || glm::length(sf.view.project(tWorld) - st.pixel) < f.pixelGap) continue;
+      near.push_back(t);
+      break;
+    }
+  const auto bounds = sf.geodesics[st.o].edgePathUpperBounds(st.a, near);
+  Targets t;
+  for (std::size_t i = 0; i < near.size(); ++i)
+    if (bounds[i] && *bounds[i] <= 2.0 * f.reach) {
+      t.points.push_back(near[i]);
+      t.upper.push_back(*bounds[i]);
+      t.straight.push_back(glm::length(near[i].position(sf.welded[st.o]) - st.world));
+    }
+  return t;
+}
+
+// Exact up to (1 + margin) × the smallest head bound: that head (and any other point within the
+// radius) is then known exactly and can be the nearest; every point beyond is provably ≥ (1 +
+// margin) × its distance, which is all a question needs. So the exact algorithm runs on a small
+// patch around A — its cost grows faster than the patch's area (seen on the toroid: 0.05 s for
+// 1.5 K faces, 14 s for all 52 K). When no question can be formed, the radius is widened once
+// (doubled, at most to the largest bound, where every distance is exact) before another A is tried.
+std::optional<Choice> chooseWithinRadius(Surfaces& sf, const Start& st, const Targets& t, double nearestBound,
+                                         const NearestSettings& f, bool wantTrap) {
+  const GeodesicDistances& geodesics = sf.geodesics[st.o];
+  const double widest = (1.0 + f.margin) * *std::max_element(t.upper.begin(), t.upper.end());
+  std::optional<Choice> choice;
+  double cap = (1.0 + f.margin) * nearestBound;
+  for (int round = 0;; ++round, cap = std::min(widest, kWidening * cap)) {
+    if (geodesics.patchFaces(st.a, cap) > faceBudget(geodesics)) break;  // too costly: another A
+    const auto distances = geodesics.fromSourceWithin(st.a, t.points, cap);
+    std::vector<PoolPoint> pool;
+    for (std::size_t i = 0; i < t.points.size(); ++i) {
+      if (!distances[i].reachable) continue;  // another connected component
+      const glm::dvec3 w = t.points[i].position(sf.welded[st.o]);
+      pool.push_back({t.points[i], w, sf.view.project(w), distances[i].lowerBound, t.straight[i], distances[i].exact.has_value()});
+    }
+    choice = chooseCandidates(pool, f.count, f.margin, wantTrap, f.pixelGap, sf.random);
+    if (choice || cap >= widest || round == kWidenings) break;
+  }
+  return choice;
+}
+
+Question nearestQuestion(const std::string& task, int number, const ViewGeometry& view, const Start& st, const Choice& choice,
+                         const NearestSettings& f, bool wantTrap) {
+  static const std::string labels = "XYZUVW";
+  Question question;
+  question.task = task;
+  question.number = number;
+  question.text = "Which of the marked points is nearest to A when walking on the surface?";
+  question.answerKind = AnswerKind::Label;
+  question.points.push_back(probePoint(view, "A", "given", st.world, int(st.o)));
+  std::vector<double> geo, euc;
+  for (std::size_t i = 0; i < choice.candidates.size(); ++i) {
+    const auto& c = choice.candidates[i];
+    const std::string label(1, labels[i]);
+    question.points.push_back(probePoint(view, label, "candidate", c.world, int(st.o)));
+    // Exact for the nearest (and any candidate within the exactness radius); for the others a
+    // proven lower bound, which is what the margin needs.
+    question.measurements.push_back({(c.exact ? "geodesic:" : "geodesic-lower-bound:") + label, c.geodesic});
+    question.measurements.push_back({"euclidean:" + label, c.euclidean});
+    geo.push_back(c.geodesic);
+    euc.push_back(c.euclidean);
+  }
+  question.truth = std::string(1, labels[argMin(geo)]);
+  question.timeLimitSeconds = f.timeLimit;
+  question.checks = {{"geodesic second-nearest / nearest - 1", choice.geodesicMargin, f.margin},
+                     {"euclidean-nearest differs from geodesic-nearest", choice.trap ? 1.0 : 0.0, wantTrap ? 1.0 : 0.0}};
+  if (wantTrap) question.checks.push_back({"euclidean second-nearest / nearest - 1", choice.euclideanMargin, f.margin});
+  return question;
+}
+
+// One start point A tried: its pool, the bounds that say which points can head a question, and
+// the candidates chosen within the exactness radius; nothing when A gives no question.
+std::optional<Question> questionFromStart(const std::string& task, int number, bool wantTrap, const NearestSettings& f,
+                                          Surfaces& sf) {
+  Start st;
+  st.o = sf.pickObject();
+  if (!sf.visibleSample(st.o, &st.a)) return std::nullopt;
+  st.world = st.a.position(sf.welded[st.o]);
+  st.pixel = sf.view.project(st.world);
+  const Targets t = targetsAround(sf, st, f);
+  if (t.points.size() < std::size_t(f.count)) return std::nullopt;
+  const std::vector<double> heads = headBounds(t.upper, t.straight, f.margin, wantTrap);
+  if (heads.empty()) return std::nullopt;  // no question possible from this A
+  const std::optional<Choice> choice = chooseWithinRadius(sf, st, t, heads.front(), f, wantTrap);
+  if (!choice) return std::nullopt;
+  return nearestQuestion(task, number, sf.view, st, *choice, f, wantTrap);
+}
+
+}  // namespace
+
+std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const {
+  requirePositiveCount(name(), request.count);
+  const NearestSettings f = nearestSettings(name(), request);
+  const ViewGeometry view(request.camera, request.width, request.height);
+  core::SeededRandom random(request.seed);
+  Surfaces surfaces(request.scene, view, f.borderPx, random);
+  if (surfaces.totalArea <= 0.0) throw std::runtime_error(name() + ": the scene has no surface area");
+
   std::vector<Question> questions;
   for (int q = 0; q < request.count; ++q) {
-    const bool wantTrap = wantsEuclideanTrap(q, share);
+    const bool wantTrap = wantsEuclideanTrap(q, f.share);
     bool found = false;
-    for (int src = 0; src < sources && !found; ++src) {
-      const std::size_t o = pickObject();
-      SurfacePoint a;
-      if (!visibleSample(o, &a)) continue;
-      const glm::dvec3 aWorld = a.position(welded[o]);
-      const glm::dvec2 aPixel = view.project(aWorld);
-      // The pool: visible points apart from A on screen, within the neighbourhood in 3-D and (by
-      // the edge-path upper bound) within twice it on the surface — which keeps the exact
-      // geodesic computation on a patch around A (GeodesicDistances).
-      std::vector<SurfacePoint> near;
-      for (int i = 0; i < poolSize; ++i)
-        for (int attempt = 0; attempt < 16; ++attempt) {
-          SurfacePoint t;
-          if (!visibleSample(o, &t)) break;
-          const glm::dvec3 tWorld = t.position(welded[o]);
-          if (glm::length(tWorld - aWorld) > reach || glm::length(view.project(tWorld) - aPixel) < pixelGap) continue;
-          near.push_back(t);
-          break;
-        }
-      const auto bounds = geodesics[o].edgePathUpperBounds(a, near);
-      std::vector<SurfacePoint> targets;
-      std::vector<double> upper, straight;
-      for (std::size_t i = 0; i < near.size(); ++i)
-        if (bounds[i] && *bounds[i] <= 2.0 * reach) {
-          targets.push_back(near[i]);
-          upper.push_back(*bounds[i]);
-          straight.push_back(glm::length(near[i].position(welded[o]) - aWorld));
-        }
-      if (targets.size() < std::size_t(count)) continue;
-      const std::vector<double> heads = headBounds(upper, straight, margin, wantTrap);
-      if (heads.empty()) continue;  // no question possible from this A
-      // Exact up to (1 + margin) × the smallest head bound: that head (and any other point within
-      // the radius) is then known exactly and can be the nearest; every point beyond is provably
-      // ≥ (1 + margin) × its distance, which is all a question needs. So the exact algorithm runs
-      // on a small patch around A — its cost grows faster than the patch's area (seen on the
-      // toroid: 0.05 s for 1.5 K faces, 14 s for all 52 K).
-      const double nearestBound = heads.front();
-      // When no question can be formed, widen the radius once (doubled, at most to the largest
-      // bound, where every distance is exact) before trying another A.
-      const double widest = (1.0 + margin) * *std::max_element(upper.begin(), upper.end());
-      std::optional<Choice> choice;
-      double cap = (1.0 + margin) * nearestBound;
-      for (int round = 0;; ++round, cap = std::min(widest, kWidening * cap)) {
-        if (geodesics[o].patchFaces(a, cap) > faceBudget(geodesics[o])) break;  // too costly: another A
-        const auto distances = geodesics[o].fromSourceWithin(a, targets, cap);
-        std::vector<PoolPoint> pool;
-        for (std::size_t i = 0; i < targets.size(); ++i) {
-          if (!distances[i].reachable) continue;  // another connected component
-          const glm::dvec3 w = targets[i].position(welded[o]);
-          pool.push_back({targets[i], w, view.project(w), distances[i].lowerBound, straight[i], distances[i].exact.has_value()});
-        }
-        choice = chooseCandidates(pool, count, margin, wantTrap, pixelGap, random);
-        if (choice || cap >= widest || round == kWidenings) break;
-      }
-      if (!choice) continue;
-
-      Question question;
-      question.task = name();
-      question.number = q + 1;
-      question.text = "Which of the marked points is nearest to A when walking on the surface?";
-      question.answerKind = AnswerKind::Label;
-      question.points.push_back(probePoint(view, "A", "given", aWorld, int(o)));
-      std::vector<double> geo, euc;
-      for (std::size_t i = 0; i < choice->candidates.size(); ++i) {
-        const auto& c = choice->candidates[i];
-        const std::string label(1, labels[i]);
-        question.points.push_back(probePoint(view, label, "candidate", c.world, int(o)));
-        // Exact for the nearest (and any candidate within the exactness radius); for the others a
-        // proven lower bound, which is what the margin needs.
-        question.measurements.push_back({(c.exact ? "geodesic:" : "geodesic-lower-bound:") + label, c.geodesic});
-        question.measurements.push_back({"euclidean:" + label, c.euclidean});
-        geo.push_back(c.geodesic);
-        euc.push_back(c.euclidean);
-      }
-      question.truth = std::string(1, labels[argMin(geo)]);
-      question.timeLimitSeconds = s.number("time-limit");
-      question.checks = {{"geodesic second-nearest / nearest - 1", choice->geodesicMargin, margin},
-                         {"euclidean-nearest differs from geodesic-nearest", choice->trap ? 1.0 : 0.0, wantTrap ? 1.0 : 0.0}};
-      if (wantTrap) question.checks.push_back({"euclidean second-nearest / nearest - 1", choice->euclideanMargin, margin});
-      questions.push_back(std::move(question));
+    for (int src = 0; src < f.sources && !found; ++src) {
+      std::optional<Question> question = questionFromStart(name(), q + 1, wantTrap, f, surfaces);
+      if (!question) continue;
+      questions.push_back(std::move(*question));
       found = true;
     }
     if (!found)

@@ -1,3 +1,6 @@
+// TrialRunner's session: opening it (consent, participant information), each trial shown,
+// answered, scored and stored, questionnaires, breaks and the end. Enrolment and the stored plan:
+// trial_runner_enrol.cpp.
 #include "study/run/trial_runner.hpp"
 
 #include <map>
@@ -30,8 +33,6 @@ namespace {
 std::string trialKey(const PlannedTrial& p) {
   return std::string(phaseName(p.phase)) + "/" + std::to_string(p.block) + "/" + p.taskId + "/" + std::to_string(p.trial);
 }
-
-std::string levelsJson(const PlannedTrial& p) { return nlohmann::json(p.levels).dump(); }
 
 // The front end checked the answers; the runner checks them again before storing (a browser is not trusted).
 std::vector<FormAnswer> formAnswers(const std::vector<FormField>& fields, const std::vector<std::string>& values) {
@@ -80,30 +81,6 @@ std::pair<int, int> phasePosition(const SessionPlan& plan, std::size_t index) {
 bool endsBlock(const SessionPlan& plan, std::size_t i) { return i + 1 == plan.trials.size() || plan.trials[i + 1].block != plan.trials[i].block; }
 
 }  // namespace
-
-TrialRecord makeTrialRecord(const PlannedTrial& plan, const PreparedTrial& prepared) {
-  TrialRecord r;
-  r.sequence = plan.sequence;
-  r.phase = phaseName(plan.phase);
-  r.block = plan.block;
-  r.condition = plan.condition;
-  r.levelsJson = levelsJson(plan);
-  r.taskId = plan.taskId;
-  r.task = plan.task;
-  r.trial = plan.trial;
-  r.question = plan.question;
-  r.questionsInTrial = plan.questionsInTrial;
-  r.stimulusKey = plan.stimulus.text();
-  r.probeSeed = plan.probeSeed;
-  r.questionJson = tasks::toJson(prepared.question).dump();
-  r.answerKind = tasks::answerKindName(prepared.question.answerKind);
-  r.truthJson = tasks::groundTruthJson(prepared.question.truth).dump();
-  r.timeLimitSeconds = plan.timeLimitSeconds;
-  r.trialTimeLimitSeconds = plan.trialTimeLimitSeconds;
-  r.stimulusPath = prepared.stimulusPath;
-  r.stimulusSha256 = prepared.stimulusSha256;
-  return r;
-}
 
 TrialRunner::TrialRunner(const Experiment& experiment, Store& store, StimulusSource& stimuli)
     : experiment_(experiment), store_(store), stimuli_(stimuli), design_(makeDesign(experiment)) {}
@@ -211,74 +188,6 @@ void TrialRunner::stopAfterStorageError(Session& s, const SessionResult& result,
                    e.code());
 }
 
-void checkParticipant(Store& store, const Experiment& experiment, const RunOptions& options) {
-  const auto existing = store.findParticipant(experiment.id, options.participant);
-  if (existing && existing->status == "finished")
-    throw StoreError("participant '" + options.participant + "' has already finished experiment '" + experiment.id +
-                     "'; a second run is refused (use a new participant id)");
-  if (existing && existing->status == "declined")
-    throw StoreError("participant '" + options.participant + "' declined to take part in experiment '" + experiment.id +
-                     "'; only that was stored (use a new participant id if they change their mind)");
-  if (existing && existing->status == "dropped")
-    throw StoreError("participant '" + options.participant + "' dropped out of experiment '" + experiment.id +
-                     "'; their slot was freed (use a new participant id)");
-  if (existing && !options.resume)
-    throw StoreError("participant '" + options.participant + "' has an unfinished session; continue it with --resume");
-  if (!existing && options.resume)
-    throw StoreError("participant '" + options.participant + "' has no session to resume in " + store.location());
-}
-
-// Every stimulus of the plan, and the check that no training stimulus is shown again in a test
-// trial (a participant would learn its answer).
-std::vector<TrialRecord> TrialRunner::preparePlan(const SessionPlan& plan) {
-  std::vector<TrialRecord> records;
-  for (const auto& p : plan.trials) records.push_back(makeTrialRecord(p, stimuli_.prepare(p)));
-  std::map<std::string, int> test;
-  for (const auto& r : records)
-    if (r.phase == "test") test.emplace(r.stimulusSha256, r.sequence);
-  for (const auto& r : records)
-    if (r.phase == "training" && test.count(r.stimulusSha256))
-      throw StoreError("training trial " + std::to_string(r.sequence) + " would show the stimulus of test trial " +
-                       std::to_string(test.at(r.stimulusSha256)) + ": give training other scenes ({trial} in the scene) or more questions");
-  return records;
-}
-
-// A newcomer: every stimulus of the predicted slot's plan is prepared before anything is written,
-// then the version, the participant, the slot and the plan are stored in one transaction.
-// Another station may take the predicted slot meanwhile: then the next free slot's plan is
-// prepared instead.
-TrialRunner::Newcomer TrialRunner::prepareNewcomer() {
-  Newcomer n;
-  n.slot = store_.nextFreeSlot(experiment_.id);
-  n.plan = makeSessionPlan(experiment_, design_, n.slot);
-  n.records = preparePlan(n.plan);
-  return n;
-}
-
-ParticipantRecord TrialRunner::enrolNewcomer(const RunOptions& options, Newcomer& n) {
-  for (int attempt = 0;; ++attempt) {
-    if (auto p = store_.enrol(experiment_, options.tlabVersion, options.participant, n.slot, design_, n.records)) return *p;
-    if (attempt == 1000) throw StoreError(store_.location() + ": could not claim a free slot (other stations keep taking them)");
-    n = prepareNewcomer();
-  }
-}
-
-std::string TrialRunner::participantTitle() const {
-  return experiment_.participantTitle.empty() ? "Welcome" : experiment_.participantTitle;
-}
-
-// Welcome and consent come before anything is stored of a newcomer; a decline stores only that.
-std::optional<SessionOutcome> TrialRunner::greetNewcomer(const RunOptions& options, Responder& responder) {
-  if (!experiment_.welcome.empty() && !responder.showMessage(participantTitle(), experiment_.welcome)) return SessionOutcome::Closed;
-  if (!experiment_.consent) return std::nullopt;
-  const auto accepted = responder.askConsent(participantTitle(), *experiment_.consent);
-  if (!accepted) return SessionOutcome::Closed;
-  if (*accepted) return std::nullopt;
-  store_.recordDecline(experiment_, options.tlabVersion, options.participant);
-  responder.showMessage(participantTitle(), "You chose not to take part. Nothing but that choice was stored. Thank you.");
-  return SessionOutcome::Declined;
-}
-
 // After the session has started: consent (when not yet recorded) and participant information.
 std::optional<SessionOutcome> TrialRunner::openSession(Session& s, bool newcomer) {
   if (experiment_.consent && !store_.hasConsent(s.participant.id)) {
@@ -325,36 +234,40 @@ bool TrialRunner::betweenTrials(Session& s, std::size_t done) {
   return continued;
 }
 
+// The trials from the first unanswered one on, each block's questionnaires and breaks, then the
+// end questionnaires and the debrief. Closed: the participant closed the session on the way.
+SessionOutcome TrialRunner::runTrials(Session& s, std::size_t first, SessionResult& result) {
+  // Blocks answered completely before an interruption still get their after-block questionnaires.
+  for (std::size_t i = 0; i < first; ++i)
+    if (endsBlock(s.plan, i) && !runQuestionnaires(s, "after-block", s.plan.trials[i].block)) return SessionOutcome::Closed;
+  for (std::size_t i = first; i < s.plan.trials.size(); ++i) {
+    if (s.stored[i].answered) continue;
+    try {
+      if (!runTrial(s, i)) return SessionOutcome::Closed;
+    } catch (const StoreError& e) {
+      stopAfterStorageError(s, result, i, e);
+    }
+    ++result.answeredNow;
+    if (endsBlock(s.plan, i) && !runQuestionnaires(s, "after-block", s.plan.trials[i].block)) return SessionOutcome::Closed;
+    if (!betweenTrials(s, i)) return SessionOutcome::Closed;
+  }
+  if (!runQuestionnaires(s, "end", 0)) return SessionOutcome::Closed;
+  store_.finishParticipant(s.participant.id);
+  s.responder.showDebrief(participantTitle(), experiment_.debrief);
+  return SessionOutcome::Finished;
+}
+
 SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) {
   checkParticipant(store_, experiment_, options);
   faultPoint("open");
   const auto existing = store_.findParticipant(experiment_.id, options.participant);
   SessionResult result;
   Session s{responder, {}, 0, {}, {}, {}, {}};
-  if (existing) {
-    s.participant = *existing;
-    s.plan = makeSessionPlan(experiment_, design_, s.participant.slot);
-  } else {
-    // Stimuli first (nothing written); without a consent form the newcomer is enrolled at once,
-    // with one only after agreeing (a decline stores just the decision).
-    Newcomer n = prepareNewcomer();
-    if (!experiment_.consent) s.participant = enrolNewcomer(options, n);
-    if (const auto outcome = greetNewcomer(options, responder)) {  // declined, or closed at the welcome or consent
-      result.outcome = *outcome;
-      return result;
-    }
-    if (experiment_.consent) s.participant = enrolNewcomer(options, n);
-    s.plan = n.plan;
+  if (const auto outcome = admit(options, responder, existing, s.participant, s.plan)) {
+    result.outcome = *outcome;
+    return result;
   }
-  s.stored = store_.trials(s.participant.id);
-  if (s.stored.empty()) {  // a database from a tlab that stored the plan after enrolment
-    store_.insertTrials(s.participant.id, preparePlan(s.plan));
-    s.stored = store_.trials(s.participant.id);
-  }
-  if (s.stored.size() != s.plan.trials.size())
-    throw StoreError("participant '" + options.participant + "': the stored plan has " + std::to_string(s.stored.size()) +
-                     " trials but the experiment file gives " + std::to_string(s.plan.trials.size()) +
-                     " (the design changed since this participant began): use a new participant id");
+  s.stored = storedPlan(options, s.participant, s.plan);
   result.slot = s.participant.slot;
   result.total = int(s.plan.trials.size());
   std::size_t first = 0;
@@ -373,24 +286,7 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
     return result;
   };
   if (const auto outcome = openSession(s, !existing)) return close(*outcome);
-  // Blocks answered completely before an interruption still get their after-block questionnaires.
-  for (std::size_t i = 0; i < first; ++i)
-    if (endsBlock(s.plan, i) && !runQuestionnaires(s, "after-block", s.plan.trials[i].block)) return close(SessionOutcome::Closed);
-  for (std::size_t i = first; i < s.plan.trials.size(); ++i) {
-    if (s.stored[i].answered) continue;
-    try {
-      if (!runTrial(s, i)) return close(SessionOutcome::Closed);
-    } catch (const StoreError& e) {
-      stopAfterStorageError(s, result, i, e);
-    }
-    ++result.answeredNow;
-    if (endsBlock(s.plan, i) && !runQuestionnaires(s, "after-block", s.plan.trials[i].block)) return close(SessionOutcome::Closed);
-    if (!betweenTrials(s, i)) return close(SessionOutcome::Closed);
-  }
-  if (!runQuestionnaires(s, "end", 0)) return close(SessionOutcome::Closed);
-  store_.finishParticipant(s.participant.id);
-  responder.showDebrief(participantTitle(), experiment_.debrief);
-  return close(SessionOutcome::Finished);
+  return close(runTrials(s, first, result));
 }
 
 }  // namespace tlab::study

@@ -77,6 +77,11 @@ class TrialRunner {
     std::vector<TrialRecord> records;
   };
   std::vector<TrialRecord> preparePlan(const SessionPlan& plan);
+  std::optional<SessionOutcome> admit(const RunOptions& options, Responder& responder,
+                                      const std::optional<ParticipantRecord>& existing, ParticipantRecord& participant,
+                                      SessionPlan& plan);
+  std::vector<TrialRecord> storedPlan(const RunOptions& options, const ParticipantRecord& participant, const SessionPlan& plan);
+  SessionOutcome runTrials(Session& s, std::size_t first, SessionResult& result);
   Newcomer prepareNewcomer();
   ParticipantRecord enrolNewcomer(const RunOptions& options, Newcomer& newcomer);
 

@@ -1,3 +1,6 @@
+// WindowResponder: the window and its input callbacks, frames presented, the autopilot's
+// scripted inputs, pauses and plain messages. Trials: window_trial.cpp; forms, consent, feedback
+// and breaks: window_screens.cpp.
 #include "study/run/window_responder.hpp"
 
 #include "study/run/live_view.hpp"
@@ -204,126 +207,6 @@ bool WindowResponder::showMessage(const std::string& title, const std::string& t
     if (in->kind == Input::Kind::Click || (in->kind == Input::Kind::Key && (in->key == GLFW_KEY_SPACE || in->key == GLFW_KEY_ENTER)))
       return true;
   return false;
-}
-
-// One input of a trial, handled by the screen (answers, selections, camera moves) or here (pause,
-// close). `answer` is the text it submits, if any.
-WindowResponder::TrialInput WindowResponder::trialInput(TrialScreen& screen, const Input& in) {
-  TrialInput r;
-  const bool arrow = in.key == GLFW_KEY_UP || in.key == GLFW_KEY_DOWN || in.key == GLFW_KEY_LEFT || in.key == GLFW_KEY_RIGHT;
-  switch (in.kind) {
-    case Input::Kind::Close:
-      closed_ = true;
-      event(in.tNs, "close", "");
-      r.closed = true;
-      break;
-    case Input::Kind::Key:
-      if (arrow && screen.live()) {
-        screen.arrow(in.key == GLFW_KEY_UP ? 1 : in.key == GLFW_KEY_DOWN ? -1 : 0, in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
-        event(in.tNs, "camera", screen.cameraText());
-      } else if (in.key == GLFW_KEY_ESCAPE) {
-        const std::int64_t start = monotonicNs();
-        r.closed = !pause();
-        r.pausedNs = monotonicNs() - start;
-      } else if (in.key == GLFW_KEY_BACKSPACE) {
-        screen.backspace();
-      } else if (in.key == GLFW_KEY_ENTER || in.key == GLFW_KEY_KP_ENTER) {
-        r.answer = screen.enter();
-      }
-      break;
-    case Input::Kind::Char: r.answer = screen.typedChar(utf8(in.codepoint)); break;
-    case Input::Kind::Click: r.answer = screen.click(in.x, in.y); break;
-    case Input::Kind::Move: screen.moveTo(in.x, in.y); break;
-    case Input::Kind::Drag:
-      if (screen.live()) {
-        screen.drag(in.x, in.y);
-        event(in.tNs, "camera", screen.cameraText());
-      }
-      break;
-  }
-  return r;
-}
-
-// The stimulus is on screen from the swap after its first frame (the onset, committed at once
-// through view.onset); then frames are presented at the refresh rate (PsychoPy's frame record:
-// every swap interval is known, and frames over 1.5 refresh intervals count as late) until an
-// answer parses or the limit passes. Paused time is left out of the RT and the countdown.
-std::optional<Response> WindowResponder::respond(const TrialView& view) {
-  if (closed_) return std::nullopt;
-  const tasks::Question& q = view.prepared.question;
-  TrialScreen screen(view, blank(), painter_);
-  inputs_.clear();
-  const double refreshMs = 1000.0 / (refreshHz() > 0 ? refreshHz() : 60);
-  std::int64_t onsetNs = 0, pausedNs = 0, lastSwapNs = 0;
-  std::optional<double> onsetFrameMs;
-  int lateFrames = 0;
-  auto elapsed = [&](std::int64_t t) { return (t - onsetNs - pausedNs) / 1e9; };
-  auto response = [&](std::optional<std::string> text, std::int64_t t, std::string note) {
-    Response r;
-    r.text = std::move(text);
-    r.onsetNs = onsetNs;
-    r.responseNs = t;
-    if (r.text) r.rtSeconds = std::max(0.0, elapsed(t));
-    r.note = std::move(note);
-    r.onsetFrameMs = onsetFrameMs;
-    r.lateFrames = lateFrames;
-    r.onsetToSwapMs = lastPresentOnsetMs_;
-    return r;
-  };
-  Canvas current = screen.frame(view.limitSeconds);
-  {
-    const std::int64_t before = monotonicNs();
-    onsetNs = lastSwapNs = present(current);
-    lastPresentOnsetMs_ = (onsetNs - before) / 1e6;
-    if (autopilot_) {
-      const ObserverDecision d = autopilot_->decide(view);
-      scriptText(d.typed, q.answerKind != tasks::AnswerKind::Letter, std::min(d.seconds * autopilotPace_, view.limitSeconds / 2));
-    }
-    ++onsets_;
-    onsetSumMs_ += lastPresentOnsetMs_;
-    onsetMaxMs_ = std::max(onsetMaxMs_, lastPresentOnsetMs_);
-    nlohmann::json layout = screen.layoutJson();
-    layout["present_ms"] = lastPresentOnsetMs_;
-    if (view.onset) view.onset(onsetNs, layout.dump());  // committed now, before any answer
-    else event(onsetNs, "onset", layout.dump());
-  }
-  int shownSecond = -1;
-  while (true) {
-    const double left = view.limitSeconds - elapsed(monotonicNs());
-    if (left <= 0) {
-      event(monotonicNs(), "timeout", "");
-      return response(std::nullopt, monotonicNs(), "time limit");
-    }
-    waitForInput(std::min(0.005, left), true);
-    while (!inputs_.empty()) {
-      const Input in = inputs_.front();
-      inputs_.pop_front();
-      const TrialInput r = trialInput(screen, in);
-      if (r.closed) return std::nullopt;
-      pausedNs += r.pausedNs;
-      if (r.pausedNs > 0) shownSecond = -1;  // the pause screen covered the trial: draw it again
-      if (!r.answer) continue;
-      try {
-        tasks::parseAnswer(q, *r.answer);
-        return response(r.answer, in.tNs, "");
-      } catch (const tasks::AnswerFormatError& e) {
-        screen.rejected(e.what());  // not submitted: the clock keeps running
-        event(in.tNs, "invalid-answer", *r.answer);
-      }
-    }
-    const int second = int(std::ceil(view.limitSeconds - elapsed(monotonicNs())));
-    if (screen.dirty() || second != shownSecond) {
-      current = screen.frame(view.limitSeconds - elapsed(monotonicNs()));
-      shownSecond = second;
-    }
-    if ((monotonicNs() - lastSwapNs) / 1e6 >= refreshMs) {
-      const std::int64_t swap = present(current);
-      const double interval = (swap - lastSwapNs) / 1e6;
-      if (lastSwapNs == onsetNs && !onsetFrameMs) onsetFrameMs = interval;
-      if (interval > 1.5 * refreshMs) ++lateFrames;
-      lastSwapNs = swap;
-    }
-  }
 }
 
 FrameTiming WindowResponder::timing() const {

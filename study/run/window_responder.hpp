@@ -82,6 +82,12 @@ class WindowResponder final : public Responder {
     std::int64_t pausedNs = 0;
   };
   TrialInput trialInput(TrialScreen& screen, const Input& in);
+  // respond()'s steps (window_trial.cpp).
+  struct TrialClock;
+  void showOnset(const TrialView& view, TrialScreen& screen, const Canvas& current, TrialClock& clock);
+  bool takeTrialInputs(const TrialView& view, TrialScreen& screen, TrialClock& clock, int& shownSecond,
+                       std::optional<Response>& ended);
+  void presentWhenDue(const Canvas& current, TrialClock& clock);
   std::optional<Input> nextInput(const Canvas& screen);
   std::optional<std::string> askField(const std::string& title, const FormField& field, int index, int count);
   int refreshHz() const;

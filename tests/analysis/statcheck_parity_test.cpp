@@ -2,7 +2,8 @@
 // test-extract-*.R, test-compute-pvalues.R, test-error.R, test-APAfactor.R, test-S3-methods.R) as GoogleTest cases.
 // Each test name or comment states the convention; expected p-values are R 4.2.2's
 // (2*pt(-2.2, 28) etc., printed with %.17g). Where tlab deliberately differs the case says so
-// (README.md, "statcheck: deliberate differences").
+// (README.md, "statcheck: deliberate differences"). Over 300 lines: the cases follow
+// statcheck's own test files in their order, so that the two can be compared side by side.
 #include <vector>
 
 #include "analysis/statcheck.hpp"

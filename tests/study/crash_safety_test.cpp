@@ -84,17 +84,12 @@ std::string chooseKillPoint(std::mt19937& random, int run, int remaining) {
   }
 }
 
-}  // namespace
+using Acknowledged = std::map<std::pair<std::string, int>, std::string>;  // (participant, sequence) → answer
 
-TEST(CrashSafety, SigkillAtChosenPointsLosesNothingAndDuplicatesNothing) {
-  const auto dir = freshDir("crash");
-  const std::string db = (dir / "crash.db").string(), reference = (dir / "reference.db").string();
-  ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("crash.toml") + " --participants " + std::to_string(kParticipants) + " --db " +
-                       reference).exitCode,
-            0);
-
+// Runs the simulation, killed 24 times at points chosen with a seeded generator and resumed, until
+// a run finishes; every acknowledged response is collected and none may be acknowledged twice.
+void killUntilFinished(const std::filesystem::path& dir, const std::string& db, Acknowledged& acknowledged) {
   std::mt19937 random(20261122);
-  std::map<std::pair<std::string, int>, std::string> acknowledged;
   std::map<std::string, int> killsAt;
   int kills = 0, runs = 0, duplicateAcks = 0;
   bool finished = false;
@@ -118,7 +113,11 @@ TEST(CrashSafety, SigkillAtChosenPointsLosesNothingAndDuplicatesNothing) {
   EXPECT_EQ(kills, 24);
   for (const char* kind : {"open", "prepare", "onset", "commit", "ack"}) EXPECT_GE(killsAt[kind], 4) << kind;
   EXPECT_EQ(duplicateAcks, 0) << "a trial was acknowledged twice (answered again after a resume)";
+}
 
+// Every trial has exactly one response, every acknowledged one among them, written in the planned
+// order, and resumed sessions answer exactly as the uninterrupted reference run.
+void expectResponsesAsReference(const std::string& db, const std::string& reference, const Acknowledged& acknowledged) {
   int duplicates = 0, trials = 0;
   const auto stored = readResponses(db, duplicates, trials);
   EXPECT_EQ(trials, kParticipants * kTrialsPerParticipant);
@@ -144,31 +143,40 @@ TEST(CrashSafety, SigkillAtChosenPointsLosesNothingAndDuplicatesNothing) {
     EXPECT_EQ(stored.at(key).correct, r.correct);
     EXPECT_DOUBLE_EQ(stored.at(key).rt, r.rt);
   }
+}
+
+// The session log after the kills: sessions, onsets, participants and questionnaires.
+void expectSessionLog(const std::string& db) {
   // The kills hit running sessions (sessions left without an end), not only start-ups.
-  Database d(db, false);
-  auto open = d.prepare("SELECT count(*) FROM sessions WHERE ended_at IS NULL");
-  ASSERT_TRUE(open.step());
-  EXPECT_GE(open.integer(0), 5);
+  EXPECT_GE(queryCount(db, "SELECT count(*) FROM sessions WHERE ended_at IS NULL"), 5);
   // Sessions killed while running are marked as interrupted and resumed by the next one.
-  auto resumed = d.prepare("SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by IS NOT NULL");
-  ASSERT_TRUE(resumed.step());
-  EXPECT_GE(resumed.integer(0), 5);
+  EXPECT_GE(queryCount(db, "SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by IS NOT NULL"), 5);
   // Every stimulus shown was logged when it was shown: each answered trial has an onset before its
   // response, and trials whose session was killed after the onset were shown again and say so.
-  auto unseen = d.prepare("SELECT count(*) FROM responses r WHERE NOT EXISTS "
-                          "(SELECT 1 FROM events e WHERE e.trial = r.trial AND e.kind = 'onset' AND e.id < "
-                          "(SELECT min(id) FROM events e2 WHERE e2.trial = r.trial AND e2.kind = 'response'))");
-  ASSERT_TRUE(unseen.step());
-  EXPECT_EQ(unseen.integer(0), 0);
-  auto repeats = d.prepare("SELECT count(*) FROM events WHERE kind = 'onset' AND detail LIKE '%shown again%'");
-  ASSERT_TRUE(repeats.step());
-  EXPECT_GE(repeats.integer(0), 4);  // at least the onset and commit kills
-  auto finishedCount = d.prepare("SELECT count(*) FROM participants WHERE status = 'finished'");
-  ASSERT_TRUE(finishedCount.step());
-  EXPECT_EQ(finishedCount.integer(0), kParticipants);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses r WHERE NOT EXISTS "
+                     "(SELECT 1 FROM events e WHERE e.trial = r.trial AND e.kind = 'onset' AND e.id < "
+                     "(SELECT min(id) FROM events e2 WHERE e2.trial = r.trial AND e2.kind = 'response'))"),
+            0);
+  EXPECT_GE(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'onset' AND detail LIKE '%shown again%'"),
+            4);  // at least the onset and commit kills
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), kParticipants);
   // After-block questionnaires: one per block and participant, none lost or repeated by resuming.
-  auto questionnaires = d.prepare("SELECT count(*), count(DISTINCT participant || '/' || block) FROM questionnaire_answers");
-  ASSERT_TRUE(questionnaires.step());
-  EXPECT_EQ(questionnaires.integer(0), kParticipants * 4);
-  EXPECT_EQ(questionnaires.integer(1), kParticipants * 4);
+  const std::string questionnaires =
+      "SELECT count(*), count(DISTINCT participant || '/' || block) FROM questionnaire_answers";
+  EXPECT_EQ(queryCount(db, questionnaires, 0), kParticipants * 4);
+  EXPECT_EQ(queryCount(db, questionnaires, 1), kParticipants * 4);
+}
+
+}  // namespace
+
+TEST(CrashSafety, SigkillAtChosenPointsLosesNothingAndDuplicatesNothing) {
+  const auto dir = freshDir("crash");
+  const std::string db = (dir / "crash.db").string(), reference = (dir / "reference.db").string();
+  ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("crash.toml") + " --participants " + std::to_string(kParticipants) + " --db " +
+                       reference).exitCode,
+            0);
+  Acknowledged acknowledged;
+  ASSERT_NO_FATAL_FAILURE(killUntilFinished(dir, db, acknowledged));
+  ASSERT_NO_FATAL_FAILURE(expectResponsesAsReference(db, reference, acknowledged));
+  expectSessionLog(db);
 }

@@ -32,12 +32,6 @@ constexpr int kTrials = 6;  // flow.toml: 2 training questions + 2 blocks × 2 t
 bool haveTool(const std::string& name) { return runCommand("command -v " + name).exitCode == 0; }
 void pause(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
 
-std::int64_t count(const std::string& db, const std::string& sql) {
-  Database d(db, false);
-  auto s = d.prepare(sql);
-  return s.step() ? s.integer(0) : -1;
-}
-
 // An Xvfb display of its own for the life of the object. Each test takes its own hundred display
 // numbers (window_cli_test 90-189, window_run_test 300-499, these 900-1399), so tests running in
 // parallel never share a server.
@@ -76,13 +70,13 @@ TEST(SessionFlow, SimulatedObserversWalkEveryStep) {
   const std::string db = (dir / "study.db").string();
   const auto r = runCommand(kTlab + " simulate " + studyData("flow.toml") + " --db " + quoted(db));
   ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_EQ(count(db, "SELECT count(*) FROM consent WHERE decision = 'accepted'"), 2);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participant_info"), 2 * 4);  // age, gender, vision, handedness
-  EXPECT_EQ(count(db, "SELECT count(*) FROM questionnaire_answers"), 2 * 4);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM questionnaire_answers WHERE item = 'minutes' AND value BETWEEN 0 AND 120"), 2);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'break'"), 2);  // after test trial 2 of 4
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM consent WHERE decision = 'accepted'"), 2);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participant_info"), 2 * 4);  // age, gender, vision, handedness
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM questionnaire_answers"), 2 * 4);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM questionnaire_answers WHERE item = 'minutes' AND value BETWEEN 0 AND 120"), 2);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'break'"), 2);  // after test trial 2 of 4
   // Training never shows a stimulus of a test trial.
-  EXPECT_EQ(count(db, "SELECT count(*) FROM trials a JOIN trials b ON a.participant = b.participant AND a.stimulus_sha256 = "
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM trials a JOIN trials b ON a.participant = b.participant AND a.stimulus_sha256 = "
                       "b.stimulus_sha256 WHERE a.phase = 'training' AND b.phase = 'test'"),
             0);
   ASSERT_EQ(runCommand(kTlab + " export " + quoted(db) + " --csv " + quoted((dir / "csv").string())).exitCode, 0);
@@ -116,15 +110,40 @@ TEST(SessionFlowWindow, DeclinedConsentStoresOnlyTheDecision) {
   runCommand(display.env + " xdotool key --window " + window + " space");  // "you chose not to take part"
   ASSERT_EQ(waitProcess(tlab), 0) << readText((dir / "run.err").string());
   EXPECT_NE(readText((dir / "run.out").string()).find("declined"), std::string::npos);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participants WHERE status = 'declined' AND slot = -1"), 1);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM consent WHERE decision = 'declined'"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participants WHERE status = 'declined' AND slot = -1"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM consent WHERE decision = 'declined'"), 1);
   for (const char* table : {"assignments", "sessions", "trials", "responses", "participant_info"})
-    EXPECT_EQ(count(db, std::string("SELECT count(*) FROM ") + table), 0) << table;
+    EXPECT_EQ(queryCount(db, std::string("SELECT count(*) FROM ") + table), 0) << table;
   // The same person is refused later with one line; the slot went to nobody.
   const auto again = runCommand(kTlab + " simulate " + studyData("flow.toml") + " --participants 1 --db " + quoted(db));
   ASSERT_EQ(again.exitCode, 0) << again.err;
-  EXPECT_EQ(count(db, "SELECT min(slot) FROM assignments"), 0);
+  EXPECT_EQ(queryCount(db, "SELECT min(slot) FROM assignments"), 0);
 }
+
+namespace {
+
+// What the keyboard session stored: every answer correct, the information and questionnaire
+// answers as typed, the feedback and the break, and the choice buttons below the question.
+void expectKeyboardSessionStored(const std::string& db) {
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses WHERE correct = 1"), kTrials);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participant_info WHERE (field = 'age' AND value = '34') OR "
+                      "(field = 'gender' AND value = 'female') OR (field = 'handedness' AND value = 'right')"),
+            3);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM questionnaire_answers WHERE (item = 'ease' AND value = 4) OR (item = 'strategy' AND "
+                      "answer = 'the shading') OR (item = 'minutes' AND value = 15) OR (item = 'comments' AND answer = 'none')"),
+            4);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'feedback' AND detail LIKE '%\"correct\":true%'"), 2);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'break-end'"), 1);
+  // The choice buttons sit below the question and its hint (the question text at y = 90), not over them.
+  Database d(db, false);
+  auto form = d.prepare("SELECT detail FROM events WHERE kind = 'form-item' AND detail LIKE '%\"field\":\"gender\"%'");
+  ASSERT_TRUE(form.step());
+  const auto buttons = nlohmann::json::parse(form.text(0))["buttons"];
+  ASSERT_EQ(buttons.size(), 4u);
+  for (const auto& [label, centre] : buttons.items()) EXPECT_GT(centre[1].get<int>(), 150) << label;
+}
+
+}  // namespace
 
 // A participant at the keyboard (xdotool, through X and GLFW's callbacks): agrees, fills in the
 // information, trains with feedback, takes the break, answers every questionnaire item kind,
@@ -182,22 +201,7 @@ TEST(SessionFlowWindow, ParticipantAcceptsAndFinishesAtTheKeyboard) {
   key("space");      // debrief with the completion code
   ASSERT_EQ(waitProcess(tlab), 0) << readText((dir / "run.err").string());
   EXPECT_NE(readText((dir / "run.out").string()).find("session finished: 6 of 6 trials answered"), std::string::npos);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses WHERE correct = 1"), kTrials);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participant_info WHERE (field = 'age' AND value = '34') OR "
-                      "(field = 'gender' AND value = 'female') OR (field = 'handedness' AND value = 'right')"),
-            3);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM questionnaire_answers WHERE (item = 'ease' AND value = 4) OR (item = 'strategy' AND "
-                      "answer = 'the shading') OR (item = 'minutes' AND value = 15) OR (item = 'comments' AND answer = 'none')"),
-            4);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'feedback' AND detail LIKE '%\"correct\":true%'"), 2);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'break-end'"), 1);
-  // The choice buttons sit below the question and its hint (the question text at y = 90), not over them.
-  Database d(db, false);
-  auto form = d.prepare("SELECT detail FROM events WHERE kind = 'form-item' AND detail LIKE '%\"field\":\"gender\"%'");
-  ASSERT_TRUE(form.step());
-  const auto buttons = nlohmann::json::parse(form.text(0))["buttons"];
-  ASSERT_EQ(buttons.size(), 4u);
-  for (const auto& [label, centre] : buttons.items()) EXPECT_GT(centre[1].get<int>(), 150) << label;
+  expectKeyboardSessionStored(db);
 }
 
 TEST(SessionFlowWindow, AutopilotWalksTheWholeSessionAndTimingIsRecorded) {
@@ -208,13 +212,13 @@ TEST(SessionFlowWindow, AutopilotWalksTheWholeSessionAndTimingIsRecorded) {
   const auto r = runCommand(display.env + " " + commandLine(runArgs(db, "P-auto", true)));
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
   EXPECT_NE(r.out.find("session finished: 6 of 6 trials answered"), std::string::npos) << r.out;
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 1);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM sessions WHERE mode = 'autopilot' AND display_json LIKE '%gl_renderer%'"), 1);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses WHERE onset_to_swap_ms > 0 AND onset_frame_ms > 0 AND late_frames >= 0"), kTrials);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'feedback'"), 2);  // both training questions
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind IN ('break', 'break-end')"), 2);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participant_info"), 4);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM questionnaire_answers"), 4);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM sessions WHERE mode = 'autopilot' AND display_json LIKE '%gl_renderer%'"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses WHERE onset_to_swap_ms > 0 AND onset_frame_ms > 0 AND late_frames >= 0"), kTrials);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'feedback'"), 2);  // both training questions
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind IN ('break', 'break-end')"), 2);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participant_info"), 4);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM questionnaire_answers"), 4);
   const auto timing = runCommand(kTlab + " timing " + quoted(db));
   ASSERT_EQ(timing.exitCode, 0) << timing.err;
   EXPECT_NE(timing.out.find("llvmpipe"), std::string::npos) << timing.out;
@@ -231,17 +235,17 @@ TEST(SessionFlowWindow, KilledDuringABreakResumesAfterIt) {
   ASSERT_TRUE(stoppedAtFaultPoint(first)) << readText((dir / "a.err").string());
   ::kill(first, SIGKILL);
   waitProcess(first);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), 4);  // 2 training + 2 test, then the break
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses"), 4);  // 2 training + 2 test, then the break
   auto args = runArgs(db, "P-break", true);
   args.push_back("--resume");
   const auto resumed = runCommand(display.env + " " + commandLine(args));
   ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
   EXPECT_NE(resumed.out.find("2 of 6 trials answered in this run (4 before)"), std::string::npos) << resumed.out;
   // The resumed session continued after the break: its first stimulus was trial 5, shown once.
-  EXPECT_EQ(count(db, "SELECT min(t.sequence) FROM events e JOIN trials t ON t.id = e.trial WHERE e.kind = 'onset' AND e.session = 2"), 5);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM events WHERE kind = 'onset'"), kTrials);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by = 2"), 1);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT min(t.sequence) FROM events e JOIN trials t ON t.id = e.trial WHERE e.kind = 'onset' AND e.session = 2"), 5);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind = 'onset'"), kTrials);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM sessions WHERE end_reason = 'interrupted' AND resumed_by = 2"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 1);
 }
 
 TEST(SessionFlowWindow, TrainingFeedbackIsVisibleInAScreenshot) {
@@ -271,6 +275,6 @@ TEST(SessionFlowWindow, TrainingFeedbackIsVisibleInAScreenshot) {
     }
   stbi_image_free(pixels);
   EXPECT_GT(coloured, 40) << "no feedback text in " << shot;
-  const auto events = count(db, "SELECT count(*) FROM events WHERE kind = 'feedback'");
+  const auto events = queryCount(db, "SELECT count(*) FROM events WHERE kind = 'feedback'");
   EXPECT_EQ(events, 0);  // killed on the feedback screen: its event was not yet stored
 }

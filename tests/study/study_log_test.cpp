@@ -26,12 +26,6 @@ std::vector<std::string> stationArgs(const std::string& db, int first, int parti
           "--db", db, "--trials"};
 }
 
-std::int64_t count(const std::string& db, const std::string& sql) {
-  Database d(db, false);
-  auto s = d.prepare(sql);
-  return s.step() ? s.integer(0) : -1;
-}
-
 void expectOneLineError(const CommandResult& r, const std::string& part) {
   EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
   EXPECT_EQ(r.err.rfind("tlab: error: ", 0), 0u) << r.err;
@@ -72,11 +66,11 @@ TEST(StudyLog, FourStationsOnOneNewDatabase) {
       acknowledged.insert({a.participant, a.sequence});
   }
   EXPECT_EQ(acknowledged.size(), std::size_t(100 * kTrialsPerParticipant));
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), 100 * kTrialsPerParticipant);
-  EXPECT_EQ(count(db, "SELECT count(DISTINCT slot) FROM assignments"), 100);
-  EXPECT_EQ(count(db, "SELECT max(slot) FROM assignments"), 99);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM experiments"), 1);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 100);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses"), 100 * kTrialsPerParticipant);
+  EXPECT_EQ(queryCount(db, "SELECT count(DISTINCT slot) FROM assignments"), 100);
+  EXPECT_EQ(queryCount(db, "SELECT max(slot) FROM assignments"), 99);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM experiments"), 1);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM participants WHERE status = 'finished'"), 100);
   Database d(db, false);
   for (const auto& [participant, sequence] : acknowledged) {
     auto s = d.prepare("SELECT count(*) FROM responses r JOIN trials t ON t.id = r.trial JOIN participants p ON p.id = t.participant "
@@ -98,14 +92,14 @@ TEST(StudyLog, AParticipantRunningAtOneStationIsRefusedAtAnother) {
   int status = 0;
   ::waitpid(a, &status, WUNTRACED);
   ASSERT_TRUE(WIFSTOPPED(status)) << readText((dir / "a.err").string());
-  const auto before = count(db, "SELECT count(*) FROM responses");
+  const auto before = queryCount(db, "SELECT count(*) FROM responses");
   expectOneLineError(runCommand(commandLine(resume)), "participant 'sim-002' is in session ");
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), before);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses"), before);
   // Station A goes on and finishes; the participant is then finished for everyone.
   ::kill(a, SIGCONT);
   EXPECT_EQ(waitProcess(a), 0) << readText((dir / "a.err").string());
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), 2 * kTrialsPerParticipant);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM sessions WHERE ended_at IS NULL"), 0);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses"), 2 * kTrialsPerParticipant);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM sessions WHERE ended_at IS NULL"), 0);
 }
 
 TEST(StudyLog, DesignCatchesWhatStimuliWouldFailOnAndNothingIsWritten) {
@@ -140,10 +134,10 @@ TEST(StudyLog, AStartKilledWhilePreparingStimuliLeavesNoRows) {
   ::kill(p, SIGKILL);
   waitProcess(p);
   for (const char* table : {"experiments", "participants", "assignments", "sessions", "trials"})
-    EXPECT_EQ(count(db, std::string("SELECT count(*) FROM ") + table), 0) << table;
+    EXPECT_EQ(queryCount(db, std::string("SELECT count(*) FROM ") + table), 0) << table;
   // Fixed and started again, the study runs as if nothing had happened.
   ASSERT_EQ(runCommand(kTlab + " simulate " + studyData("crash.toml") + " --participants 1 --db " + db).exitCode, 0);
-  EXPECT_EQ(count(db, "SELECT count(*) FROM responses"), kTrialsPerParticipant);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM responses"), kTrialsPerParticipant);
 }
 
 TEST(StudyLog, EditedFilesAreVersionsAndDesignChangesAreNotPooledUnlessAsked) {

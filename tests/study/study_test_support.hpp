@@ -1,14 +1,25 @@
 #pragma once
-// Shared helpers of the study tests: paths of the test experiments and the examples, and a
-// minimal RFC 4180 CSV reader to check what `tlab export` wrote byte for byte.
+// Shared helpers of the study tests: paths of the test experiments and the examples, a query's
+// number from a study database, and a minimal RFC 4180 CSV reader to check what `tlab export`
+// wrote byte for byte.
+#include <cstdint>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "study/store/sqlite_database.hpp"
 
 namespace tlab::testing {
 
 inline std::string studyData(const std::string& name) { return std::string(TLAB_SOURCE_DIR) + "/tests/study/data/" + name; }
 inline std::string example(const std::string& name) { return std::string(TLAB_SOURCE_DIR) + "/examples/" + name; }
+
+// The integer in `column` of the first row a query on the database file `db` returns (-1: no row).
+inline std::int64_t queryCount(const std::string& db, const std::string& sql, int column = 0) {
+  study::Database d(db, false);
+  auto s = d.prepare(sql);
+  return s.step() ? s.integer(column) : -1;
+}
 
 // Rows of fields; quoted fields may hold commas, quotes ("") and line breaks; rows end in CRLF or LF.
 inline std::vector<std::vector<std::string>> parseCsv(const std::string& text) {

@@ -78,73 +78,51 @@ struct WindowSession {
   std::string err() const { return readText((dir / "run.err").string()); }
 };
 
-}  // namespace
+// Presses `key` in the session's window, then waits `ms`.
+void press(const WindowSession& session, const std::string& key, int ms) {
+  session.xdo("key --window " + session.window + " " + key);
+  pause(ms);
+}
 
-TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
-  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
-  WindowSession session("window_run", 300, "window.toml", "P'01; DROP TABLE trials");
-  const std::string& db = session.db;
-  const std::string& window = session.window;
-  const auto xdo = [&](const std::string& args) { return session.xdo(args); };
-  ASSERT_FALSE(window.empty()) << session.err();
-  const auto trials = waitForTrials(db);
-  ASSERT_EQ(trials.size(), 3u) << session.err();
-  pause(500);
+// Moves the pointer to (x, y) of the window and clicks there.
+void clickAt(const WindowSession& session, int x, int y) {
+  session.xdo("mousemove --window " + session.window + " " + std::to_string(x) + " " + std::to_string(y));
+  pause(100);
+  session.xdo("click --window " + session.window + " 1");
+}
 
-  xdo("key --window " + window + " space");  // welcome
-  pause(400);
-  xdo("key --window " + window + " space");  // task instructions
-  pause(400);
-  const std::string layer = trials[0].question["truth"].dump();
-  xdo("key --window " + window + " Escape");  // pause: the paused time is left out of the RT
-  pause(500);
-  xdo("key --window " + window + " space");  // resume
-  pause(200);
-  xdo("type --window " + window + " " + layer);
-  xdo("key --window " + window + " Return");
-  pause(400);
-  xdo("key --window " + window + " space");  // next task's instructions
-  pause(400);
-  // Click each label met along the boundary at its place on the screen, then Enter.
+// Clicks each label met along the boundary at its place on the screen, then Enter; the labels.
+std::vector<std::string> clickBoundaryLabels(const WindowSession& session, const StoredTrial& trial) {
   const tlab::study::ScreenLayout layout = tlab::study::makeScreenLayout(640, 480, 160, 160);
   std::vector<std::string> expected;
-  for (const auto& label : trials[1].question["truth"]) expected.push_back(label.get<std::string>());
-  for (const auto& point : trials[1].question["points"]) {
+  for (const auto& label : trial.question["truth"]) expected.push_back(label.get<std::string>());
+  for (const auto& point : trial.question["points"]) {
     const std::string label = point["label"];
     if (std::find(expected.begin(), expected.end(), label) == expected.end()) continue;
     const glm::dvec2 screen = layout.toScreen({point["pixel"][0].get<double>(), point["pixel"][1].get<double>()});
-    xdo("mousemove --window " + window + " " + std::to_string(int(screen.x)) + " " + std::to_string(int(screen.y)));
-    pause(100);
-    xdo("click --window " + window + " 1");
+    clickAt(session, int(screen.x), int(screen.y));
     pause(200);
   }
-  xdo("key --window " + window + " Return");
-  pause(400);
-  xdo("key --window " + window + " space");  // next task's instructions
-  pause(400);
-  // Click the target's floor position on the plan beside the stimulus.
+  press(session, "Return", 400);
+  return expected;
+}
+
+// Clicks the target's floor position on the plan beside the stimulus.
+void clickFloorTarget(const WindowSession& session, const nlohmann::json& truth) {
   const tlab::study::ScreenLayout planLayout = tlab::study::makeScreenLayoutWithPlan(640, 480, 160, 160);
   const auto scene = tlab::render::loadScene("builtin:walkthrough?seed=5", tlab::stimuli::allSceneSpecs());
   const tlab::study::FloorPlan plan = tlab::study::makeFloorPlan(scene, 160, 160);
-  const auto truth = trials[2].question["truth"];
   const glm::dvec2 planPixel = plan.pixelOf({truth[0].get<double>(), plan.floorY, truth[1].get<double>()});
   const int clickX = int(planLayout.plan->x + planPixel.x * planLayout.plan->width / 160.0);
   const int clickY = int(planLayout.plan->y + planPixel.y * planLayout.plan->height / 160.0);
-  xdo("mousemove --window " + window + " " + std::to_string(clickX) + " " + std::to_string(clickY));
-  pause(100);
-  xdo("click --window " + window + " 1");
+  clickAt(session, clickX, clickY);
   pause(400);
-  xdo("key --window " + window + " 4");  // questionnaire
-  pause(400);
-  xdo("key --window " + window + " Return");  // confirm the answers
-  pause(400);
-  xdo("key --window " + window + " space");  // debrief
-  const int code = session.finish();
-  const std::string out = session.out();
-  ASSERT_EQ(code, 0) << out << session.err();
-  EXPECT_NE(out.find("session finished: 3 of 3 trials answered"), std::string::npos) << out;
-  std::printf("%s", out.substr(out.find("timing:")).c_str());
+}
 
+// The three responses as given: the typed layer (its RT without the pause), the boundary labels
+// and the floor click, all scored correct.
+void expectResponses(const std::string& db, const std::string& layer, const std::vector<std::string>& expected,
+                     const nlohmann::json& truth) {
   Database d(db, false);
   auto responses = d.prepare("SELECT t.task_id, r.raw_answer, r.correct, r.rt_seconds, r.response_ns - r.onset_ns FROM responses r "
                              "JOIN trials t ON t.id = r.trial ORDER BY t.sequence");
@@ -165,7 +143,12 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   EXPECT_EQ(responses.text(0), "find");
   EXPECT_EQ(responses.integer(2), 1) << "clicked " << responses.text(1) << ", truth " << truth.dump();
   EXPECT_FALSE(responses.step());
+}
 
+// The questionnaire answer, the participant (its id stored verbatim) finished, three onsets with
+// their present time, and the pause and resume.
+void expectSessionRecords(const std::string& db) {
+  Database d(db, false);
   auto questionnaire = d.prepare("SELECT item, value FROM questionnaire_answers");
   ASSERT_TRUE(questionnaire.step());
   EXPECT_EQ(questionnaire.text(0), "ease");
@@ -175,16 +158,50 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   EXPECT_EQ(participant.text(0), "P'01; DROP TABLE trials");
   EXPECT_EQ(participant.text(1), "finished");
   auto onsets = d.prepare("SELECT detail FROM events WHERE kind = 'onset' ORDER BY id");
-  int count = 0;
+  int onsetCount = 0;
   while (onsets.step()) {
     const auto detail = nlohmann::json::parse(onsets.text(0));
     EXPECT_GT(detail["present_ms"].get<double>(), 0.0);
-    ++count;
+    ++onsetCount;
   }
-  EXPECT_EQ(count, 3);
-  auto paused = d.prepare("SELECT count(*) FROM events WHERE kind IN ('pause', 'resume')");
-  ASSERT_TRUE(paused.step());
-  EXPECT_EQ(paused.integer(0), 2);
+  EXPECT_EQ(onsetCount, 3);
+  EXPECT_EQ(queryCount(db, "SELECT count(*) FROM events WHERE kind IN ('pause', 'resume')"), 2);
+}
+
+}  // namespace
+
+TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
+  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
+  WindowSession session("window_run", 300, "window.toml", "P'01; DROP TABLE trials");
+  const std::string& db = session.db;
+  const std::string& window = session.window;
+  ASSERT_FALSE(window.empty()) << session.err();
+  const auto trials = waitForTrials(db);
+  ASSERT_EQ(trials.size(), 3u) << session.err();
+  pause(500);
+
+  press(session, "space", 400);  // welcome
+  press(session, "space", 400);  // task instructions
+  const std::string layer = trials[0].question["truth"].dump();
+  press(session, "Escape", 500);  // pause: the paused time is left out of the RT
+  press(session, "space", 200);   // resume
+  session.xdo("type --window " + window + " " + layer);
+  press(session, "Return", 400);
+  press(session, "space", 400);  // next task's instructions
+  const std::vector<std::string> expected = clickBoundaryLabels(session, trials[1]);
+  press(session, "space", 400);  // next task's instructions
+  const auto truth = trials[2].question["truth"];
+  clickFloorTarget(session, truth);
+  press(session, "4", 400);       // questionnaire
+  press(session, "Return", 400);  // confirm the answers
+  session.xdo("key --window " + window + " space");  // debrief
+  const int code = session.finish();
+  const std::string out = session.out();
+  ASSERT_EQ(code, 0) << out << session.err();
+  EXPECT_NE(out.find("session finished: 3 of 3 trials answered"), std::string::npos) << out;
+  std::printf("%s", out.substr(out.find("timing:")).c_str());
+  expectResponses(db, layer, expected, truth);
+  expectSessionRecords(db);
 }
 
 // An interactive trial (Elmqvist): the scene is rendered live while the participant orbits it by
