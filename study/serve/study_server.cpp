@@ -148,6 +148,13 @@ bool StudyServer::isAdmin(const httplib::Request& req) const {
 }
 
 void StudyServer::routes() {
+  pageRoutes();
+  apiRoutes();
+  adminRoutes();
+}
+
+// What a browser opens: the static files, the arrival link and the participant page.
+void StudyServer::pageRoutes() {
   auto asset = [](const char* name, const char* type) {
     return [name, type](const httplib::Request&, httplib::Response& res) { res.set_content(std::string(webAsset(name)), type); };
   };
@@ -168,6 +175,10 @@ void StudyServer::routes() {
     res.set_header("Cache-Control", "no-store");
     res.set_content(std::string(webAsset("participant.html")), "text/html; charset=utf-8");
   });
+}
+
+// The participant page's JSON API: every route is bound to one session token.
+void StudyServer::apiRoutes() {
   http_.Get(std::string("/api/") + kToken + "/screen", [this](const httplib::Request& req, httplib::Response& res) {
     const auto s = session(req.matches[1]);
     if (!s) return refuse(res, 404, "no such session");
@@ -201,6 +212,9 @@ void StudyServer::routes() {
     res.set_header("Cache-Control", "private, max-age=86400, immutable");
     res.set_content(readImageFile(*path), "image/png");
   });
+}
+
+void StudyServer::adminRoutes() {
   http_.Get("/admin", [this](const httplib::Request& req, httplib::Response& res) { admin(req, res); });
   http_.Get("/admin/status.json", [this](const httplib::Request& req, httplib::Response& res) {
     if (!isAdmin(req)) return refuse(res, 403, "admin: wrong or missing token");

@@ -39,6 +39,9 @@ class StudyServer {
 
  private:
   void routes();
+  void pageRoutes();
+  void apiRoutes();
+  void adminRoutes();
   void arrive(const httplib::Request& req, httplib::Response& res);
   void reply(ParticipantSession& session, const httplib::Request& req, httplib::Response& res);
   void admin(const httplib::Request& req, httplib::Response& res);
