@@ -15,10 +15,7 @@ void composeBlend(FrameContext& frame, float alpha) {
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uAlpha"), alpha);
-  gpu::dispatchLinear(buffer.pixels());
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/blend.comp");
+  dispatchCompose(frame, output, buffer.pixels(), "compose/blend.comp");
 }
 
 }  // namespace tlab::render

@@ -23,10 +23,7 @@ void composeCurvature(FrameContext& frame, const BucketedKBuffer& buffer, Curvat
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uAlpha"), alpha);
-  gpu::dispatchLinear(buffer.pixels());
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/curvature_compose.comp");
+  dispatchCompose(frame, output, buffer.pixels(), "compose/curvature_compose.comp");
 }
 
 }  // namespace tlab::render

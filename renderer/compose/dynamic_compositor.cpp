@@ -74,10 +74,7 @@ void composeDynamic(FrameContext& frame, const std::vector<std::uint32_t>& drawR
   const glm::vec4 lens(settings.lensCentre.x * float(buffer.width()), (1.0f - settings.lensCentre.y) * float(buffer.height()),
                        settings.lensRadius * float(buffer.height()), settings.active ? 1.0f : 0.0f);
   glUniform4fv(program.uniform("uLens"), 1, &lens[0]);
-  gpu::dispatchLinear(buffer.pixels());
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/dynamic_compose.comp");
+  dispatchCompose(frame, output, buffer.pixels(), "compose/dynamic_compose.comp", GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
 }
 
 }  // namespace tlab::render

@@ -28,10 +28,7 @@ void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settin
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform2f(program.uniform("uProjectionScale"), frame.raster.projection[0][0], frame.raster.projection[1][1]);
   settings.setUniforms(program, buffer.width(), buffer.height());
-  gpu::dispatchLinear(buffer.pixels());
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/illustrative_compose.comp");
+  dispatchCompose(frame, output, buffer.pixels(), "compose/illustrative_compose.comp");
 }
 
 }  // namespace tlab::render

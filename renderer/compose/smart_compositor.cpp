@@ -19,10 +19,7 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1i(program.uniform("uModifier"), settings.modifier);
   glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
-  gpu::dispatchLinear(buffer.pixels());
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/smart_compose.comp");
+  dispatchCompose(frame, output, buffer.pixels(), "compose/smart_compose.comp");
 }
 
 }  // namespace tlab::render

@@ -45,4 +45,9 @@ struct FrameContext {
 // flipping so that row 0 is the top.
 void readOutputBuffer(const gpu::Buffer& output, core::Image& image);
 
+// The end of every compositor: its compute program (bound, uniforms set) run once per pixel, a
+// barrier, the output read into frame.image, and a GL error check naming `shader`.
+void dispatchCompose(FrameContext& frame, const gpu::Buffer& output, std::size_t pixels, const char* shader,
+                     GLbitfield barrier = GL_BUFFER_UPDATE_BARRIER_BIT);
+
 }  // namespace tlab::render
