@@ -6,6 +6,8 @@
 // sent, no trial has two responses, and every participant finished.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include <set>
 
 #include "study/serve/load_client.hpp"
@@ -16,12 +18,12 @@ using namespace tlab::testing;
 TEST(ServeFaults, KillNineDuringLoadLosesNothingAndEveryoneResumes) {
   const auto dir = freshDir("serve_faults");
   const std::string experiment = studyData("tiny.toml");
-  ServeProcess server = startServe(experiment, dir, 0, "0");
-  ASSERT_GT(server.port, 0);
+  const std::string db = (dir / "study.db").string();
+  auto server = std::make_unique<ServedStudy>(experiment, db, dir);
   const std::set<int> killAfter = {5, 23, 41, 62};  // of 80 acknowledged answers
   int kills = 0;
   tlab::study::LoadOptions o;
-  o.url = server.link;
+  o.url = server->link();
   o.participants = 8;
   o.concurrency = 4;
   o.behaviour.thinkMs = 5.0;
@@ -29,13 +31,14 @@ TEST(ServeFaults, KillNineDuringLoadLosesNothingAndEveryoneResumes) {
   o.seed = 11;
   o.onAck = [&](int acknowledged, const tlab::study::AckedTrial&) {
     if (!killAfter.count(acknowledged)) return;
-    ::kill(server.pid, SIGKILL);
-    EXPECT_EQ(waitProcess(server.pid), -SIGKILL);
+    const int port = server->port();
+    EXPECT_EQ(server->stop(SIGKILL), -SIGKILL);
     ++kills;
-    server = startServe(experiment, dir, server.port, std::to_string(kills));
+    server.reset();
+    server = std::make_unique<ServedStudy>(experiment, db, dir, port);
   };
   const tlab::study::LoadResult r = tlab::study::runLoad(o);
-  EXPECT_EQ(stopServe(server), 0);
+  EXPECT_EQ(server->stop(SIGTERM), 0);
   EXPECT_EQ(kills, 4);
   ASSERT_EQ(r.failed, 0) << r.firstError;
   EXPECT_EQ(r.finished, 8);

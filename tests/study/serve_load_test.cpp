@@ -13,11 +13,10 @@ using namespace tlab::testing;
 
 TEST(ServeLoad, EightParticipantsFourAtATimeFinishWithEveryTrialAnsweredOnce) {
   const auto dir = freshDir("serve_load");
-  const ServeProcess server = startServe(studyData("tiny.toml"), dir, 0, "1");
-  ASSERT_GT(server.port, 0);
-  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link, "--participants", "8", "--concurrency", "4", "--think",
+  ServedStudy server(studyData("tiny.toml"), (dir / "study.db").string(), dir);
+  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link(), "--participants", "8", "--concurrency", "4", "--think",
                                                      "10", "--seed", "3"}));
-  EXPECT_EQ(stopServe(server), 0);
+  EXPECT_EQ(server.stop(SIGTERM), 0);
   ASSERT_EQ(load.exitCode, 0) << load.out << load.err;
   EXPECT_NE(load.out.find("participants: 8 finished, 0 failed"), std::string::npos) << load.out;
   EXPECT_NE(load.out.find("responses acknowledged: 80 "), std::string::npos) << load.out;  // 10 trials each
@@ -37,11 +36,10 @@ TEST(ServeLoad, EightParticipantsFourAtATimeFinishWithEveryTrialAnsweredOnce) {
 
 TEST(ServeLoad, AFailedParticipantExitsOneWithTheFirstError) {
   const auto dir = freshDir("serve_load_fail");
-  const ServeProcess server = startServe(studyData("tiny.toml"), dir, 0, "1");
-  ASSERT_GT(server.port, 0);
-  const std::string wrongExperiment = server.link.substr(0, server.link.rfind('/') + 1) + "no-such-study";
+  ServedStudy server(studyData("tiny.toml"), (dir / "study.db").string(), dir);
+  const std::string wrongExperiment = server.link().substr(0, server.link().rfind('/') + 1) + "no-such-study";
   const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", wrongExperiment, "--participants", "2", "--concurrency", "2"}));
-  EXPECT_EQ(stopServe(server), 0);
+  EXPECT_EQ(server.stop(SIGTERM), 0);
   EXPECT_EQ(load.exitCode, 1);
   EXPECT_NE(load.out.find("participants: 0 finished, 2 failed"), std::string::npos) << load.out;
   EXPECT_NE(load.err.find("tlab: error: participant load-001: GET /s/no-such-study?pid=load-001: HTTP 404"), std::string::npos) << load.err;
@@ -51,14 +49,13 @@ TEST(ServeLoad, AFailedParticipantExitsOneWithTheFirstError) {
 // must show it again, not start the finished session anew (which ended on an error screen).
 TEST(ServeLoad, APageReloadedAfterTheEndStillShowsTheEndScreen) {
   const auto dir = freshDir("serve_reload_end");
-  const ServeProcess server = startServe(studyData("tiny.toml"), dir, 0, "1");
-  ASSERT_GT(server.port, 0);
-  httplib::Client client("127.0.0.1", server.port);
+  ServedStudy server(studyData("tiny.toml"), (dir / "study.db").string(), dir);
+  httplib::Client client("127.0.0.1", server.port());
   const auto arrived = client.Get("/s/tiny?pid=load-001");  // this page's token; the load client finishes its session
   ASSERT_TRUE(arrived);
   ASSERT_EQ(arrived->status, 303);
   const std::string api = "/api/" + arrived->get_header_value("Location").substr(3);
-  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link, "--participants", "1", "--think", "0"}));
+  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link(), "--participants", "1", "--think", "0"}));
   ASSERT_EQ(load.exitCode, 0) << load.out << load.err;
   const auto again = client.Get("/s/tiny?pid=load-001");
   ASSERT_TRUE(again);
@@ -70,5 +67,5 @@ TEST(ServeLoad, APageReloadedAfterTheEndStillShowsTheEndScreen) {
   const auto now = client.Get((api + "/screen").c_str());
   ASSERT_TRUE(now);
   EXPECT_EQ(nlohmann::json::parse(now->body).value("kind", ""), "end") << now->body;
-  EXPECT_EQ(stopServe(server), 0);
+  EXPECT_EQ(server.stop(SIGTERM), 0);
 }

@@ -59,9 +59,8 @@ TEST(ServeRequestText, AnArrivalRecordIsValidUtf8WhateverTheBrowserSends) {
 
 TEST(ServeRequestText, ABrowserWithANonUtf8UserAgentStartsItsSession) {
   const auto dir = freshDir("serve_user_agent");
-  const ServeProcess server = startServe(studyData("tiny.toml"), dir, 0, "1");
-  ASSERT_GT(server.port, 0);
-  httplib::Client client("127.0.0.1", server.port);
+  ServedStudy server(studyData("tiny.toml"), (dir / "study.db").string(), dir);
+  httplib::Client client("127.0.0.1", server.port());
   const auto arrived = client.Get("/s/tiny?pid=ua-1", {{"User-Agent", "Mozilla/5.0 \xff\xfe"}});
   ASSERT_TRUE(arrived);
   ASSERT_EQ(arrived->status, 303);
@@ -70,5 +69,5 @@ TEST(ServeRequestText, ABrowserWithANonUtf8UserAgentStartsItsSession) {
   ASSERT_TRUE(shown);
   EXPECT_EQ(shown->status, 200) << shown->body;
   EXPECT_EQ(json::parse(shown->body).value("kind", ""), "message");
-  EXPECT_EQ(stopServe(server), 0);
+  EXPECT_EQ(server.stop(SIGTERM), 0);
 }

@@ -1,7 +1,6 @@
 #pragma once
-// Shared helpers of the `tlab serve` tests: start the server as a process (port 0 or a given one)
-// and wait until it prints its participants' link; stop it; read what `tlab export --csv` stored
-// per trial.
+// Shared helpers of the `tlab serve` load tests: what `tlab export --csv` stored per trial (the
+// server itself runs as a ServedStudy, tests/study/served_study.hpp).
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,44 +9,11 @@
 #include <regex>
 #include <thread>
 
+#include "tests/study/served_study.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
 
 namespace tlab::testing {
-
-struct ServeProcess {
-  pid_t pid = -1;
-  int port = 0;
-  std::string link;  // http://127.0.0.1:PORT/s/EXPERIMENT
-};
-
-// Starts `tlab serve` on `port` (0: any free one) and waits up to two minutes for its link.
-inline ServeProcess startServe(const std::string& experiment, const std::filesystem::path& dir, int port, const std::string& tag) {
-  const std::string out = (dir / ("serve_" + tag + ".out")).string(), err = (dir / ("serve_" + tag + ".err")).string();
-  ServeProcess s;
-  s.pid = spawnProcess({TLAB_EXE, "serve", experiment, "--db", (dir / "study.db").string(), "--listen", "127.0.0.1:" + std::to_string(port), "--quiet"},
-                       out, err);
-  static const std::regex printed("participants: (http://127\\.0\\.0\\.1:([0-9]+)/s/[^?]+)\\?");
-  for (int i = 0; i < 1200; ++i) {
-    std::smatch m;
-    const std::string text = readText(out);
-    if (std::regex_search(text, m, printed)) {
-      s.link = m[1];
-      s.port = std::stoi(m[2]);
-      return s;
-    }
-    if (::waitpid(s.pid, nullptr, WNOHANG) == s.pid) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  ADD_FAILURE() << "tlab serve did not start: " << readText(err);
-  return s;
-}
-
-// Ctrl-C as a researcher would stop it; its exit code.
-inline int stopServe(const ServeProcess& s) {
-  ::kill(s.pid, SIGTERM);
-  return waitProcess(s.pid);
-}
 
 struct StoredTrial {
   std::string status;  // the participant's

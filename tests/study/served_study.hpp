@@ -26,6 +26,8 @@ class ServedStudy {
   ServedStudy& operator=(const ServedStudy&) = delete;
 
   int port() const { return port_; }
+  // The participants' link without its query: http://127.0.0.1:PORT/s/EXPERIMENT.
+  const std::string& link() const { return link_; }
   std::string stdoutText() const { return readText(out_); }
   std::string stderrText() const { return readText(err_); }
   std::string adminToken() const {
@@ -50,12 +52,13 @@ class ServedStudy {
   }
   void waitForPort() {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    const std::regex link("participants: http://127\\.0\\.0\\.1:([0-9]+)/");
+    const std::regex printed("participants: (http://127\\.0\\.0\\.1:([0-9]+)/s/[^?]+)\\?");
     while (std::chrono::steady_clock::now() < deadline) {
       std::smatch m;
       const std::string out = stdoutText();
-      if (std::regex_search(out, m, link)) {
-        port_ = std::stoi(m[1]);
+      if (std::regex_search(out, m, printed)) {
+        link_ = m[1];
+        port_ = std::stoi(m[2]);
         return;
       }
       int status = 0;
@@ -68,7 +71,7 @@ class ServedStudy {
     throw std::runtime_error("tlab serve did not print its link within 120 s: " + stderrText());
   }
 
-  std::string out_, err_;
+  std::string out_, err_, link_;
   pid_t pid_ = -1;
   int port_ = 0;
   int status_ = -1;
