@@ -56,16 +56,16 @@ TEST(ServeLoad, APageReloadedAfterTheEndStillShowsTheEndScreen) {
   ASSERT_EQ(arrived->status, 303);
   const std::string api = "/api/" + arrived->get_header_value("Location").substr(3);
   const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link(), "--participants", "1", "--think", "0"}));
-  ASSERT_EQ(load.exitCode, 0) << load.out << load.err;
+  ASSERT_EQ(load.exitCode, 0) << load.out << load.err << server.stderrText();
   const auto again = client.Get("/s/tiny?pid=load-001");
   ASSERT_TRUE(again);
-  EXPECT_EQ(again->status, 409) << "a finished participant's link says so";
+  EXPECT_EQ(again->status, 409) << "a finished participant's link says so" << server.stderrText();
   const auto shown = client.Post((api + "/display").c_str(), "{}", "application/json");
   ASSERT_TRUE(shown);
   EXPECT_EQ(nlohmann::json::parse(shown->body).value("kind", ""), "end");
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // a restarted walk would have failed by now
   const auto now = client.Get((api + "/screen").c_str());
   ASSERT_TRUE(now);
-  EXPECT_EQ(nlohmann::json::parse(now->body).value("kind", ""), "end") << now->body;
+  EXPECT_EQ(nlohmann::json::parse(now->body).value("kind", ""), "end") << now->body << server.stderrText();
   EXPECT_EQ(server.stop(SIGTERM), 0);
 }
