@@ -37,9 +37,11 @@ ParticipantSession::~ParticipantSession() {
 void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser) {
   std::lock_guard lock(mutex_);
   if (running_) return;
-  // A session that ended (finished, declined, timed out) keeps its end screen: a reload of the
-  // page shows it again. Only a session stopped by an error starts again ("Try again").
-  if (!ended_.empty() && ended_.rfind("error: ", 0) != 0) return;
+  // A session that ended (finished, declined, dropped) keeps its end screen: a reload of the page
+  // shows it again. One stopped by an error ("Try again"), or timed out before the participant was
+  // enrolled (nothing stored), starts again.
+  if (!ended_.empty() && !restartable_) return;
+  restartable_ = false;
   if (thread_.joinable()) thread_.join();
   if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
   ended_.clear();
@@ -77,9 +79,13 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
       endWith(title, "You chose not to take part. You can close this page.");
-    } else if (channel_->timedOut()) {
+    } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
       endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
+    } else if (channel_->timedOut()) {  // still at the welcome or the consent: nothing was stored, they may start again
+      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Reload the page to start again.");
+      std::lock_guard lock(mutex_);
+      restartable_ = true;
     } else if (channel_->closed()) {
       endWith(title, "This session has ended: " + channel_->closedBecause() + ".");
     }
@@ -94,6 +100,7 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
     channel_->close("the server could not continue the session");  // the details go to the log, not to the page
     std::lock_guard lock(mutex_);
     ended_ = std::string("error: ") + ex.what();
+    restartable_ = true;
   }
   running_ = false;
 }

@@ -59,6 +59,7 @@ class ParticipantSession {
   std::atomic<bool> running_{false};
   mutable std::mutex mutex_;
   std::string ended_;
+  bool restartable_ = false;  // ended by an error, or timed out before enrolment: a new visit starts again
   std::thread thread_;
 };
 

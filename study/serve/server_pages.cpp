@@ -44,6 +44,10 @@ std::string adminPage(const nlohmann::json& status, const std::string& adminToke
             "</td></tr>";
   }
   body += "</table>";
+  body += "<h2>Arrived, not enrolled yet</h2><p>At the welcome or the consent: a newcomer gets a slot once they agree.</p>";
+  body += "<table><tr><th>participant</th><th>session</th></tr>";
+  for (const auto& a : status["arrived"]) body += "<tr>" + cell(a["participant"]) + cell(a["session"]) + "</tr>";
+  body += "</table>";
   return document("admin", body);
 }
 

@@ -30,10 +30,21 @@ nlohmann::json StudyServer::status() {
     slots.push_back({{"slot", a.slot}, {"participant", a.participant}, {"status", a.status}, {"answered", std::to_string(done) + "/" + std::to_string(total)},
                      {"session", session}});
   }
+  // Who arrived but has no slot yet: at the welcome or the consent (a newcomer is enrolled once they agree).
+  nlohmann::json arrived = nlohmann::json::array();
+  for (const auto& [participant, session] : live) {
+    bool assigned = false;
+    for (const auto& s : slots) assigned = assigned || s["participant"] == participant;
+    if (assigned) continue;
+    const std::string state = session->state();
+    running += state == "running" ? 1 : 0;
+    arrived.push_back({{"participant", participant}, {"session", state}});
+  }
   char summary[200];
   std::snprintf(summary, sizeof summary, "%zu slots assigned, %d running now, %d finished, %d responses stored; %zu participants arrived at this server",
                 slots.size(), running, finished, answered, live.size());
-  return {{"experiment", e.id}, {"summary", summary}, {"slots", slots}, {"running", running}, {"finished", finished}, {"responses", answered}};
+  return {{"experiment", e.id}, {"summary", summary}, {"slots", slots}, {"arrived", arrived},
+          {"running", running}, {"finished", finished}, {"responses", answered}};
 }
 
 void StudyServer::admin(const httplib::Request& req, httplib::Response& res) {

@@ -178,13 +178,17 @@ TEST_F(Serve, TheAdminPageNeedsItsTokenAndDropsFreeTheSlot) {
   EXPECT_EQ(page.raw("/admin?token=" + std::string(64, 'a'))->status, 403);
   EXPECT_EQ(page.raw("/admin/status.json?token=x")->status, 403);
   const std::string admin = server.adminToken();
+  const std::string waiting = arrive(page, "at-consent");  // arrived, not enrolled: listed apart from the slots
+  page.api(waiting, "display", display());
   const std::string token = arrive(page, "p1");
   walk(page, token, page.api(token, "display", display()).body, 1);
   const json status = page.get("/admin/status.json?token=" + admin).body;
   ASSERT_EQ(status["slots"].size(), 1u);
   EXPECT_EQ(status["slots"][0]["participant"], "p1");
   EXPECT_EQ(status["slots"][0]["answered"], "1/10");
-  EXPECT_EQ(status["running"], 1);
+  ASSERT_EQ(status["arrived"].size(), 1u);
+  EXPECT_EQ(status["arrived"][0]["participant"], "at-consent");
+  EXPECT_EQ(status["running"], 2);
   const auto html = page.raw("/admin?token=" + admin);
   EXPECT_EQ(html->status, 200);
   EXPECT_NE(html->body.find("p1"), std::string::npos);
@@ -206,6 +210,8 @@ TEST_F(Serve, ASilentParticipantTimesOutAndTheSlotIsBackFilled) {
   PageClient page(server.port());
   const std::string token = arrive(page, "quiet");
   walk(page, token, page.api(token, "display", display()).body, 0);
+  const std::string early = arrive(page, "early");  // stays at the welcome: never enrolled
+  EXPECT_EQ(page.api(early, "display", display()).body["kind"], "message");
   json screen;
   for (int i = 0; i < 100; ++i) {  // no request for 3 s: the session ends; polling then shows how
     std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -214,6 +220,10 @@ TEST_F(Serve, ASilentParticipantTimesOutAndTheSlotIsBackFilled) {
   ASSERT_EQ(screen["kind"], "end") << screen.dump();
   EXPECT_NE(screen["text"].get<std::string>().find("timed out"), std::string::npos);
   EXPECT_EQ(page.arrive(kStudy, "PROLIFIC_PID=quiet").first, 409);
+  const json earlyEnd = page.screen(early).body;  // nothing was stored of them: they may start again
+  EXPECT_EQ(earlyEnd["kind"], "end");
+  EXPECT_NE(earlyEnd["text"].get<std::string>().find("start again"), std::string::npos) << earlyEnd.dump();
+  EXPECT_EQ(page.api(early, "display", display()).body["kind"], "message") << "a reload starts at the welcome again";
   const std::string next = arrive(page, "next");
   walk(page, next, page.api(next, "display", display()).body, 1);
   server.stop(SIGTERM);
