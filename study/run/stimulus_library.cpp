@@ -53,6 +53,13 @@ std::string stimulusDirectoryFor(const std::string& databasePath) {
   return (db.parent_path() / (db.stem().string() + "-stimuli")).string();
 }
 
+std::string preparedTrialKey(const PlannedTrial& trial) {
+  std::string key = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | q" +
+                    std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
+  for (const auto& s : effectiveTaskSettings(trial)) key += " " + s;
+  return key;
+}
+
 std::vector<std::string> effectiveTaskSettings(const PlannedTrial& trial) {
   std::vector<std::string> settings = trial.taskSettings;
   bool hasLimit = false;
@@ -120,8 +127,7 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   p.picture = r.picture;
   p.scene = r.scene;
   p.camera = r.camera;
-  const std::string id = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | q" +
-                         std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
+  const std::string id = preparedTrialKey(trial);
   auto found = written_.find(id);
   if (found == written_.end()) {
     const stimuli::ProducedStimulus produced = stimuli::StimulusProducer(marks_).produce(*p.picture, probeMarks(p.question));

@@ -76,4 +76,8 @@ std::string stimulusDirectoryFor(const std::string& databasePath);
 // The task settings a planned trial probes with: its own plus time-limit from the experiment.
 std::vector<std::string> effectiveTaskSettings(const PlannedTrial& trial);
 
+// Everything a prepared trial depends on — the stimulus, the task with its settings, the probe
+// seed and the question — as one text: the key of every cache of prepared trials.
+std::string preparedTrialKey(const PlannedTrial& trial);
+
 }  // namespace tlab::study

@@ -58,23 +58,10 @@ void RenderWorker::loop(std::promise<void>& ready) {
   painter_.reset();
 }
 
-namespace {
-
-// What a prepared trial depends on (StimulusLibrary::prepare): the stimulus, the task with its
-// settings, the probe seed and the question.
-std::string preparedKey(const PlannedTrial& trial) {
-  std::string key = trial.stimulus.text() + " | " + trial.task + " | " + std::to_string(trial.probeSeed) + " | q" +
-                    std::to_string(trial.question) + "/" + std::to_string(trial.questionsInTrial);
-  for (const auto& s : effectiveTaskSettings(trial)) key += " " + s;
-  return key;
-}
-
-}  // namespace
-
 // Prepared trials are kept here too, so that the many session threads of a burst of arrivals
 // (each preparing its whole plan) do not queue on the one GL thread for what is already made.
 PreparedTrial RenderWorker::prepare(const PlannedTrial& trial) {
-  const std::string key = preparedKey(trial);
+  const std::string key = preparedTrialKey(trial);
   {
     std::lock_guard lock(mutex_);
     if (const auto it = prepared_.find(key); it != prepared_.end()) return it->second;

@@ -65,7 +65,7 @@ class RenderWorker : public StimulusSource {
   std::condition_variable wake_;
   std::deque<std::function<void()>> jobs_;
   std::map<std::string, std::string> paths_;  // sha256 → file (guarded by mutex_)
-  std::map<std::string, PreparedTrial> prepared_;  // preparedKey → trial (guarded by mutex_)
+  std::map<std::string, PreparedTrial> prepared_;  // preparedTrialKey → trial (guarded by mutex_)
   bool stopping_ = false;
   std::thread thread_;
 };

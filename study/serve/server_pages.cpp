@@ -1,7 +1,5 @@
 #include "study/serve/server_pages.hpp"
 
-#include <fstream>
-#include <sstream>
 #include <stdexcept>
 
 #include "analysis/number_format.hpp"
@@ -49,14 +47,6 @@ std::string adminPage(const nlohmann::json& status, const std::string& adminToke
   for (const auto& a : status["arrived"]) body += "<tr>" + cell(a["participant"]) + cell(a["session"]) + "</tr>";
   body += "</table>";
   return document("admin", body);
-}
-
-std::string readImageFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace tlab::study

@@ -1,6 +1,6 @@
 #pragma once
 // Small server-made pages: a message page (a link that is wrong, a participant who already
-// finished) and the admin page, with every text HTML-escaped; and reading an image file to send.
+// finished) and the admin page, with every text HTML-escaped.
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +10,5 @@ namespace tlab::study {
 std::string messagePage(const std::string& title, const std::string& text);
 // The admin page for status() (study/serve/study_server_admin.cpp), with drop/extend forms.
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken);
-std::string readImageFile(const std::string& path);
 
 }  // namespace tlab::study

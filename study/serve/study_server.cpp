@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/file_text.hpp"
 #include "study/serve/browser_responder.hpp"
 #include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
@@ -209,8 +210,10 @@ void StudyServer::apiRoutes() {
     if (!s || !s->channel()->mayFetch(sha)) return refuse(res, 404, "no such image for this session");
     const auto path = study_.worker.imagePath(sha);
     if (!path) return refuse(res, 404, "no such image");
+    const auto png = core::readFileText(*path);
+    if (!png) return refuse(res, 500, "cannot read " + *path);
     res.set_header("Cache-Control", "private, max-age=86400, immutable");
-    res.set_content(readImageFile(*path), "image/png");
+    res.set_content(*png, "image/png");
   });
 }
 

@@ -9,6 +9,7 @@
 #include <regex>
 #include <thread>
 
+#include "tests/study/serve_test_client.hpp"
 #include "tests/study/served_study.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
@@ -26,10 +27,7 @@ struct StoredTrial {
 
 // (participant, sequence) → what trials.csv of `tlab export --csv` holds.
 inline std::map<std::pair<std::string, int>, StoredTrial> exportedTrials(const std::filesystem::path& dir) {
-  const auto csvDir = dir / "csv";
-  const CommandResult r = runCommand(commandLine({TLAB_EXE, "export", (dir / "study.db").string(), "--csv", csvDir.string()}));
-  EXPECT_EQ(r.exitCode, 0) << r.err;
-  const auto rows = parseCsv(readText((csvDir / "trials.csv").string()));
+  const auto rows = exportedTable((dir / "study.db").string(), dir, "trials");
   std::map<std::pair<std::string, int>, StoredTrial> out;
   if (rows.empty()) return out;
   std::map<std::string, std::size_t> column;
