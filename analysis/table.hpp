@@ -41,8 +41,9 @@ class Table {
   std::vector<double> numericColumn(std::string_view name) const;
   std::vector<std::string> textColumn(std::string_view name) const;
 
-  // "source:line" of a row, for messages.
+  // "source:line" of a row, for messages; origin(): its line (or row id) alone.
   std::string where(std::size_t row) const;
+  std::size_t origin(std::size_t row) const { return origins_.at(row); }
 
   // The rows whose cell in `column` is `value` (same columns, same origins).
   Table rowsWhere(std::string_view column, std::string_view value) const;

@@ -1,15 +1,26 @@
 // tlab design EXPERIMENT.toml [--db study.db]: the experiment's design — counterbalancing, the
 // participant slot → block order table, trials per participant — and, with --db, who holds which
-// slot (dropped-out slots are re-assigned to the next newcomer).
+// slot (dropped-out slots are re-assigned to the next newcomer). Then, unless --quick, the checks
+// that need the stimuli: every trial of one balanced cycle of slots is prepared headless (into a
+// temporary folder, removed again), so a task setting no probe can meet or a training stimulus
+// shown again in a test fails here with file:line, not at the first participant's start.
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
 #include "analysis/text_table.hpp"
 #include "app/commands.hpp"
+#include "app/scene_options.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "stimuli/sets/progress_bar.hpp"
 #include "study/design/counterbalancing.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/design/session_plan.hpp"
+#include "study/run/plan_checks.hpp"
+#include "study/run/stimulus_library.hpp"
+#include "study/run/text_painter.hpp"
 #include "study/store/open_store.hpp"
 
 namespace tlab::app {
@@ -20,7 +31,47 @@ struct DesignOptions {
   std::string experiment;
   std::string db;
   int participants = 0;
+  bool quick = false;
 };
+
+// A temporary folder, removed with everything in it when this goes out of scope.
+class TemporaryFolder {
+ public:
+  explicit TemporaryFolder(const std::string& name)
+      : path_(std::filesystem::temp_directory_path() / (name + "-" + std::to_string(::getpid()))) {
+    std::filesystem::create_directories(path_);
+  }
+  ~TemporaryFolder() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TemporaryFolder(const TemporaryFolder&) = delete;
+  TemporaryFolder& operator=(const TemporaryFolder&) = delete;
+  std::string path() const { return path_.string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Every trial of one balanced cycle of slots prepared headless: the probes of each task can be
+// found, and no training stimulus is a test stimulus (study/run/plan_checks.hpp).
+void checkStimuliOfPlans(const study::Experiment& e, const study::Design& design, int participants) {
+  const int slots = study::slotsOfOneCycle(design, participants);
+  const std::size_t trials = study::plannedTrialCount(e, design, slots);
+  std::printf("checking the stimuli and probes of %zu planned trials of %d slot%s (rendering headless; --quick skips this) ...\n", trials,
+              slots, slots == 1 ? "" : "s");
+  std::fflush(stdout);
+  const auto context = gpu::createHeadlessContext();
+  study::TextPainter painter;
+  const TemporaryFolder folder("tlab-design-" + e.id);
+  study::StimulusLibrary stimuli(folder.path(), sceneCatalog(), painter);
+  {
+    stimuli::ProgressBar bar("stimuli", trials);
+    study::checkPreparedPlans(e, design, stimuli, slots, [&] { bar.advance(); });
+  }
+  std::printf("every planned trial of %d slot%s prepared: probes found, no training stimulus shown in a test trial\n", slots,
+              slots == 1 ? "" : "s");
+}
 
 std::string blockTasks(const study::SessionPlan& plan, int block) {
   std::string text;
@@ -64,6 +115,7 @@ void run(const DesignOptions& o) {
   for (int slot = 0; slot < participants; ++slot)
     for (const auto& t : study::makeSessionPlan(e, design, slot).trials) total += t.phase == study::Phase::Test ? 1 : 0;
   std::printf("test records in total: %d\n", total);
+  if (!o.quick) checkStimuliOfPlans(e, design, participants);
 
   if (o.db.empty()) return;
   const auto storeOwner = study::openStore(o.db, study::OpenMode::Read);
@@ -88,6 +140,7 @@ void addDesignCommand(CLI::App& app) {
   cmd->add_option("experiment", o->experiment, "experiment file (TOML)")->required();
   cmd->add_option("--db", o->db, "also list who holds which slot in this study database");
   cmd->add_option("--participants", o->participants, "number of slots to list (default: the experiment's participants)");
+  cmd->add_flag("--quick", o->quick, "skip preparing the stimuli of the plans (probe feasibility, training vs. test stimuli)");
   cmd->callback([o] { run(*o); });
 }
 

@@ -2,7 +2,8 @@
 // [--markdown report.md]: an HTML (and optionally Markdown) report with design, descriptives,
 // outlier screening, ANOVA, two-condition/rank tests and plots.
 // tlab report study.db -o report.html: the same for a study database, following the analysis plan
-// of the experiment file stored in it (one report per [[analysis]]: report.html, report-2.html, ...).
+// of the experiment file stored in it: one page with a section per [[analysis]] (and one Markdown
+// file when asked), every file written named on its own line.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -68,11 +69,20 @@ void writeReport(const an::Report& report, const std::string& output, const std:
   }
 }
 
-// "report.html", 2 → "report-2.html"
-std::string numbered(const std::string& path, std::size_t index) {
-  if (path.empty() || index == 0) return path;
-  const std::filesystem::path p(path);
-  return (p.parent_path() / (p.stem().string() + "-" + std::to_string(index + 1) + p.extension().string())).string();
+// Every planned analysis of a study in one Markdown file; figure files get the analysis' number.
+void writeMarkdown(const std::vector<an::Report>& reports, const std::string& markdown) {
+  const std::filesystem::path md(markdown);
+  std::string text;
+  std::size_t figures = 0;
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    const std::string stem = md.stem().string() + (i == 0 ? "" : "-" + std::to_string(i + 1));
+    const an::MarkdownDocument doc = an::renderMarkdown(reports[i], stem);
+    text += (i == 0 ? "" : "\n") + doc.text;
+    for (const auto& figure : doc.figures) writeFile(md.parent_path() / figure.fileName, figure.svg);
+    figures += doc.figures.size();
+  }
+  writeFile(md, text);
+  std::cout << "wrote " << markdown << " and " << figures << " figure files\n";
 }
 
 void runDatabase(const ReportOptions& o) {
@@ -83,12 +93,18 @@ void runDatabase(const ReportOptions& o) {
   const study::StoredExperiment stored = study::storedExperiment(store, "", o.poolVersions);
   const auto analyses = study::analyzeStudy(store, stored);
   if (analyses.empty()) throw an::AnalysisError(o.file + ": the experiment plans no [[analysis]]");
-  for (std::size_t i = 0; i < analyses.size(); ++i) {
-    an::Report report = analyses[i].report;
+  an::ReportPage page;
+  const std::string& id = stored.experiment.title.empty() ? stored.experiment.id : stored.experiment.title;
+  page.title = !o.title.empty() ? o.title : id;
+  for (const auto& analysis : analyses) {
+    an::Report report = analysis.report;
     study::appendStudyRecord(report, store, stored);
-    if (!o.title.empty()) report.title = analyses.size() == 1 ? o.title : o.title + " - " + report.title;
-    writeReport(report, numbered(o.output, i), numbered(o.markdown, i));
+    page.reports.push_back(std::move(report));
   }
+  if (page.reports.size() == 1 && !o.title.empty()) page.reports.front().title = o.title;
+  writeFile(o.output, page.reports.size() == 1 ? an::renderHtml(page.reports.front()) : an::renderHtml(page));
+  std::cout << "wrote " << o.output << " (" << analyses.size() << " planned " << (analyses.size() == 1 ? "analysis" : "analyses") << ")\n";
+  if (!o.markdown.empty()) writeMarkdown(page.reports, o.markdown);
 }
 
 void run(const ReportOptions& o) {

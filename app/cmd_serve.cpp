@@ -12,6 +12,7 @@
 #include "app/scene_options.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/run/stimulus_library.hpp"
+#include "study/run/plan_checks.hpp"
 #include "study/serve/study_preparation.hpp"
 #include "study/serve/study_server.hpp"
 #include "study/store/locked_store.hpp"
@@ -65,7 +66,12 @@ void serve(const ServeCommandOptions& o) {
   study::LockedStore store(study::openStore(o.db));
   study::RenderWorker worker(study::stimulusDirectoryFor(o.db), sceneCatalog(), e.online);
   const study::Design design = study::makeDesign(e);
-  const int slots = o.slots > 0 ? o.slots : int(std::min<std::size_t>(std::size_t(std::max(e.participants, 1)), design.balancedMultiple()));
+  const int slots = o.slots > 0 ? o.slots : study::slotsOfOneCycle(design, e.participants);
+  // One line per phase, also with --quiet (which hides only the bar): preparing can take minutes.
+  std::printf("serve: %s read; store %s open; GL worker on %s\n", o.experiment.c_str(), store.location().c_str(),
+              worker.gpuInfo().renderer.c_str());
+  std::printf("serve: preparing every stimulus of %d slot%s (one balanced cycle) before listening ...\n", slots, slots == 1 ? "" : "s");
+  std::fflush(stdout);
   pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);  // Ctrl-C during the preparation ends tlab as usual
   const study::PreparedStudy prepared = study::prepareStudy(e, worker, slots, !o.quiet);
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);  // before any server thread starts

@@ -1,4 +1,4 @@
-// tlab simulate EXPERIMENT.toml --participants N --db sim.db [--first K] [--resume] [--replicate R]: the study
+// tlab simulate EXPERIMENT.toml --participants N --db sim.db [--size WxH] [--first K] [--resume] [--replicate R]: the study
 // run by simulated observers through the same runner (no window, headless rendering); progress
 // lines per participant (--trials: per committed response), then trials per second. With
 // --replicate R: a power analysis — the study repeated R times, and for each planned test how
@@ -15,6 +15,7 @@
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "study/design/experiment_file.hpp"
+#include "study/design/stimulus_size.hpp"
 #include "study/simulate/observer_calibration.hpp"
 #include "study/simulate/simulated_observer.hpp"
 #include "study/simulate/power_analysis.hpp"
@@ -35,6 +36,7 @@ struct SimulateOptions {
   double pace = 0.0;
   bool trials = false;
   std::string calibrate;
+  std::string size;  // WxH instead of the experiment's [stimulus] size
 };
 
 void printTrial(const study::TrialProgress& p) {
@@ -111,8 +113,16 @@ void runCalibration(const study::Experiment& e, const SimulateOptions& o, int pa
   printCalibration(published, study::calibrateObserver(e.observer, questions, published));
 }
 
-void run(const SimulateOptions& o) {
+// The experiment file, at --size when given (the stored text then says that size).
+study::Experiment readExperiment(const SimulateOptions& o) {
   const study::Experiment e = study::readExperimentFile(o.experiment);
+  if (o.size.empty()) return e;
+  parseSize(o.size);  // "--size: ..." before the file's own check
+  return study::withStimulusSize(e, o.size);
+}
+
+void run(const SimulateOptions& o) {
+  const study::Experiment e = readExperiment(o);
   if (o.participants < 0) throw std::invalid_argument("--participants: must be >= 1");
   const int participants = o.participants > 0 ? o.participants : e.participants;
   if (o.first < 1) throw std::invalid_argument("--first: must be >= 1");
@@ -161,6 +171,8 @@ void addSimulateCommand(CLI::App& app) {
   cmd->add_option("--replicate", o->replicates, "power analysis: repeat the study R times and count significant planned tests");
   cmd->add_option("--pace", o->pace, "real seconds slept per simulated second of response time (default 0: as fast as possible)");
   cmd->add_flag("--trials", o->trials, "print a line for every committed response");
+  cmd->add_option("--size", o->size, "stimulus size WxH instead of the experiment's [stimulus] size (a reduced pilot; the stored "
+                                     "experiment text says the size used)");
   cmd->add_option("--calibrate", o->calibrate,
                   "fit sensitivity, threshold and skill_spread by maximum likelihood to published results: 'carnecky' "
                   "(Table 1) or a CSV file with columns factor,level,n,mean,variance (per-participant proportion correct); "

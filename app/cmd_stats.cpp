@@ -11,6 +11,7 @@
 #include "analysis/csv_reader.hpp"
 #include "analysis/report_tables.hpp"
 #include "analysis/result_json.hpp"
+#include "analysis/row_filter.hpp"
 #include "analysis/table_tests.hpp"
 #include "app/commands.hpp"
 
@@ -33,17 +34,50 @@ struct StatsOptions {
   double confidence = 0.95;
   std::string ssType = "2";
   bool json = false;
+  std::vector<std::string> where;  // COLUMN=V1,V2 (every filter must hold)
 };
 
 void addCommonOptions(CLI::App* cmd, StatsOptions& o) {
   cmd->add_option("file", o.file, "Long-format CSV file (header row)")->required();
   cmd->add_option("--dv", o.dv, "Column of the dependent variable")->required();
   cmd->add_flag("--json", o.json, "Print JSON instead of a table");
+  cmd->add_option("--where", o.where,
+                  "Keep only the rows whose COLUMN is one of the values: COLUMN=V1,V2 (repeatable; all must hold)")
+      ->allow_extra_args(false);
+}
+
+// The rows a test reads: the CSV file, filtered by --where, without the rows whose dependent
+// variable is missing (an empty cell or NA, as R's na.omit drops them). What was dropped is said
+// on a note line (stdout) or in the JSON's "input_rows" object.
+struct StatsInput {
+  an::Table table;
+  nlohmann::json rows;
+};
+
+StatsInput readInput(const StatsOptions& o) {
+  const an::Table all = an::readCsvFile(o.file);
+  std::vector<an::RowFilter> filters;
+  for (const auto& w : o.where) filters.push_back(an::parseRowFilter(w));
+  const an::Table kept = an::rowsMatching(all, filters);
+  if (kept.rowCount() == 0 && !filters.empty())
+    throw an::AnalysisError(o.file + ": no row passes --where " + o.where.front() + (o.where.size() > 1 ? " ..." : ""));
+  an::WithoutMissing complete = an::dropMissing(kept, o.dv);
+  nlohmann::json rows = {{"read", all.rowCount()}, {"kept_by_where", kept.rowCount()},
+                         {"dropped_missing_dv", complete.dropped}, {"used", complete.table.rowCount()}};
+  if (!o.json && filters.size() > 0)
+    std::cout << "rows: " << kept.rowCount() << " of " << all.rowCount() << " kept by --where\n";
+  if (!o.json && complete.dropped > 0)
+    std::cout << "note: " << complete.dropped << " row" << (complete.dropped == 1 ? "" : "s") << " with a missing '" << o.dv
+              << "' (empty or NA) dropped, as R's na.omit would\n";
+  return {std::move(complete.table), std::move(rows)};
+}
+
+void printJson(nlohmann::json j, const StatsInput& input) {
+  j["input_rows"] = input.rows;
+  std::cout << j.dump(2) << "\n";
 }
 
 void print(const an::TextTable& table) { std::cout << an::renderPlainText(table); }
-
-void printJson(const nlohmann::json& j) { std::cout << j.dump(2) << "\n"; }
 
 std::string single(const std::vector<std::string>& columns, const char* option) {
   if (columns.size() > 1) throw an::AnalysisError(std::string(option) + " takes one column for this test");
@@ -64,18 +98,19 @@ void runTTest(const StatsOptions& o) {
     throw an::AnalysisError("--within needs --subject (the column naming the participant)");
   if ((o.student || o.welch) && request.between.empty())
     throw an::AnalysisError("--student/--welch apply to the two-sample test (--between) only");
-  const an::TTestResult r = an::tTestOnTable(an::readCsvFile(o.file), request);
-  if (o.json) return printJson(an::toJson(r));
+  const StatsInput input = readInput(o);
+  const an::TTestResult r = an::tTestOnTable(input.table, request);
+  if (o.json) return printJson(an::toJson(r), input);
   print(an::tTestTable(r));
 }
 
 void runAnova(const StatsOptions& o) {
   if (!o.within.empty() && o.subject.empty())
     throw an::AnalysisError("--within needs --subject (the column naming the participant)");
-  const an::Table table = an::readCsvFile(o.file);
-  const an::AnovaDesign design = an::makeAnovaDesign(table, o.dv, o.between, o.within, o.subject);
+  const StatsInput input = readInput(o);
+  const an::AnovaDesign design = an::makeAnovaDesign(input.table, o.dv, o.between, o.within, o.subject);
   const an::AnovaResult r = an::anova(design, an::parseSumOfSquaresType(o.ssType));
-  if (o.json) return printJson(an::toJson(r));
+  if (o.json) return printJson(an::toJson(r), input);
   print(an::anovaTable(r));
   const an::TextTable sphericity = an::sphericityTable(r);
   if (!sphericity.rows.empty()) {
@@ -87,23 +122,26 @@ void runAnova(const StatsOptions& o) {
 }
 
 void runFriedman(const StatsOptions& o) {
+  const StatsInput input = readInput(o);
   const an::FriedmanResult r =
-      an::friedmanOnTable(an::readCsvFile(o.file), o.dv, single(o.within, "--within"), o.subject);
-  if (o.json) return printJson(an::toJson(r));
+      an::friedmanOnTable(input.table, o.dv, single(o.within, "--within"), o.subject);
+  if (o.json) return printJson(an::toJson(r), input);
   print(an::friedmanTable(r));
 }
 
 void runWilcoxon(const StatsOptions& o) {
+  const StatsInput input = readInput(o);
   const an::WilcoxonSignedRankResult r = an::wilcoxonOnTable(
-      an::readCsvFile(o.file), o.dv, single(o.within, "--within"), o.subject, an::parseAlternative(o.alternative));
-  if (o.json) return printJson(an::toJson(r));
+      input.table, o.dv, single(o.within, "--within"), o.subject, an::parseAlternative(o.alternative));
+  if (o.json) return printJson(an::toJson(r), input);
   print(an::wilcoxonTable(r));
 }
 
 void runMannWhitney(const StatsOptions& o) {
-  const an::MannWhitneyResult r = an::mannWhitneyOnTable(an::readCsvFile(o.file), o.dv, single(o.between, "--between"),
+  const StatsInput input = readInput(o);
+  const an::MannWhitneyResult r = an::mannWhitneyOnTable(input.table, o.dv, single(o.between, "--between"),
                                                          an::parseAlternative(o.alternative));
-  if (o.json) return printJson(an::toJson(r));
+  if (o.json) return printJson(an::toJson(r), input);
   print(an::mannWhitneyTable(r));
 }
 

@@ -44,17 +44,21 @@ render::Camera resolveCamera(const render::Scene& scene, const TaskOptions& o, i
   return clipGiven ? c : render::fitClipPlanes(c, sphere);
 }
 
-std::vector<tasks::Question> probeQuestions(const TaskOptions& o, int count, const tasks::Task& task, render::Scene& scene) {
+// The questions, and the camera they were probed with (the scene's own or --camera's).
+std::vector<tasks::Question> probeQuestions(const TaskOptions& o, int count, const tasks::Task& task, render::Scene& scene,
+                                            render::Camera& camera) {
   const auto [width, height] = parseSize(o.size);
   scene = render::loadScene(o.scene, sceneCatalog());
   render::requireTriangles(scene, o.scene);
-  const tasks::ProbeRequest request{scene, resolveCamera(scene, o, width, height), width, height, count, o.seed,
-                                    task.settings(o.settings)};
+  camera = resolveCamera(scene, o, width, height);
+  const tasks::ProbeRequest request{scene, camera, width, height, count, o.seed, task.settings(o.settings)};
   return task.probe(request);
 }
 
-nlohmann::json header(const TaskOptions& o) {
-  return {{"scene", o.scene}, {"task", o.task}, {"seed", o.seed}, {"size", o.size}, {"camera", o.camera}, {"settings", o.settings}};
+// "camera" is the camera used, in --camera's form (pass it back to reproduce the view exactly).
+nlohmann::json header(const TaskOptions& o, const render::Camera& camera) {
+  return {{"scene", o.scene}, {"task", o.task}, {"seed", o.seed}, {"size", o.size}, {"camera", render::cameraText(camera)},
+          {"settings", o.settings}};
 }
 
 void printQuestion(const tasks::Question& q) {
@@ -69,9 +73,10 @@ void printQuestion(const tasks::Question& q) {
 void runProbe(const TaskOptions& o) {
   const auto task = tasks::makeTask(o.task);
   render::Scene scene;
-  const auto questions = probeQuestions(o, o.count, *task, scene);
+  render::Camera camera;
+  const auto questions = probeQuestions(o, o.count, *task, scene, camera);
   if (o.json) {
-    nlohmann::json j = header(o);
+    nlohmann::json j = header(o, camera);
     j["questions"] = nlohmann::json::array();
     for (const auto& q : questions) j["questions"].push_back(tasks::toJson(q));
     std::cout << j.dump(2) << "\n";
@@ -85,14 +90,15 @@ void runCheck(const TaskOptions& o) {
   if (o.question < 1) throw std::invalid_argument("--question: must be >= 1");
   if (o.missing == !o.answer.empty()) throw std::invalid_argument("give exactly one of --answer TEXT and --missing");
   render::Scene scene;
-  const auto questions = probeQuestions(o, o.question, *task, scene);
+  render::Camera camera;
+  const auto questions = probeQuestions(o, o.question, *task, scene, camera);
   const tasks::Question& q = questions.back();
   tasks::Answer answer;
   if (!o.missing) answer.text = o.answer;
   if (o.seconds >= 0.0) answer.seconds = o.seconds;
   const tasks::Score s = task->score(q, answer);
   if (o.json) {
-    nlohmann::json j = header(o);
+    nlohmann::json j = header(o, camera);
     j["question"] = tasks::toJson(q);
     j["score"] = tasks::toJson(s);
     std::cout << j.dump(2) << "\n";

@@ -2,9 +2,40 @@
 // line on stderr with exit code 1.
 #include <exception>
 #include <iostream>
+#include <string>
 
 #include "app/commands.hpp"
 #include "app/gl_option.hpp"
+
+namespace {
+
+// The deepest subcommand the command line chose ("tlab stats" for `tlab stats glmm`).
+const CLI::App* chosen(const CLI::App& app) {
+  const CLI::App* at = &app;
+  for (auto subs = at->get_subcommands(); !subs.empty(); subs = at->get_subcommands()) at = subs.front();
+  return at;
+}
+
+// When a command that needs a subcommand got a word that is none of them: the one line that
+// names the word and lists the known ones (CLI11 alone says "A subcommand is required").
+std::string unknownSubcommand(const CLI::App& app) {
+  const CLI::App* at = chosen(app);
+  const auto subcommands = at->get_subcommands([](const CLI::App* s) { return !s->get_name().empty(); });
+  if (subcommands.empty()) return {};
+  std::string word;
+  for (const CLI::App* holder : {at, &app})
+    for (const auto& r : holder->remaining())
+      if (word.empty() && !r.empty() && r.front() != '-') word = r;
+  std::string known;
+  for (const CLI::App* s : subcommands)
+    if (!s->get_group().empty()) known += (known.empty() ? "" : ", ") + s->get_name();
+  std::string path;
+  for (const CLI::App* p = at; p && p != &app; p = p->get_parent()) path = " " + p->get_name() + path;
+  path = "tlab" + path;
+  return (word.empty() ? "'" + path + "' needs a command" : "unknown command '" + word + "' for '" + path + "'") + " (known: " + known + ")";
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"tlab - Transparency Lab: illustrative transparency rendering and perceptual studies"};
@@ -40,7 +71,8 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    std::cerr << "tlab: error: " << e.what() << " (see --help)\n";
+    const std::string unknown = dynamic_cast<const CLI::RequiredError*>(&e) ? unknownSubcommand(app) : "";
+    std::cerr << "tlab: error: " << (unknown.empty() ? std::string(e.what()) : unknown) << " (see --help)\n";
     return 1;
   } catch (const std::exception& e) {
     std::cerr << "tlab: error: " << e.what() << "\n";

@@ -1,5 +1,6 @@
 #include "renderer/scene/camera.hpp"
 
+#include <charconv>
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -94,6 +95,23 @@ Camera parseCamera(const std::string& text, const Camera& base) {
   if (!(c.nearPlane > 0.0f && c.farPlane > c.nearPlane))
     throw std::invalid_argument("--camera: need 0 < near < far");
   return c;
+}
+
+namespace {
+
+std::string shortest(float v) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, v).ptr;
+  return std::string(buffer, end);
+}
+
+std::string vec3Text(const glm::vec3& v) { return shortest(v.x) + "," + shortest(v.y) + "," + shortest(v.z); }
+
+}  // namespace
+
+std::string cameraText(const Camera& c) {
+  return "eye=" + vec3Text(c.eye) + " target=" + vec3Text(c.target) + " up=" + vec3Text(c.up) + " fovy=" + shortest(c.fovyDegrees) +
+         " near=" + shortest(c.nearPlane) + " far=" + shortest(c.farPlane);
 }
 
 }  // namespace tlab::render

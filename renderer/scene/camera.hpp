@@ -35,4 +35,8 @@ Camera orbit(const Camera& camera, float azimuthDegrees, float elevationDegrees)
 // be given in any order and any subset. Throws std::invalid_argument naming the bad field.
 Camera parseCamera(const std::string& text, const Camera& base);
 
+// The camera in parseCamera's form, every field given, each number with the shortest text that
+// reads back to the same float: parseCamera(cameraText(c), any) == c.
+std::string cameraText(const Camera& camera);
+
 }  // namespace tlab::render

@@ -1,5 +1,6 @@
 #include "stimuli/sets/stimulus_set_file.hpp"
 #include "core/file_text.hpp"
+#include "core/toml_syntax_message.hpp"
 
 #include <fstream>
 #include <regex>
@@ -181,7 +182,7 @@ StimulusSetSpec parseStimulusSet(const std::string& text, const std::string& fil
   try {
     root = toml::parse(text, fileName);
   } catch (const toml::parse_error& e) {
-    throw StimulusSetError(fileName + ":" + std::to_string(e.source().begin.line) + ": " + std::string(e.description()));
+    throw StimulusSetError(fileName + ":" + core::tomlSyntaxMessage(text, e.source().begin.line, e.description()));
   }
   const TableReader top(root, fileName, "");
   top.allowOnly({"set", "scene"});

@@ -63,6 +63,8 @@ struct TaskSpec {
   // (ABSTRACT) or walks (WALKTHROUGH); simulated observers see the start view.
   Navigation navigation = Navigation::None;
   std::string navigationSource;  // "file:line" of the navigation field (online runs refuse walking)
+  std::string settingsSource;    // "file:line: tasks[N].settings" (or the task's table): probe failures name it
+  std::string trainingSource;    // "file:line: tasks[N].training_trials": a training stimulus shown in a test trial
 };
 
 // One question of a form: a participant-information field or a questionnaire item.

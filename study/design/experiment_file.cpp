@@ -3,6 +3,7 @@
 // session_flow_file.cpp; the renderer's checks of every stimulus: stimulus_checks.cpp.
 #include "study/design/experiment_file.hpp"
 #include "core/file_text.hpp"
+#include "core/toml_syntax_message.hpp"
 
 #include <algorithm>
 #include <fstream>
@@ -117,6 +118,8 @@ std::vector<TaskSpec> readTasks(const FieldReader& r, const toml::table& root, c
     s.trials = int(r.integer(t, "trials", where, 1, 1));
     s.questions = int(r.integer(t, "questions", where, 1, 1));
     s.trainingTrials = int(r.integer(t, "training_trials", where, 0, 0));
+    s.settingsSource = t.get("settings") ? r.at(t.get("settings"), where + ".settings") : r.at(&t, where);
+    s.trainingSource = r.at(t.get("training_trials") ? t.get("training_trials") : &t, where + ".training_trials");
     s.timeLimitSeconds = r.number(t, "time_limit", where, 120.0, 0.5, 86400.0);
     if (t.get("trial_time_limit")) s.trialTimeLimitSeconds = r.number(t, "trial_time_limit", where, 120.0, 0.5, 86400.0);
     s.instructions = r.string(t, "instructions", where, false);
@@ -234,7 +237,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   try {
     root = toml::parse(text, path);
   } catch (const toml::parse_error& error) {
-    throw ExperimentFileError(path + ":" + std::to_string(error.source().begin.line) + ": " + std::string(error.description()));
+    throw ExperimentFileError(path + ":" + core::tomlSyntaxMessage(text, error.source().begin.line, error.description()));
   }
   r.checkKeys(root, "", {"id", "title", "participant_title", "seed", "participants", "counterbalancing", "block_tasks", "welcome",
                          "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "online", "stimulus", "factors", "tasks",

@@ -1,12 +1,11 @@
 // TrialRunner's enrolment: who is running (checkParticipant), a newcomer's plan prepared and
 // stored before anything is shown, the welcome and consent before a newcomer is enrolled, and
 // the stored plan of a returning participant. The session itself runs in trial_runner.cpp.
-#include <map>
-
 #include <nlohmann/json.hpp>
 
 #include "study/run/trial_runner.hpp"
 #include "study/design/session_plan.hpp"
+#include "study/run/plan_checks.hpp"
 #include "tasks/question_json.hpp"
 
 namespace tlab::study {
@@ -59,17 +58,11 @@ void checkParticipant(Store& store, const Experiment& experiment, const RunOptio
 }
 
 // Every stimulus of the plan, and the check that no training stimulus is shown again in a test
-// trial (a participant would learn its answer).
+// trial (a participant would learn its answer; `tlab design` checks the same before any start).
 std::vector<TrialRecord> TrialRunner::preparePlan(const SessionPlan& plan) {
   std::vector<TrialRecord> records;
   for (const auto& p : plan.trials) records.push_back(makeTrialRecord(p, stimuli_.prepare(p)));
-  std::map<std::string, int> test;
-  for (const auto& r : records)
-    if (r.phase == "test") test.emplace(r.stimulusSha256, r.sequence);
-  for (const auto& r : records)
-    if (r.phase == "training" && test.count(r.stimulusSha256))
-      throw StoreError("training trial " + std::to_string(r.sequence) + " would show the stimulus of test trial " +
-                       std::to_string(test.at(r.stimulusSha256)) + ": give training other scenes ({trial} in the scene) or more questions");
+  if (const auto clash = trainingShownInTest(records)) throw StoreError(clash->message());
   return records;
 }
 

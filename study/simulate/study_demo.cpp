@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
 #include <set>
 #include <stdexcept>
 
@@ -17,6 +16,7 @@
 #include "study/design/experiment_file.hpp"
 #include "study/design/session_plan.hpp"
 #include "study/store/open_store.hpp"
+#include "study/design/stimulus_size.hpp"
 #include "study/run/stimulus_library.hpp"
 #include "study/simulate/study_simulation.hpp"
 #include "study/store/study_table.hpp"
@@ -25,12 +25,6 @@
 namespace tlab::study {
 
 namespace fs = std::filesystem;
-
-std::string withStimulusSize(const std::string& text, const std::string& size) {
-  static const std::regex sizeLine(R"((\[stimulus\][^\[]*?\n)size\s*=\s*"[^"]*")");
-  if (!std::regex_search(text, sizeLine)) throw std::invalid_argument("the experiment file has no [stimulus] size to replace");
-  return std::regex_replace(text, sizeLine, "$1size = \"" + size + "\"", std::regex_constants::format_first_only);
-}
 
 namespace {
 

@@ -38,7 +38,4 @@ struct DemoResult {
 // Throws when DIR already holds a study database (a demo never overwrites logged data).
 DemoResult runDemo(const DemoOptions& options, const std::vector<render::BuiltinSceneSpec>& catalog);
 
-// The experiment text with its [stimulus] size replaced by `size` ("WxH"); throws if it has none.
-std::string withStimulusSize(const std::string& experimentText, const std::string& size);
-
 }  // namespace tlab::study

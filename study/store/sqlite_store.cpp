@@ -6,6 +6,7 @@
 #include <chrono>
 #include <csignal>
 #include <ctime>
+#include <exception>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -108,9 +109,10 @@ std::string utcTimestamp() {
   return buf;
 }
 
-SqliteStore::SqliteStore(const std::string& path, OpenMode mode) : path_(path) {
+SqliteStore::SqliteStore(const std::string& path, OpenMode mode) : path_(path), unwindingAtOpen_(std::uncaught_exceptions()) {
   std::error_code ec;  // an existing file (or folder) is checked before SQLite touches it; a new or empty one is created
   const bool existing = std::filesystem::is_directory(path, ec) || (std::filesystem::exists(path, ec) && std::filesystem::file_size(path, ec) > 0);
+  created_ = mode != OpenMode::Read && !std::filesystem::exists(path, ec);
   if (mode == OpenMode::Write || (mode == OpenMode::Create && existing)) requireSqliteFile(path);
   db_ = std::make_unique<Database>(path, mode);
   // Everything before the first write only reads: a foreign, damaged or newer file stays untouched.
@@ -136,6 +138,20 @@ SqliteStore::SqliteStore(const std::string& path, OpenMode mode) : path_(path) {
   db_->execute("PRAGMA synchronous=FULL");
   db_->execute("PRAGMA foreign_keys=ON");
   migrateSchema(*db_);
+}
+
+SqliteStore::~SqliteStore() {
+  if (!created_ || std::uncaught_exceptions() <= unwindingAtOpen_ || !db_) return;
+  try {
+    if (!experimentIds().empty()) return;
+    db_.reset();
+    for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
+      std::error_code ec;
+      std::filesystem::remove(path_ + suffix, ec);
+    }
+  } catch (...) {
+    // a store that cannot be read now keeps its file
+  }
 }
 
 int SqliteStore::requireStudyDatabase() {

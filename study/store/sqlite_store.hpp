@@ -21,6 +21,12 @@ class SqliteStore : public Store {
   // then switches to WAL and migrates an older schema. Read: never writes a byte (see OpenMode);
   // an older schema is copied into memory and migrated there.
   explicit SqliteStore(const std::string& path, OpenMode mode = OpenMode::Create);
+  // A file this store created is removed again when the store is destroyed by an exception (a
+  // start that failed) while it holds no experiment: a failed start leaves no empty database
+  // behind (a rerun would refuse it as "already holds a study"). Anything stored is kept.
+  ~SqliteStore() override;
+  SqliteStore(const SqliteStore&) = delete;
+  SqliteStore& operator=(const SqliteStore&) = delete;
 
   const std::string& location() const override { return path_; }
 
@@ -68,6 +74,8 @@ class SqliteStore : public Store {
   void checkIntegrity();
   ExperimentVersion ensureVersion(const Experiment& experiment, const std::string& tlabVersion);
   std::string path_;
+  bool created_ = false;        // the file did not exist before this store opened it for writing
+  int unwindingAtOpen_ = 0;     // std::uncaught_exceptions() when opened
   std::unique_ptr<Database> db_;
   int responses_ = 0;  // response transactions of this process (fault points)
 };

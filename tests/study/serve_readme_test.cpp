@@ -49,6 +49,8 @@ TEST(ServeReadme, TheOnlineStepsWorkAsWritten) {
   ServedStudy server(example("online.toml"), url, dir);  // step 2, on a free loopback port
   std::smatch link;
   const std::string printed = server.stdoutText();
+  // --quiet hides the bar, not the phases: a line before the minutes of preparation.
+  EXPECT_NE(printed.find("serve: preparing every stimulus of"), std::string::npos) << printed;
   ASSERT_TRUE(std::regex_search(printed, link, std::regex("for Prolific: +http://127\\.0\\.0\\.1:[0-9]+/s/([^?]+)\\?(\\S+)"))) << printed;
   std::string query = link[2];  // step 3: a pilot takes the Prolific link
   query = std::regex_replace(query, std::regex("\\{\\{%PROLIFIC_PID%\\}\\}"), "pilot-1");

@@ -25,16 +25,19 @@ void expectOneLineError(const CommandResult& r, const std::string& part) {
 
 }  // namespace
 
+// The tables alone (--quick): the stimulus and plan checks of the examples run in
+// ShippedExample.DesignsAndSimulates.
 TEST(StudyCli, DesignPrintsTheAssignmentTables) {
-  const auto c = runCommand(kTlab + " design " + example("carnecky2013.toml"));
+  const auto c = runCommand(kTlab + " design --quick " + example("carnecky2013.toml"));
   ASSERT_EQ(c.exitCode, 0) << c.err;
   EXPECT_NE(c.out.find("counterbalancing graeco-latin: 3 order rows"), std::string::npos) << c.out;
   EXPECT_NE(c.out.find("participants 36: balanced"), std::string::npos);
   EXPECT_NE(c.out.find("method=smart, scene=toroid [nearest-point]"), std::string::npos);
-  const auto e = runCommand(kTlab + " design " + example("elmqvist.toml"));
+  const auto e = runCommand(kTlab + " design --quick " + example("elmqvist.toml"));
   ASSERT_EQ(e.exitCode, 0) << e.err;
   EXPECT_NE(e.out.find("test records in total: 384"), std::string::npos) << e.out;
-  const auto unbalanced = runCommand(kTlab + " design " + example("elmqvist.toml") + " --participants 6");
+  const auto unbalanced = runCommand(kTlab + " design --quick " + example("elmqvist.toml") + " --participants 6");
+  EXPECT_EQ(unbalanced.out.find("checking the stimuli"), std::string::npos) << "--quick skips the rendering";
   EXPECT_NE(unbalanced.out.find("NOT balanced"), std::string::npos);
 }
 

@@ -8,6 +8,7 @@
 #include "study/design/counterbalancing.hpp"
 #include "study/design/example_experiments.hpp"
 #include "study/design/experiment_file.hpp"
+#include "study/design/stimulus_size.hpp"
 
 namespace tlab::study {
 namespace {
@@ -29,7 +30,14 @@ TEST(StudyDemo, ReducedSizeReplacesOnlyTheStimulusSize) {
   EXPECT_NE(original.stimulus.width, 240);
   EXPECT_EQ(reduced.tasks.size(), original.tasks.size());
   EXPECT_EQ(reduced.participants, original.participants);
-  EXPECT_THROW(withStimulusSize("id = \"x\"\n", "240x200"), std::invalid_argument);
+}
+
+TEST(StudyDemo, AStimulusSizeIsAddedWhereTheFileHasNone) {
+  EXPECT_EQ(withStimulusSize("id = \"x\"\n", "240x200"), "id = \"x\"\n\n[stimulus]\nsize = \"240x200\"\n");
+  EXPECT_EQ(withStimulusSize("id = \"x\"\n[stimulus]\nstyle = \"smart\"\n[[tasks]]\nsize = 3\n", "32x32"),
+            "id = \"x\"\n[stimulus]\nsize = \"32x32\"\nstyle = \"smart\"\n[[tasks]]\nsize = 3\n");
+  EXPECT_EQ(withStimulusSize("[stimulus]\nscene = \"builtin:sphere\"\n  size = \"64x64\"  \n", "32x48"),
+            "[stimulus]\nscene = \"builtin:sphere\"\nsize = \"32x48\"\n");
 }
 
 TEST(StudyDemo, ElmqvistTasksAreInteractive) {
