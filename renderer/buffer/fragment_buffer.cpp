@@ -102,6 +102,7 @@ void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene
   glUniform1ui(program.uniform("uCapacity"), static_cast<GLuint>(capacity_));
   glUniform1ui(program.uniform("uPrimitiveBase"), 0u);
   glUniform1ui(program.uniform("uSlots"), slotsUsed_);
+  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   endFragmentCapture(scene);
 }
 
@@ -201,7 +202,6 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
     const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
     program.use();
     glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
-    glUniform1ui(program.uniform("uSlots"), slotsUsed_);
     gpu::dispatchLinear(pixels());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   });

@@ -3,7 +3,7 @@
 // block [pixelHead, pixelHead + pixelCount) of the sorted buffer (fragData2). Ties in depth are
 // broken by the global triangle index, so the order never depends on thread scheduling.
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
-// TLAB_SLOTS: they sit in the pixel's uSlots slots (buffer/fill_slots.frag), at pixel * uSlots.
+// TLAB_SLOTS: they sit in uSlots slots (buffer/fill_slots.frag): the i-th at i * uPixels + pixel.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
@@ -16,7 +16,6 @@ layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer Sorted { uint sorte
 // the keys compare as integers, and each pixel's keys sit together in memory.
 layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
 uniform uint uPixels;
-uniform uint uSlots;
 
 bool before(uvec2 a, uvec2 b) {
   if (a.x != b.x) return a.x < b.x;
@@ -38,7 +37,7 @@ void main() {
     f = listNext[f];
   }
 #elif defined(TLAB_SLOTS)
-  for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(pixel * uSlots + i);
+  for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(i * uPixels + pixel);
 #else
   for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(base + i);
 #endif
