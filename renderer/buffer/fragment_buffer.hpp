@@ -5,9 +5,9 @@
 // Two ways to fill it:
 //  - CountScatter: a count pass (per-pixel atomics only) → prefix sum → a scatter pass writing
 //    each fragment straight into its pixel's block. The pool is sized from the exact count.
-//    When the largest list of the last frame fits a per-pixel slot block within the memory budget,
-//    the count pass also stores each pixel's first K records in its slots (one rasterization
-//    instead of two); a pixel with more than K fragments makes that frame fall back to the
+//    When K slots per pixel, K the longest list seen so far, fit the memory budget, the count
+//    pass also stores each pixel's first K records in slots (buffer/fill_slots.frag: one
+//    rasterization instead of two); a pixel with more than K fragments makes that frame fall back to the
 //    scatter pass, which the exact counts already prepared (issue #29). The sorted buffer is the
 //    same either way.
 //  - LinkedList: the paper's Alg. 1 (a global counter and per-pixel linked lists); when the pool
