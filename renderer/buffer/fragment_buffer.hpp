@@ -7,9 +7,9 @@
 //    each fragment straight into its pixel's block. The pool is sized from the exact count.
 //    When K slots per pixel, K the longest list seen so far, fit the memory budget, the count
 //    pass also stores each pixel's first K records in slots (buffer/fill_slots.frag: one
-//    rasterization instead of two); a pixel with more than K fragments makes that frame fall back to the
-//    scatter pass, which the exact counts already prepared (issue #29). The sorted buffer is the
-//    same either way.
+//    rasterization instead of two); a pixel with more than K fragments makes that frame fall
+//    back to the scatter pass, which the exact counts already prepared (issue #29). The sorted
+//    buffer is the same either way.
 //  - LinkedList: the paper's Alg. 1 (a global counter and per-pixel linked lists); when the pool
 //    overflows it grows to the required size and the scene is re-rendered (Sec. 4.2).
 // Measured on llvmpipe (`tlab bench render --fill`), CountScatter is the faster and the default.
