@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/bench_floor.hpp"
 #include "app/bench_scene.hpp"
 #include "app/commands.hpp"
 #include "bench/measure/render_sweep.hpp"
@@ -177,6 +178,7 @@ void addBenchCommand(CLI::App& app) {
   addPeelBench(*bench);
   addDynamicBench(*bench);
   addBucketBench(*bench);
+  addFloorBench(*bench);
   addIntegrateBench(*bench);
 }
 

@@ -1,68 +1,36 @@
 #!/usr/bin/env python3
-"""tlab's exact `constant` style against VTK's order-independent transparency on the same glTF
-mesh, view and image size, in one run on one GL (issue #19: the peer a visualization user picks).
+"""tlab's exact `constant` style against VTK's order-independent transparency on the same mesh,
+view and image size, in one run on one GL (issues #19, #29: the peer a visualization user picks).
 
 Run by hand, not in CI (it times things). Needs Debian's python3-vtk9 and an X display for VTK's
 render window (Debian's VTK has no headless EGL window), e.g.:
 
-    xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 bench/vtk_compare.py [--mesh FILE.gltf] [--size 512]
+    xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 bench/vtk_compare.py \
+        [--mesh FILE.gltf|FILE.off] [--camera "eye=... target=... up=... fovy=..."] [--size 512] [--rounds 3]
 
 (Debian's python3, where python3-vtk9 installs the vtk module.)
 
-Without --mesh it writes a torus of --triangles triangles as glTF (positions, normals, indices) so
-both programs read the same file. The camera is the same eye/target/up/fovy for both; every layer
-has the same opacity (tlab: constant alpha; VTK: actor opacity). Prints per-frame ms (median over
---frames after a warm-up) for tlab constant, VTK dual depth peeling and VTK weighted-average OIT,
-and the ratio tlab / VTK dual peeling."""
+Any glTF or OFF mesh (bench/bench_meshes.py says where public ones come from; an OFF file is
+converted to glTF first, so both programs read the same file); without --mesh, a torus of
+--triangles triangles. The camera is the same eye/target/up/fovy for both; without --camera it is
+fitted to the mesh's bounding sphere as tlab fits it (from +z, or --view-from X,Y,Z). Every layer
+has the same opacity (tlab: constant alpha; VTK: actor opacity). The two programs are timed in
+alternation, --rounds times (the machine may be shared: each side's best round counts), each round
+the median of --frames frames after a warm-up: tlab constant, VTK dual depth peeling (exact:
+unlimited peels, occlusion ratio 0) and VTK weighted-average OIT. Prints every round, the best of
+each, the ratio tlab / VTK dual peeling, and the load average."""
 import argparse
-import base64
 import json
 import math
 import os
 import statistics
-import struct
 import subprocess
 import sys
 import tempfile
 import time
 
-
-def torus_gltf(path, triangles, major=1.0, minor=0.4):
-    """A torus as a glTF 2.0 file with an embedded buffer: u x v quads, two triangles each."""
-    v = max(3, int(math.sqrt(triangles / 2 / 2.5)))
-    u = max(3, int(triangles / 2 / v))
-    pos, nrm, idx = [], [], []
-    for i in range(u):
-        a = 2 * math.pi * i / u
-        for j in range(v):
-            b = 2 * math.pi * j / v
-            c = (math.cos(b), math.sin(b))
-            pos += [(major + minor * c[0]) * math.cos(a), minor * c[1], (major + minor * c[0]) * math.sin(a)]
-            nrm += [c[0] * math.cos(a), c[1], c[0] * math.sin(a)]
-    for i in range(u):
-        for j in range(v):
-            p0, p1 = i * v + j, ((i + 1) % u) * v + j
-            p2, p3 = ((i + 1) % u) * v + (j + 1) % v, i * v + (j + 1) % v
-            idx += [p0, p2, p1, p0, p3, p2]
-    blob = struct.pack(f"<{len(pos)}f", *pos) + struct.pack(f"<{len(nrm)}f", *nrm) + struct.pack(f"<{len(idx)}I", *idx)
-    n, fb = len(pos) // 3, len(pos) * 4
-    doc = {
-        "asset": {"version": "2.0", "generator": "tlab bench/vtk_compare.py"},
-        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0}],
-        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "NORMAL": 1}, "indices": 2}]}],
-        "buffers": [{"byteLength": len(blob), "uri": "data:application/octet-stream;base64," + base64.b64encode(blob).decode()}],
-        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": fb, "target": 34962},
-                        {"buffer": 0, "byteOffset": fb, "byteLength": fb, "target": 34962},
-                        {"buffer": 0, "byteOffset": 2 * fb, "byteLength": len(idx) * 4, "target": 34963}],
-        "accessors": [
-            {"bufferView": 0, "componentType": 5126, "count": n, "type": "VEC3",
-             "min": [min(pos[k::3]) for k in range(3)], "max": [max(pos[k::3]) for k in range(3)]},
-            {"bufferView": 1, "componentType": 5126, "count": n, "type": "VEC3"},
-            {"bufferView": 2, "componentType": 5125, "count": len(idx), "type": "SCALAR"}],
-    }
-    with open(path, "w") as f:
-        json.dump(doc, f)
-    return len(idx) // 3
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import bench_meshes  # noqa: E402
 
 
 def vtk_frame_ms(mesh, size, camera, opacity, frames, mode, png=None):
@@ -120,48 +88,114 @@ def vtk_frame_ms(mesh, size, camera, opacity, frames, mode, png=None):
     return statistics.median(times), renderer
 
 
+def fitted_camera(mesh_positions, fovy=40.0, direction=(0.0, 0.0, 1.0)):
+    """renderer/scene/camera.cpp fitCamera: the bounding box's centre, radius to the farthest vertex,
+    a 5 % margin, seen from `direction`."""
+    lo = [min(p[k] for p in mesh_positions) for k in range(3)]
+    hi = [max(p[k] for p in mesh_positions) for k in range(3)]
+    c = [(lo[k] + hi[k]) / 2 for k in range(3)]
+    r = max(math.dist(c, p) for p in mesh_positions)
+    d = math.hypot(*direction)
+    distance = 1.05 * r / math.sin(math.radians(fovy) / 2)
+    eye = [c[k] + direction[k] / d * distance for k in range(3)]
+    up = "0,0,-1" if abs(direction[1] / d) > 0.99 else "0,1,0"
+    fmt = lambda v: ",".join(f"{x:.6g}" for x in v)
+    return f"eye={fmt(eye)} target={fmt(c)} up={up} fovy={fovy:g}"
+
+
+def gltf_positions(path):
+    """The POSITION accessor of a glTF file written by bench_meshes.write_gltf (one embedded buffer)."""
+    import base64
+    import struct
+    doc = json.load(open(path))
+    acc = doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]
+    view = doc["bufferViews"][acc["bufferView"]]
+    blob = base64.b64decode(doc["buffers"][view["buffer"]]["uri"].split(",", 1)[1])
+    start = view.get("byteOffset", 0) + acc.get("byteOffset", 0)
+    flat = struct.unpack_from(f"<{3 * acc['count']}f", blob, start)
+    return [flat[i:i + 3] for i in range(0, len(flat), 3)]
+
+
+def prepare_mesh(a, tmp):
+    """The glTF file both programs read, and a description of it."""
+    if not a.mesh:
+        path = os.path.join(tmp, "torus.gltf")
+        pos, nrm, tris = bench_meshes.torus(a.triangles)
+        n = bench_meshes.write_gltf(path, pos, tris, nrm)
+        return path, f"generated torus, {n} triangles"
+    if a.mesh.lower().endswith(".off"):
+        path = os.path.join(tmp, os.path.splitext(os.path.basename(a.mesh))[0] + ".gltf")
+        pos, tris = bench_meshes.weld(*bench_meshes.read_off(a.mesh))
+        n = bench_meshes.write_gltf(path, pos, tris)
+        return path, f"{a.mesh} as glTF, {n} triangles"
+    return a.mesh, a.mesh
+
+
+def tlab_frame(a, mesh, exe):
+    out = subprocess.run([exe, "bench", "render", "--scene", mesh, "--camera", a.camera, "--style", "constant",
+                          "--set", f"alpha={a.opacity}", "--size", f"{a.size}x{a.size}", "--frames", str(a.frames),
+                          "--gl", a.gl, "--json"], check=True, capture_output=True, text=True).stdout
+    tlab = json.loads(out)
+    return tlab["rows"][0], tlab["gl"]
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tlab", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "tlab"))
-    ap.add_argument("--mesh", help="a glTF mesh (default: a generated torus)")
+    ap.add_argument("--baseline", help="another tlab executable (e.g. a build before a change), timed in the same rounds")
+    ap.add_argument("--mesh", help="a glTF or OFF mesh (default: a generated torus)")
     ap.add_argument("--triangles", type=int, default=100000)
     ap.add_argument("--size", type=int, default=512)
     ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--rounds", type=int, default=3, help="alternating rounds; each side's best counts")
     ap.add_argument("--opacity", type=float, default=0.3)
-    ap.add_argument("--camera", default="eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40")
+    ap.add_argument("--camera", help="eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG (default: the torus view "
+                    "'eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40' without --mesh, else fitted)")
+    ap.add_argument("--view-from", default="0,0,1", help="direction of the fitted camera")
+    ap.add_argument("--modes", default="dual-peeling,weighted-oit", help="VTK modes to time")
     ap.add_argument("--gl", default="auto", help="tlab's --gl")
     ap.add_argument("--images", help="also write tlab.png and vtk-MODE.png of the view into this folder")
     a = ap.parse_args()
-    camera = {}
-    for item in a.camera.split():
-        k, v = item.split("=")
-        camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
+    modes = a.modes.split(",")
     with tempfile.TemporaryDirectory() as tmp:
-        mesh = a.mesh
-        if not mesh:
-            mesh = os.path.join(tmp, "torus.gltf")
-            n = torus_gltf(mesh, a.triangles)
-            print(f"mesh: generated torus, {n} triangles")
-        out = subprocess.run([a.tlab, "bench", "render", "--scene", mesh, "--camera", a.camera, "--style", "constant",
-                              "--set", f"alpha={a.opacity}", "--size", f"{a.size}x{a.size}", "--frames", str(a.frames),
-                              "--gl", a.gl, "--json"], check=True, capture_output=True, text=True).stdout
-        tlab = json.loads(out)
-        row = tlab["rows"][0]
-        print(f"tlab constant ({tlab['gl']['backend']}, {tlab['gl']['renderer']}): {row['frame_ms']:.1f} ms/frame, "
-              f"{row['fragments']} fragments, passes {row['pass_ms']}")
+        mesh, what = prepare_mesh(a, tmp)
+        print(f"mesh: {what}")
+        if not a.camera:
+            a.camera = ("eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40" if not a.mesh else
+                        fitted_camera(gltf_positions(mesh), direction=[float(x) for x in a.view_from.split(",")]))
+        print(f"camera: {a.camera}")
+        camera = {}
+        for item in a.camera.split():
+            k, v = item.split("=")
+            camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
+        best = {}
+        loads = []
+        for r in range(a.rounds):
+            for label, exe in [("tlab", a.tlab)] + ([("baseline", a.baseline)] if a.baseline else []):
+                row, gl = tlab_frame(a, mesh, exe)
+                best[label] = min(best.get(label, math.inf), row["frame_ms"])
+                passes = ", ".join(f"{k} {v:.1f}" for k, v in row["pass_ms"].items())
+                print(f"round {r + 1}: {label} constant ({gl['backend']}, {gl['renderer']}): {row['frame_ms']:.1f} ms/frame, "
+                      f"{row['fragments']} fragments ({passes})")
+            for mode in modes:
+                png = os.path.join(a.images, f"vtk-{mode}.png") if a.images and r == 0 else None
+                if png:
+                    os.makedirs(a.images, exist_ok=True)
+                ms, renderer = vtk_frame_ms(mesh, a.size, camera, a.opacity, a.frames, mode, png)
+                best[mode] = min(best.get(mode, math.inf), ms)
+                print(f"round {r + 1}: VTK {mode} ({renderer}): {ms:.1f} ms/frame")
+            loads.append(os.getloadavg()[0])
         if a.images:
-            os.makedirs(a.images, exist_ok=True)
             subprocess.run([a.tlab, "render", mesh, "--camera", a.camera, "--style", "constant", "--set", f"alpha={a.opacity}",
                             "--size", f"{a.size}x{a.size}", "--gl", a.gl, "-o", os.path.join(a.images, "tlab.png")],
                            check=True, capture_output=True)
-        results = {}
-        for mode in ("dual-peeling", "weighted-oit"):
-            png = os.path.join(a.images, f"vtk-{mode}.png") if a.images else None
-            ms, renderer = vtk_frame_ms(mesh, a.size, camera, a.opacity, a.frames, mode, png)
-            results[mode] = ms
-            print(f"VTK {mode} ({renderer}): {ms:.1f} ms/frame")
-        print(f"ratio tlab constant / VTK dual peeling = {row['frame_ms'] / results['dual-peeling']:.2f} "
-              f"(goal <= 0.5), at {a.size}x{a.size}, median of {a.frames} frames, load {os.getloadavg()[0]:.1f}")
+        summary = ", ".join(f"{k} {v:.1f} ms" for k, v in best.items())
+        print(f"best of {a.rounds} rounds (median of {a.frames} frames each): {summary}")
+        if "dual-peeling" in best:
+            for label in ("tlab", "baseline"):
+                if label in best:
+                    print(f"ratio {label} constant / VTK dual peeling = {best[label] / best['dual-peeling']:.2f} (goal <= 0.5)")
+            print(f"at {a.size}x{a.size}, {row['fragments']} fragments, load average {min(loads):.1f}-{max(loads):.1f}")
 
 
 if __name__ == "__main__":

@@ -1,5 +1,6 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 
+#include <algorithm>
 #include <sstream>
 #include <stdexcept>
 
@@ -16,6 +17,7 @@ enum Binding : GLuint {
   kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7,
 };
 constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
+constexpr std::size_t kSlotBudgetBytes = std::size_t(256) << 20;  // at most this for per-pixel slots
 
 gpu::ShaderDefines with(gpu::ShaderDefines d, const std::string& name, const std::string& value) {
   d.emplace_back(name, value);
@@ -63,7 +65,9 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   if (method_ == FillMethod::CountScatter) {
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
     scatterProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_scatter.frag", defines);
+    slotProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_slots.frag", defines);
     sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
+    sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
   } else {
     listProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_list.frag", defines);
     sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
@@ -97,6 +101,8 @@ void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene
   beginFragmentCapture(emptyFbo_, width_, height_, program, u);
   glUniform1ui(program.uniform("uCapacity"), static_cast<GLuint>(capacity_));
   glUniform1ui(program.uniform("uPrimitiveBase"), 0u);
+  glUniform1ui(program.uniform("uSlots"), slotsUsed_);
+  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   endFragmentCapture(scene);
 }
 
@@ -115,9 +121,19 @@ std::uint32_t FragmentBuffer::prefixSum() {
     gpu::dispatchLinear(phase == 1 ? 1 : blocks);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
-  std::uint32_t counters[2] = {0, 0};
+  std::uint32_t counters[3] = {0, 0, 0};
   counters_.download(counters, sizeof(counters));
+  overflowMax_ = counters[2];
   return counters[1];
+}
+
+// Slots per pixel for this frame's count pass: as many as the largest list seen so far, when
+// that many fit the memory budget for every pixel; else 0 (count, then scatter).
+std::uint32_t FragmentBuffer::slotsForThisFrame() {
+  const std::size_t bytes = pixels() * slotsWanted_ * std::size_t(layout_.stride) * 4;
+  if (slotsWanted_ == 0 || bytes > std::min(maxBytes_, kSlotBudgetBytes)) return 0;
+  if (slots_.size() < bytes) slots_ = gpu::Buffer(bytes);
+  return slotsWanted_;
 }
 
 void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer) {
@@ -125,10 +141,20 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
     pixelCount_.clearToZero();
     pixelCursor_.clearToZero();
     counters_.clearToZero();
+    slotsUsed_ = slotsForThisFrame();
     pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
-    rasterize(*countProgram_, scene, u);
+    if (slotsUsed_ > 0) {
+      counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
+      slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+    }
+    rasterize(slotsUsed_ > 0 ? *slotProgram_ : *countProgram_, scene, u);
     fragmentCount_ = prefixSum();
+    if (overflowMax_ > 0) {  // some list outgrew the slots: scatter this frame, more slots next
+      slotsWanted_ = overflowMax_;
+      slotsUsed_ = 0;
+    }
     ensureCapacity(fragmentCount_);
+    if (slotsUsed_ > 0) return;
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
     fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
@@ -162,6 +188,7 @@ void FragmentBuffer::build(FrameContext& frame, PassTimer& timer) { build(frame.
 void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer) {
   rerenders_ = 0;
   poolGrowths_ = 0;
+  slotsUsed_ = 0;
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
   timer.time("sort", [&] {
@@ -169,11 +196,12 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
     if (listNext_) listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
-    fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+    (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
     fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
     order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
-    sortProgram_->use();
-    glUniform1ui(sortProgram_->uniform("uPixels"), static_cast<GLuint>(pixels()));
+    const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
+    program.use();
+    glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
     gpu::dispatchLinear(pixels());
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   });
@@ -184,6 +212,11 @@ void FragmentBuffer::bindSorted() const {
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
   fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+}
+
+const gpu::Buffer& FragmentBuffer::composeOutput() const {
+  if (!composeOutput_) composeOutput_ = gpu::Buffer(pixels() * sizeof(glm::vec4));
+  return composeOutput_;
 }
 
 std::vector<std::uint32_t> FragmentBuffer::pixelCounts() const {

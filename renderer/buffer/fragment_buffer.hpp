@@ -5,6 +5,11 @@
 // Two ways to fill it:
 //  - CountScatter: a count pass (per-pixel atomics only) → prefix sum → a scatter pass writing
 //    each fragment straight into its pixel's block. The pool is sized from the exact count.
+//    When K slots per pixel, K the longest list seen so far, fit the memory budget, the count
+//    pass also stores each pixel's first K records in slots (buffer/fill_slots.frag: one
+//    rasterization instead of two); a pixel with more than K fragments makes that frame fall
+//    back to the scatter pass, which the exact counts already prepared (issue #29). The sorted
+//    buffer is the same either way.
 //  - LinkedList: the paper's Alg. 1 (a global counter and per-pixel linked lists); when the pool
 //    overflows it grows to the required size and the scene is re-rendered (Sec. 4.2).
 // Measured on llvmpipe (`tlab bench render --fill`), CountScatter is the faster and the default.
@@ -43,6 +48,9 @@ class FragmentBuffer final : public Fill {
 
   // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes.
   void bindSorted() const;
+  // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
+  // each frame costs page faults whose price varies with the machine's load).
+  const gpu::Buffer& composeOutput() const;
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -53,6 +61,8 @@ class FragmentBuffer final : public Fill {
   std::size_t capacity() const { return capacity_; }
   int rerenders() const { return rerenders_; }      // full re-renders after an overflow (LinkedList)
   int poolGrowths() const { return poolGrowths_; }  // times the pool was enlarged
+  // Slots per pixel the last build stored its records in (0: it ran the scatter pass).
+  std::uint32_t slotsUsed() const { return slotsUsed_; }
 
   // Read-backs, in GL pixel order (row 0 = bottom): per-pixel counts and heads, sorted records.
   std::vector<std::uint32_t> pixelCounts() const;
@@ -64,6 +74,7 @@ class FragmentBuffer final : public Fill {
   void rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
+  std::uint32_t slotsForThisFrame();
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
   int width_, height_;
@@ -74,15 +85,21 @@ class FragmentBuffer final : public Fill {
   std::uint64_t fragmentCount_ = 0;
   int rerenders_ = 0;
   int poolGrowths_ = 0;
+  std::uint32_t slotsWanted_ = 8;  // the largest list seen so far (slots to try next frame)
+  std::uint32_t slotsUsed_ = 0;
+  std::uint32_t overflowMax_ = 0;  // of the last count: the largest list beyond the slots (0: none)
 
   gpu::Framebuffer emptyFbo_;
   gpu::Buffer pixelCount_, pixelHead_, pixelCursor_, counters_, blockSums_;
-  gpu::Buffer listNext_, fragsUnsorted_, fragsSorted_, order_;
+  gpu::Buffer listNext_, fragsUnsorted_, fragsSorted_, order_, slots_;
+  mutable gpu::Buffer composeOutput_;
   const gpu::ShaderProgram* countProgram_ = nullptr;
   const gpu::ShaderProgram* scatterProgram_ = nullptr;
   const gpu::ShaderProgram* listProgram_ = nullptr;
   const gpu::ShaderProgram* prefix_[3] = {nullptr, nullptr, nullptr};
   const gpu::ShaderProgram* sortProgram_ = nullptr;
+  const gpu::ShaderProgram* slotProgram_ = nullptr;
+  const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
 };
 
 }  // namespace tlab::render

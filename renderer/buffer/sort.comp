@@ -3,6 +3,7 @@
 // block [pixelHead, pixelHead + pixelCount) of the sorted buffer (fragData2). Ties in depth are
 // broken by the global triangle index, so the order never depends on thread scheduling.
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
+// TLAB_SLOTS: they sit in uSlots slots (buffer/fill_slots.frag): the i-th at i * uPixels + pixel.
 #include "buffer/fragment_layout.glsl"
 #include "buffer/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
@@ -35,6 +36,8 @@ void main() {
     order[base + i] = keyOf(f);
     f = listNext[f];
   }
+#elif defined(TLAB_SLOTS)
+  for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(i * uPixels + pixel);
 #else
   for (uint i = 0u; i < n; ++i) order[base + i] = keyOf(base + i);
 #endif

@@ -8,7 +8,7 @@ namespace tlab::render {
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const auto& program = frame.shaders.compute("compose/blend.comp", buffer.layout().defines());
-  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
+  const gpu::Buffer& output = buffer.composeOutput();
   buffer.bindSorted();
   output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
   program.use();

@@ -2,6 +2,8 @@
 // GPU (structure only: speed is never asserted).
 #include <gtest/gtest.h>
 
+#include <map>
+
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.hpp"
@@ -61,4 +63,32 @@ TEST(BenchCli, SceneOptionsWithoutASceneAndUnknownStylesAreOneLine) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
   }
+}
+
+// `tlab bench floor`: the bytes each pass moves, by its model (bench/measure/traffic_floor.hpp),
+// on a scene whose fragments are known: 4 quads over every pixel of 32x24 give 3072 fragments of
+// 3 words (depth, triangle, colour) for `constant`.
+TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
+  const auto r = runCommand(kTlab + " bench floor --scenes 'builtin:quad-stack?n=4&m=4' --styles constant,smart --size 32x24 "
+                                    "--frames 1 --copy-mib 16 --gl osmesa --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_GT(j["copy_bandwidth_1_thread"].get<double>(), 0);
+  std::map<std::string, nlohmann::json> constant;
+  bool smartConnect = false;
+  for (const auto& row : j["rows"]) {
+    EXPECT_EQ(row["fragments"], 3072) << row;
+    if (row["style"] == "constant") constant[row["pass"]] = row;
+    if (row["style"] == "smart" && row["pass"] == "connect") smartConnect = row["bytes_written"].get<double>() > 0;
+  }
+  ASSERT_EQ(constant.size(), 3u) << j;
+  const double pixels = 32 * 24, fragments = 3072, record = 12;
+  EXPECT_EQ(constant["fill"]["bytes_read"].get<double>(), 0.0);
+  EXPECT_EQ(constant["fill"]["bytes_written"].get<double>(), fragments * record + pixels * 8);
+  EXPECT_EQ(constant["sort"]["bytes_read"].get<double>(), fragments * record + pixels * 8);
+  EXPECT_EQ(constant["sort"]["bytes_written"].get<double>(), fragments * record);
+  EXPECT_EQ(constant["compose"]["bytes_read"].get<double>(), pixels * 24 + fragments * 4);
+  EXPECT_EQ(constant["compose"]["bytes_written"].get<double>(), pixels * 32);
+  EXPECT_GT(constant["compose"]["floor_ms"].get<double>(), 0.0);
+  EXPECT_TRUE(smartConnect) << j;
 }

@@ -153,3 +153,36 @@ TEST(IllustrationBuffer, RendersAt2048x2048) {
   EXPECT_NE(img.at(2047, 2047), glm::vec4(0.0f));
   for (auto c : renderer.layerCounts()) ASSERT_EQ(c, 1);
 }
+
+// Issue #29: the count pass stores each pixel's first K records in per-pixel slots (one
+// rasterization) when the largest list seen so far fits; a frame whose lists outgrow the slots
+// falls back to the scatter pass. Both give the same sorted buffer, so the same pictures.
+TEST(IllustrationBuffer, SlotFillAndItsScatterFallbackGiveTheSameSortedBuffer) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour;
+  colour |= FragmentProperty::Color;
+  FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter);
+  const Scene scene = loadScene("builtin:quad-stack?n=20&m=4");  // 20 layers: more than the first frame's 8 slots
+  GpuScene gpu(scene);
+  RasterUniforms u;
+  u.view = scene.camera->view();
+  u.projection = scene.camera->projection(48.0f / 40.0f);
+  PassTimer timer(false);
+  buffer.build(gpu, u, timer);
+  EXPECT_EQ(buffer.slotsUsed(), 0u) << "20 layers overflow 8 slots: this frame scatters";
+  ASSERT_EQ(buffer.fragmentCount(), 20u * 48u * 40u);
+  const auto scattered = buffer.sortedRecords(0, buffer.fragmentCount());
+  const auto heads = buffer.pixelHeads();
+  buffer.build(gpu, u, timer);
+  EXPECT_EQ(buffer.slotsUsed(), 20u) << "the next frame has a slot for every layer";
+  EXPECT_EQ(buffer.fragmentCount(), 20u * 48u * 40u);
+  EXPECT_EQ(buffer.pixelHeads(), heads);
+  EXPECT_EQ(buffer.sortedRecords(0, buffer.fragmentCount()), scattered);
+}
+
+TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByteIdentical) {
+  Renderer renderer(loadScene("builtin:open-cylinders"));
+  const auto first = tlab::core::encodePng(renderer.render(request(96, 80)));   // 8 slots: scatters if a list is longer
+  const auto second = tlab::core::encodePng(renderer.render(request(96, 80)));  // slots sized to the longest list
+  EXPECT_EQ(first, second);
+}
