@@ -1,6 +1,7 @@
 #include "stimuli/sets/stimulus_set_file.hpp"
 #include "core/file_text.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -9,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "renderer/styles/style.hpp"
+#include "renderer/styles/style_file.hpp"
 
 namespace tlab::stimuli {
 
@@ -118,8 +120,12 @@ StyleEntry parseStyle(const TableReader& set, const toml::node& node, std::size_
   } else {
     set.fail(&node, key, "expected a style name or { name = ..., set = [...] }");
   }
+  if (render::isStyleFilePath(style.name))  // relative to the set file
+    style.name = std::filesystem::absolute(std::filesystem::path(set.file()).parent_path() / style.name).lexically_normal().string();
   try {
-    render::findStyle(style.name).resolve(style.settings);
+    const render::Style& found = render::findStyle(style.name);
+    found.resolve(style.settings);
+    style.fileSha256 = found.fileSha256().value_or("");
   } catch (const std::exception& e) {
     set.fail(&node, key, e.what());
   }
