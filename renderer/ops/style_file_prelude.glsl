@@ -9,7 +9,6 @@ layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixel
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
 #define BIND_STYLE_VALUE_IN 20
 #define BIND_STYLE_VALUE_OUT 21
-#define BIND_STYLE_LINKS 10  // ops/field_bindings.glsl BIND_LINKS
 #ifdef TLAB_STYLE_VALUES
 layout(std430, binding = BIND_STYLE_VALUE_IN) readonly buffer ValueIn { float valueIn[]; };
 #endif
