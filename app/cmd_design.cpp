@@ -15,6 +15,7 @@
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "stimuli/sets/progress_bar.hpp"
+#include "app/style_file_check.hpp"
 #include "study/design/counterbalancing.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/design/session_plan.hpp"
@@ -86,9 +87,13 @@ std::string blockTasks(const study::SessionPlan& plan, int block) {
 
 void run(const DesignOptions& o) {
   const study::Experiment e = study::readExperimentFile(o.experiment);
+  const auto images = checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line
   const study::Design design = study::makeDesign(e);
   const int participants = o.participants > 0 ? o.participants : e.participants;
   std::printf("experiment %s: %s\n", e.id.c_str(), e.title.c_str());
+  for (const auto& u : e.styleFiles) std::printf("style file %s: sha256 %s\n", u.written.c_str(), u.sha256.c_str());
+  for (const auto& a : images)
+    std::printf("images %s: aligned with %s (IoU %.4f), sha256 %s\n", a.image.c_str(), a.scene.c_str(), a.iou, a.sha256.c_str());
   std::printf("counterbalancing %s: %zu order rows x %zu between cells, %zu blocks per participant\n",
               study::counterbalancingName(e.counterbalancing), design.rowCount(), design.betweenCellCount(), design.blocksPerRow());
   const std::size_t multiple = design.balancedMultiple();

@@ -1,6 +1,7 @@
 // tlab render: one picture of a scene in a transparency style.
 #include <fstream>
 #include <iostream>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +14,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
+#include "renderer/styles/style_file.hpp"
 
 namespace tlab::app {
 
@@ -36,6 +38,29 @@ std::string styleListing() {
     for (const auto& p : style.params()) out += "      " + p.name + "=" + p.defaultValue + "  " + p.help + "\n";
   }
   return out + "  (every style also takes lighting=headlight|none)";
+}
+
+// One style file's parameters (--set key=value) with their defaults and ranges.
+std::string styleFileListing(const render::Style& style, const std::string& path) {
+  std::string out = "Style file " + path + " (" + style.name() + "): " + style.description() + "\nParameters (--set key=value):\n";
+  for (const auto& p : style.allParams()) {
+    std::ostringstream range;
+    if (p.kind == render::ParamSpec::Kind::Number) range << "  [" << p.minValue << ", " << p.maxValue << "]";
+    else for (std::size_t i = 0; i < p.choices.size(); ++i) range << (i ? "|" : "  ") << p.choices[i];
+    out += "  " + p.name + "=" + p.defaultValue + range.str() + "  " + p.help + "\n";
+  }
+  return out;
+}
+
+// `tlab render --style FILE --help`: the style file's own declarations, else the built-in listing.
+std::string styleHelp(const CLI::App& cmd) {
+  const auto& given = cmd.get_option("--style")->results();
+  if (given.empty() || !render::isStyleFilePath(given.back())) return styleListing();
+  try {
+    return styleFileListing(render::findStyle(given.back()), given.back());
+  } catch (const std::exception& e) {
+    return std::string("Style file: ") + e.what();
+  }
 }
 
 void runRender(const RenderOptions& o) {
@@ -64,6 +89,7 @@ void runRender(const RenderOptions& o) {
   if (!o.statsJson.empty()) {
     nlohmann::json j = statsToJson(stats, context->info());
     j["style"] = request.style;
+    if (const auto sha = render::findStyle(request.style).fileSha256()) j["style_sha256"] = *sha;
     j["settings"] = request.settings;
     j["scene"] = o.scene.scene;
     j["renderer"] = o.renderer;
@@ -93,7 +119,7 @@ void addRenderCommand(CLI::App& app) {
                   "buffer (the illustration buffer) or peel (depth peeling, local styles only: IRIS Sec. 5.1)")
       ->capture_default_str();
   cmd->add_flag("--window", options->window, "show the result in a GLFW window instead of rendering headless");
-  cmd->footer(styleListing());
+  cmd->footer([cmd] { return styleHelp(*cmd); });
   cmd->callback([options] { runRender(*options); });
 }
 

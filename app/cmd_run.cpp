@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "app/commands.hpp"
+#include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/simulate/simulated_observer.hpp"
@@ -32,6 +33,7 @@ void run(const RunCommandOptions& o) {
   if (o.participant.empty()) throw std::invalid_argument("--participant: must not be empty");
   if (o.autopilotPace < 0) throw std::invalid_argument("--autopilot-pace: must be >= 0");
   const study::Experiment e = study::readExperimentFile(o.experiment);
+  checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line, before any session
   const auto [width, height] = parseSize(o.size);
   const auto storeOwner = study::openStore(o.db);
   study::Store& store = *storeOwner;

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "app/commands.hpp"
+#include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
 #include "study/design/experiment_file.hpp"
 #include "study/run/stimulus_library.hpp"
@@ -62,6 +63,7 @@ void serve(const ServeCommandOptions& o) {
   // the mask, and one that took SIGTERM would end the process at once instead of stopping the server.
   pthread_sigmask(SIG_BLOCK, &signals, nullptr);
   const study::Experiment e = study::readExperimentFile(o.experiment);
+  checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line, before any session
   study::checkOnlineExperiment(e);
   study::LockedStore store(study::openStore(o.db));
   study::RenderWorker worker(study::stimulusDirectoryFor(o.db), sceneCatalog(), e.online);

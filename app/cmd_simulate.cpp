@@ -12,6 +12,7 @@
 
 #include "analysis/text_table.hpp"
 #include "app/commands.hpp"
+#include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "study/design/experiment_file.hpp"
@@ -123,6 +124,7 @@ study::Experiment readExperiment(const SimulateOptions& o) {
 
 void run(const SimulateOptions& o) {
   const study::Experiment e = readExperiment(o);
+  checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line, before any session
   if (o.participants < 0) throw std::invalid_argument("--participants: must be >= 1");
   const int participants = o.participants > 0 ? o.participants : e.participants;
   if (o.first < 1) throw std::invalid_argument("--first: must be >= 1");

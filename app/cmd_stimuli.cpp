@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/commands.hpp"
+#include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
 #include "core/image.hpp"
 #include "stimuli/bench/integrator_benchmark.hpp"
@@ -89,6 +90,9 @@ struct StimuliOptions {
 
 void runStimuli(const StimuliOptions& o) {
   const stimuli::StimulusSetSpec spec = stimuli::readStimulusSetFile(o.setFile);
+  std::vector<std::string> styles;
+  for (const auto& st : spec.styles) styles.push_back(st.name);
+  compileStyleFiles(styles);  // a broken style file: one line, before any picture
   const TaskProbeSource probes;
   const stimuli::StimulusSetRenderer renderer(sceneCatalog(), probes);
   const auto result = renderer.render(spec, {o.out, o.jobs, !o.quiet});

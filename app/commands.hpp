@@ -32,5 +32,6 @@ void addDropCommand(CLI::App& app);      // cmd_drop.cpp
 void addTimingCommand(CLI::App& app);    // cmd_timing.cpp
 void addVersionCommand(CLI::App& app);   // cmd_version.cpp
 void addDemoCommand(CLI::App& app);      // cmd_demo.cpp
+void addSceneCommand(CLI::App& app);     // cmd_scene.cpp
 
 }  // namespace tlab::app

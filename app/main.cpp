@@ -43,6 +43,7 @@ int main(int argc, char** argv) {
   app.fallthrough(false);
   tlab::app::addDemoCommand(app);
   tlab::app::addRenderCommand(app);
+  tlab::app::addSceneCommand(app);
   tlab::app::addInspectCommand(app);
   tlab::app::addBenchCommand(app);
   tlab::app::addGalleryCommand(app);

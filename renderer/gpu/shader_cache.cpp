@@ -22,4 +22,11 @@ const ShaderProgram& ShaderCache::compute(std::string_view cs, const ShaderDefin
   return it->second;
 }
 
+const ShaderProgram& ShaderCache::computeFromSource(const std::string& key, const std::string& source, std::string_view what) {
+  const std::string k = "source|" + key;
+  auto it = programs_.find(k);
+  if (it == programs_.end()) it = programs_.emplace(k, ShaderProgram::computeFromSource(source, what)).first;
+  return it->second;
+}
+
 }  // namespace tlab::gpu

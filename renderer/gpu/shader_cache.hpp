@@ -13,6 +13,8 @@ class ShaderCache {
  public:
   const ShaderProgram& graphics(std::string_view vertexFile, std::string_view fragmentFile, const ShaderDefines& defines = {});
   const ShaderProgram& compute(std::string_view computeFile, const ShaderDefines& defines = {});
+  // A program compiled from assembled source (a style file's), cached under `key`.
+  const ShaderProgram& computeFromSource(const std::string& key, const std::string& source, std::string_view what);
 
  private:
   static std::string key(std::string_view a, std::string_view b, const ShaderDefines& defines);

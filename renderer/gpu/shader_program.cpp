@@ -29,8 +29,7 @@ void expandIncludes(std::string_view file, std::string& out, int depth) {
   }
 }
 
-ShaderName compileStage(GLenum stage, std::string_view file, const ShaderDefines& defines) {
-  const std::string source = preprocessShader(file, defines);
+ShaderName compileSource(GLenum stage, const std::string& source, std::string_view file) {
   ShaderName shader(glCreateShader(stage));
   const char* text = source.c_str();
   glShaderSource(shader.id(), 1, &text, nullptr);
@@ -43,11 +42,16 @@ ShaderName compileStage(GLenum stage, std::string_view file, const ShaderDefines
     std::string log(static_cast<std::size_t>(len > 1 ? len : 1), '\0');
     glGetShaderInfoLog(shader.id(), len, nullptr, log.data());
     while (!log.empty() && (log.back() == '\0' || log.back() == '\n')) log.pop_back();
-    for (char& c : log)
+    std::string oneLine = log;
+    for (char& c : oneLine)
       if (c == '\n') c = ' ';
-    throw GlError("shader " + std::string(file) + " failed to compile: " + log);
+    throw ShaderCompileError("shader " + std::string(file) + " failed to compile: " + oneLine, log);
   }
   return shader;
+}
+
+ShaderName compileStage(GLenum stage, std::string_view file, const ShaderDefines& defines) {
+  return compileSource(stage, preprocessShader(file, defines), file);
 }
 
 ProgramName link(std::initializer_list<GLuint> shaders, std::string_view what) {
@@ -98,6 +102,13 @@ ShaderProgram ShaderProgram::compute(std::string_view computeFile, const ShaderD
   ShaderName cs = compileStage(GL_COMPUTE_SHADER, computeFile, defines);
   ShaderProgram p;
   p.program_ = link({cs.id()}, computeFile);
+  return p;
+}
+
+ShaderProgram ShaderProgram::computeFromSource(const std::string& source, std::string_view what) {
+  ShaderName cs = compileSource(GL_COMPUTE_SHADER, source, what);
+  ShaderProgram p;
+  p.program_ = link({cs.id()}, what);
   return p;
 }
 

@@ -7,11 +7,23 @@
 #include <utility>
 #include <vector>
 
+#include "renderer/gpu/gl_error.hpp"
 #include "renderer/gpu/gl_objects.hpp"
 
 namespace tlab::gpu {
 
 std::string_view embeddedShader(std::string_view name);  // generated at build time
+
+// A shader that failed to compile: the message of GlError, and the driver's log as it wrote it
+// (one line per diagnostic), so a caller that assembled the source can map lines back.
+class ShaderCompileError : public GlError {
+ public:
+  ShaderCompileError(const std::string& message, std::string log) : GlError(message), log_(std::move(log)) {}
+  const std::string& log() const { return log_; }
+
+ private:
+  std::string log_;
+};
 
 using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
 
@@ -23,6 +35,9 @@ class ShaderProgram {
                                 const ShaderDefines& defines = {});
   // A compute program from one file.
   static ShaderProgram compute(std::string_view computeFile, const ShaderDefines& defines = {});
+  // A compute program from source text assembled by the caller (a style file's program);
+  // `what` names it in errors.
+  static ShaderProgram computeFromSource(const std::string& source, std::string_view what);
 
   GLuint id() const { return program_.id(); }
   void use() const { glUseProgram(program_.id()); }

@@ -1,9 +1,11 @@
 #include "renderer/styles/style.hpp"
 
+#include <mutex>
 #include <stdexcept>
 
 #include "renderer/styles/constant_style.hpp"
 #include "renderer/styles/dynamic_style.hpp"
+#include "renderer/styles/file_style.hpp"
 #include "renderer/styles/curvature_style.hpp"
 #include "renderer/styles/iris_style.hpp"
 #include "renderer/styles/opaque_style.hpp"
@@ -56,6 +58,18 @@ const std::vector<std::unique_ptr<Style>>& registry() {
   }();
   return styles;
 }
+// Style files loaded so far, by path and content: a reference handed out stays valid for the
+// process even when the file is edited (the edited text is another entry).
+const Style& loadedStyleFile(const std::string& path) {
+  static std::mutex mutex;
+  static std::map<std::pair<std::string, std::string>, std::unique_ptr<FileStyle>> loaded;
+  StyleFile file = loadStyleFile(path);
+  const std::lock_guard<std::mutex> lock(mutex);
+  auto& slot = loaded[{path, file.sha256}];
+  if (!slot) slot = std::make_unique<FileStyle>(std::move(file));
+  return *slot;
+}
+
 }  // namespace
 
 std::vector<std::string> styleNames() {
@@ -65,6 +79,7 @@ std::vector<std::string> styleNames() {
 }
 
 const Style& findStyle(const std::string& name) {
+  if (isStyleFilePath(name)) return loadedStyleFile(name);
   for (const auto& s : registry())
     if (s->name() == name) return *s;
   std::string known;

@@ -43,6 +43,8 @@ class Style {
   // Checks combinations of parameters (single values are checked against their ParamSpec).
   virtual void validate(const StyleParams&) const {}
   virtual std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const = 0;
+  // A style loaded from a file: the SHA-256 of its text (its identity); built-in styles have none.
+  virtual std::optional<std::string> fileSha256() const { return std::nullopt; }
 
   std::vector<ParamSpec> allParams() const;
   StyleParams resolve(const std::map<std::string, std::string>& settings) const;
@@ -53,7 +55,9 @@ class Style {
 ParamSpec lightingParam(const std::string& defaultValue);
 int lightingModel(const StyleParams& params);
 
-// The registered styles, by name; throws std::invalid_argument listing the known ones.
+// The registered styles, by name, or a style file by its path (a name ending in .glsl: loaded,
+// validated and kept for the process, reloaded when the file changes); throws
+// std::invalid_argument listing the known ones, or "FILE:LINE: message" for a bad style file.
 const Style& findStyle(const std::string& name);
 std::vector<std::string> styleNames();
 

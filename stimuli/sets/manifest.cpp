@@ -41,7 +41,10 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
                                    const std::vector<std::pair<std::size_t, std::string>>& floorPlans,
                                    const gpu::GpuInfo& gpu) {
   nlohmann::json styles = nlohmann::json::array();
-  for (std::size_t i = 0; i < spec.styles.size(); ++i) styles.push_back({{"index", i + 1}, {"name", spec.styles[i].name}, {"settings", spec.styles[i].settings}});
+  for (std::size_t i = 0; i < spec.styles.size(); ++i) {
+    styles.push_back({{"index", i + 1}, {"name", spec.styles[i].name}, {"settings", spec.styles[i].settings}});
+    if (!spec.styles[i].fileSha256.empty()) styles.back()["style_sha256"] = spec.styles[i].fileSha256;
+  }
   nlohmann::json sceneList = nlohmann::json::array();
   for (std::size_t i = 0; i < spec.scenes.size(); ++i) {
     nlohmann::json s = sceneJson(spec.scenes[i], scenes[i], i);

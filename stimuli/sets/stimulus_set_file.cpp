@@ -2,6 +2,7 @@
 #include "core/file_text.hpp"
 #include "core/toml_syntax_message.hpp"
 
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <set>
@@ -10,6 +11,7 @@
 #include <toml++/toml.h>
 
 #include "renderer/styles/style.hpp"
+#include "renderer/styles/style_file.hpp"
 
 namespace tlab::stimuli {
 
@@ -119,8 +121,12 @@ StyleEntry parseStyle(const TableReader& set, const toml::node& node, std::size_
   } else {
     set.fail(&node, key, "expected a style name or { name = ..., set = [...] }");
   }
+  if (render::isStyleFilePath(style.name))  // relative to the set file
+    style.name = std::filesystem::absolute(std::filesystem::path(set.file()).parent_path() / style.name).lexically_normal().string();
   try {
-    render::findStyle(style.name).resolve(style.settings);
+    const render::Style& found = render::findStyle(style.name);
+    found.resolve(style.settings);
+    style.fileSha256 = found.fileSha256().value_or("");
   } catch (const std::exception& e) {
     set.fail(&node, key, e.what());
   }

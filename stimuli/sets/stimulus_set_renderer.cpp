@@ -131,7 +131,7 @@ class SetJob {
     std::string stem = "s";
     stem.append(twoDigits(u.scene + 1)).append("-").append(shortName(scene.source));
     stem.append("_v").append(std::to_string(u.view + 1)).append("_st").append(std::to_string(u.index + 1));
-    stem.append("-").append(style.name);
+    stem.append("-").append(shortName(style.name));  // a style file: its stem
     return stem;
   }
 

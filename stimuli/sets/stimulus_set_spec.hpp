@@ -21,8 +21,9 @@ struct SourcePlace {
 };
 
 struct StyleEntry {
-  std::string name;
+  std::string name;  // a built-in style, or a style file's absolute path (written relative to the set file)
   std::map<std::string, std::string> settings;  // key → value (--set)
+  std::string fileSha256;  // a style file's SHA-256 (empty for built-in styles)
   SourcePlace place;
 };
 

@@ -3,14 +3,17 @@
 #include <nlohmann/json.hpp>
 
 #include "core/sha256.hpp"
+#include "study/design/style_files.hpp"
 
 namespace tlab::study {
 
 namespace {
 
-nlohmann::json levelJson(const Level& l) {
-  return {{"name", l.name}, {"scene", l.scene.value_or("")}, {"style", l.style.value_or("")},
-          {"camera", l.camera.value_or("")}, {"settings", l.renderSettings}};
+nlohmann::json levelJson(const Experiment& e, const Level& l) {
+  nlohmann::json j = {{"name", l.name}, {"scene", l.scene.value_or("")}, {"style", styleIdentity(e, l.style.value_or(""))},
+                      {"camera", l.camera.value_or("")}, {"settings", l.renderSettings}};
+  if (l.images) j["images"] = *l.images;  // only when set: designs without images keep their fingerprints
+  return j;
 }
 
 nlohmann::json taskJson(const TaskSpec& t) {
@@ -32,11 +35,11 @@ nlohmann::json taskJson(const TaskSpec& t) {
 std::string designFingerprint(const Experiment& e) {
   nlohmann::json d;
   d["seed"] = e.seed;
-  d["stimulus"] = {{"scene", e.stimulus.scene}, {"style", e.stimulus.style}, {"camera", e.stimulus.camera},
+  d["stimulus"] = {{"scene", e.stimulus.scene}, {"style", styleIdentity(e, e.stimulus.style)}, {"camera", e.stimulus.camera},
                    {"settings", e.stimulus.renderSettings}, {"size", {e.stimulus.width, e.stimulus.height}}};
   for (const auto& f : e.factors) {
     nlohmann::json levels = nlohmann::json::array();
-    for (const auto& l : f.levels) levels.push_back(levelJson(l));
+    for (const auto& l : f.levels) levels.push_back(levelJson(e, l));
     d["factors"].push_back({{"name", f.name}, {"kind", f.kind == FactorKind::Within ? "within" : "between"}, {"levels", levels}});
   }
   d["counterbalancing"] = counterbalancingName(e.counterbalancing);

@@ -21,6 +21,10 @@ struct Level {
   std::optional<std::string> style;   // renderer style
   std::optional<std::string> camera;  // "eye=... target=..." (tlab render --camera)
   std::vector<std::string> renderSettings;  // style key=value
+  // Images from another renderer instead of tlab's picture: a PNG path template (absolute once
+  // read, written relative to the experiment file) with {FACTOR} placeholders for any factor's
+  // level name and {trial}; tlab keeps the scene, camera, size and ground truth of the cell.
+  std::optional<std::string> images;
 };
 
 struct Factor {
@@ -159,9 +163,20 @@ struct Stimulus {
   int height = 512;
 };
 
+// A style file the experiment names (style = "styles/mine.glsl", relative to the experiment
+// file): as written, the absolute path it was found at (what Level/Stimulus style then hold), and
+// the SHA-256 of its text, which is part of the design's identity (editing the style file makes a
+// new experiment version). Recorded in the stored text as "# tlab style file WRITTEN = PATH sha256 HEX".
+struct StyleFileUse {
+  std::string written;
+  std::string path;
+  std::string sha256;
+};
+
 struct Experiment {
   std::string path;         // file it was read from
-  std::string text;         // the file's text, stored in the database
+  std::string text;         // the file's text, stored in the database (with the style files' identities appended)
+  std::vector<StyleFileUse> styleFiles;
   std::string id;
   std::string title;             // for the researcher (reports); never shown to participants
   std::string participantTitle;  // shown on the participant's screens ("" → "Welcome")

@@ -16,6 +16,7 @@
 #include "study/design/field_reader.hpp"
 #include "study/design/session_flow_file.hpp"
 #include "study/design/stimulus_checks.hpp"
+#include "study/design/style_files.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {
@@ -39,12 +40,18 @@ Level readLevel(const FieldReader& r, const toml::node& node, const std::string&
   if (node.is_string()) {
     level.name = node.as_string()->get();
   } else if (const toml::table* t = node.as_table()) {
-    r.checkKeys(*t, where, {"name", "scene", "style", "camera", "settings"});
+    r.checkKeys(*t, where, {"name", "scene", "style", "camera", "settings", "images"});
     level.name = r.string(*t, "name", where, true);
     if (t->get("scene")) level.scene = r.string(*t, "scene", where, true);
     if (t->get("style")) level.style = r.string(*t, "style", where, true);
     if (t->get("camera")) level.camera = r.string(*t, "camera", where, true);
     level.renderSettings = r.strings(*t, "settings", where);
+    if (t->get("images")) {
+      level.images = r.string(*t, "images", where, true);
+      if (level.style) r.fail(t->get("style"), where + ".style", "a level shows either tlab's pictures in a style or images, not both");
+      if (level.images->size() < 5 || level.images->substr(level.images->size() - 4) != ".png")
+        r.fail(t->get("images"), where + ".images", "expected a PNG path template such as \"renders/{scene}.png\"");
+    }
   } else {
     r.fail(&node, where, "a level is a name or a table { name = ..., scene/style/camera/settings = ... }");
   }
@@ -263,6 +270,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.questionnaires = readQuestionnaires(r, root);
   e.analyses = readAnalyses(r, root, e);
   e.observer = readObserver(r, root);
+  resolveStyleFiles(r, root, e, checks == StimulusChecks::Run);
   checkDesign(r, root, e);
   if (checks == StimulusChecks::Run) checkStimuli(r, root, e);
   return e;

@@ -1,5 +1,6 @@
 #include "study/design/session_plan.hpp"
 
+#include <filesystem>
 #include <set>
 
 #include "study/design/order_permutations.hpp"
@@ -11,7 +12,8 @@ const char* phaseName(Phase phase) { return phase == Phase::Training ? "training
 std::string StimulusKey::text() const {
   std::string t = scene + " | " + style + " |";
   for (const auto& s : renderSettings) t += " " + s;
-  return t + " | " + camera + " | " + std::to_string(width) + "x" + std::to_string(height);
+  t += " | " + camera + " | " + std::to_string(width) + "x" + std::to_string(height);
+  return images.empty() ? t : t + " | images " + images;
 }
 
 std::string StimulusKey::viewText() const { return scene + " | " + camera + " | " + std::to_string(width) + "x" + std::to_string(height); }
@@ -30,10 +32,18 @@ StimulusKey stimulusFor(const Experiment& e, const TaskSpec& task, const Conditi
     if (level.scene) key.scene = *level.scene;
     if (level.style) key.style = *level.style;
     if (level.camera) key.camera = *level.camera;
+    if (level.images) key.images = *level.images;
     key.renderSettings.insert(key.renderSettings.end(), level.renderSettings.begin(), level.renderSettings.end());
   }
   if (task.scene) key.scene = *task.scene;
   key.scene = replaceAll(key.scene, "{trial}", std::to_string(sceneInstance));
+  if (!key.images.empty()) {  // relative to the experiment file; {FACTOR}: that factor's level in this condition
+    namespace fs = std::filesystem;
+    key.images = fs::absolute(fs::path(e.path).parent_path() / key.images).lexically_normal().string();
+    key.images = replaceAll(key.images, "{trial}", std::to_string(sceneInstance));
+    for (std::size_t i = 0; i < e.factors.size(); ++i)
+      key.images = replaceAll(key.images, "{" + e.factors[i].name + "}", e.factors[i].levels[std::size_t(condition.levels[i])].name);
+  }
   return key;
 }
 

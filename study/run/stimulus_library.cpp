@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "core/png_file.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
@@ -31,6 +32,18 @@ render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key)
 }
 
 }  // namespace
+
+core::Image readExternalImage(const StimulusKey& key) {
+  auto image = core::readPngFile(key.images);
+  if (!image) throw std::runtime_error(key.images + ": cannot read the image (a PNG is expected)");
+  if (image->width != key.width || image->height != key.height)
+    throw std::runtime_error(key.images + ": the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
+                             " but the stimulus is " + std::to_string(key.width) + "x" + std::to_string(key.height) + " (stimulus.size)");
+  for (auto& p : image->pixels) p.a = 1.0f;  // shown over nothing: opaque
+  return *image;
+}
+
+render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key) { return resolveCamera(scene, key); }
 
 bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
 
@@ -84,6 +97,10 @@ const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& ke
   view.style = key.style;
   for (const auto& s : key.renderSettings) render::addSetting(view.settings, s);
   view.camera = resolveCamera(*scene, key);
+  if (!key.images.empty()) {  // another renderer's picture of the same scene and camera (checked by checkExternalImages)
+    auto picture = std::make_shared<core::Image>(readExternalImage(key));
+    return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), view.camera}).first->second;
+  }
   render::Renderer renderer(*scene);
   auto picture = std::make_shared<core::Image>(stimuli::StimulusProducer::picture(renderer, view));
   return pictures_.emplace(id, Rendered{std::move(picture), std::move(scene), view.camera}).first->second;

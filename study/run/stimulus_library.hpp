@@ -40,6 +40,11 @@ struct PreparedTrial {
 // The probe points a participant is shown (targets of search tasks are not marked).
 bool isMarkedPoint(const tasks::ProbePoint& point);
 
+// The PNG of a stimulus from another renderer (key.images), checked to have the stimulus' size.
+core::Image readExternalImage(const StimulusKey& key);
+// The camera a stimulus is drawn with: the key's camera on the scene's own (or the fitted one).
+render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key);
+
 // Draws the marks of a question's points (ring + label) onto a copy of the picture.
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter);
 

@@ -1,0 +1,42 @@
+#pragma once
+// Images from another renderer are stimuli only when they show tlab's scene from tlab's camera:
+// tlab's own coverage of the cell (pixels with at least one fragment) is compared with the
+// image's non-background pixels by intersection over union, and a poor overlap is explained
+// (vertical flip, field of view, aspect, a shifted camera) before any participant sees a mark.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/image.hpp"
+
+namespace tlab::stimuli {
+
+// The overlap that admits an image (issue #28).
+constexpr double kMinimumAlignmentIoU = 0.98;
+
+// A w×h mask, row 0 = top.
+struct CoverageMask {
+  int width = 0, height = 0;
+  std::vector<std::uint8_t> covered;
+  std::size_t count() const;
+};
+
+// The image's non-background pixels: where it has transparent pixels, those with alpha > 0.5;
+// else those whose colour differs by more than 0.05 in a channel from the background, taken as
+// the colour most of the four corners share (the first corner when they all differ).
+CoverageMask imageCoverage(const core::Image& image);
+// tlab's coverage from per-pixel fragment counts (Renderer::layerCounts, row 0 = top).
+CoverageMask coverageFromCounts(const std::vector<std::uint16_t>& counts, int width, int height);
+
+double intersectionOverUnion(const CoverageMask& a, const CoverageMask& b);
+
+struct AlignmentResult {
+  double iou = 0.0;
+  bool aligned = false;       // iou >= kMinimumAlignmentIoU
+  std::string likelyCause;    // empty when aligned
+};
+
+// Compares tlab's coverage with the image's; both must have the same size.
+AlignmentResult compareCoverage(const CoverageMask& tlab, const CoverageMask& theirs);
+
+}  // namespace tlab::stimuli

@@ -1,0 +1,105 @@
+// End to end with a real other renderer: a scene exported by `tlab scene export`, drawn by VTK
+// (scripts/render_with_vtk.py, Debian's python3-vtk9 under xvfb-run) from the exported camera,
+// registered as a factor level { images = "renders/{scene}.png" }, passing the alignment check at
+// `tlab design` time and simulated end to end; the same images from a shifted camera, or flipped,
+// are refused with their IoU and the likely cause.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+
+#include "tests/study/study_test_support.hpp"
+#include "tests/support/run_command.hpp"
+
+using namespace tlab::testing;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kTlab = TLAB_EXE;
+const std::string kVtk = "xvfb-run -a -s '-screen 0 640x480x24' /usr/bin/python3 " + std::string(TLAB_SOURCE_DIR) + "/scripts/render_with_vtk.py";
+
+std::string experimentText(const std::string& images) {
+  return R"(id = "theirs"
+seed = 5
+participants = 2
+counterbalancing = "williams"
+
+[stimulus]
+size = "128x96"
+
+[[factors]]
+name = "method"
+levels = [
+  { name = "constant", style = "constant" },
+  { name = "theirs", images = ")" + images + R"(" },
+]
+
+[[factors]]
+name = "scene"
+levels = [{ name = "torus", scene = "builtin:torus" }, { name = "spheres", scene = "builtin:nested-spheres?n=2" }]
+
+[[tasks]]
+id = "layer"
+task = "layer-index"
+questions = 1
+)";
+}
+
+// Exports each scene and draws it with VTK into dir/folder/NAME.png (extra: render_with_vtk.py options).
+void drawWithVtk(const fs::path& dir, const std::string& folder, const std::string& extra) {
+  fs::create_directories(dir / folder);
+  for (const auto& [name, scene] : {std::pair{"torus", "builtin:torus"}, std::pair{"spheres", "builtin:nested-spheres?n=2"}}) {
+    const auto glb = (dir / (std::string(name) + ".glb")).string();
+    const auto exported = runCommand(kTlab + " scene export " + scene + " --size 128x96 -o " + glb);
+    ASSERT_EQ(exported.exitCode, 0) << exported.err;
+    const auto drawn = runCommand(kVtk + " " + glb + " " + (dir / folder / (std::string(name) + ".png")).string() + " " + extra);
+    ASSERT_EQ(drawn.exitCode, 0) << "VTK could not draw the exported scene (scripts/setup.sh installs python3-vtk9 and xvfb): "
+                                 << drawn.out << drawn.err;
+  }
+}
+
+double iouIn(const std::string& text) {
+  std::smatch m;
+  return std::regex_search(text, m, std::regex(R"(IoU ([0-9.]+))")) ? std::stod(m[1]) : -1.0;
+}
+
+}  // namespace
+
+TEST(ExternalImagesCli, VtkImagesOfTheExportedSceneAlignAndRunEndToEnd) {
+  const auto dir = freshDir("external_images");
+  drawWithVtk(dir, "renders", "");
+  const auto study = (dir / "study.toml").string();
+  std::ofstream(study) << experimentText("renders/{scene}.png");
+  const auto design = runCommand(kTlab + " design " + study);
+  ASSERT_EQ(design.exitCode, 0) << design.err;
+  std::cout << design.out.substr(0, design.out.find("counterbalancing"));
+  EXPECT_NE(design.out.find("renders/torus.png: aligned with builtin:torus (IoU"), std::string::npos) << design.out;
+  EXPECT_NE(design.out.find("renders/spheres.png: aligned with builtin:nested-spheres?n=2 (IoU"), std::string::npos) << design.out;
+  EXPECT_GE(iouIn(design.out), 0.98);
+  const auto db = (dir / "theirs.db").string();
+  const auto sim = runCommand(kTlab + " simulate " + study + " --participants 2 --db " + db);
+  ASSERT_EQ(sim.exitCode, 0) << sim.err;
+  EXPECT_EQ(runCommand("sqlite3 " + quoted(db) + " 'SELECT count(*) FROM trials'").out, "8\n");
+}
+
+TEST(ExternalImagesCli, ImagesFromAShiftedOrFlippedCameraAreRefusedWithTheirIoU) {
+  const auto dir = freshDir("external_images_refused");
+  drawWithVtk(dir, "shifted", "--shift 0.25,0,0");
+  drawWithVtk(dir, "flipped", "--flip");
+  const auto study = (dir / "study.toml").string();
+  std::ofstream(study) << experimentText("shifted/{scene}.png");
+  const auto shifted = runCommand(kTlab + " design " + study);
+  std::cout << shifted.err;
+  EXPECT_EQ(shifted.exitCode, 1);
+  EXPECT_EQ(std::count(shifted.err.begin(), shifted.err.end(), '\n'), 1) << shifted.err;
+  EXPECT_TRUE(std::regex_search(shifted.err, std::regex(R"(shifted/(torus|spheres)\.png: IoU)"))) << shifted.err;
+  EXPECT_LT(iouIn(shifted.err), 0.98);
+  EXPECT_NE(shifted.err.find("likely cause: shifted camera"), std::string::npos) << shifted.err;
+  std::ofstream(study) << experimentText("flipped/{scene}.png");
+  const auto flipped = runCommand(kTlab + " design " + study);
+  std::cout << flipped.err;
+  EXPECT_EQ(flipped.exitCode, 1);
+  EXPECT_NE(flipped.err.find("likely cause: vertical flip"), std::string::npos) << flipped.err;
+}
