@@ -55,30 +55,29 @@ bool isSingular(const Eigen::VectorXd& theta, const Eigen::VectorXd& lower) {
   return false;
 }
 
-// lme4's checkConv: the gradient scaled by the Hessian (solve(chol(H), g)), its smaller
+// lme4's checkConv: the gradient g scaled by the Hessian H (solve(chol(H), g)), its smaller
 // magnitude against the raw gradient, compared with 0.002; parameters on a bound are left out.
-void checkGradient(const ScalarFunction& f, const Eigen::VectorXd& x, const Eigen::VectorXd& lower, const DerivativeSteps& steps,
-                   MixedModelResult& r) {
+void checkGradient(const Eigen::VectorXd& gradient, const Eigen::MatrixXd& hessian, const Eigen::VectorXd& x,
+                   const Eigen::VectorXd& lower, MixedModelResult& r) {
   std::vector<Eigen::Index> free;
   for (Eigen::Index k = 0; k < x.size(); ++k)
     if (!(lower(k) == 0.0 && x(k) < kSingularTolerance)) free.push_back(k);
   if (free.empty()) return;
-  const auto restricted = [&](const Eigen::VectorXd& y) {
-    Eigen::VectorXd full = x;
-    for (std::size_t k = 0; k < free.size(); ++k) full(free[k]) = y(static_cast<Eigen::Index>(k));
-    return f(full);
-  };
-  Eigen::VectorXd y(static_cast<Eigen::Index>(free.size()));
-  for (std::size_t k = 0; k < free.size(); ++k) y(static_cast<Eigen::Index>(k)) = x(free[k]);
-  const Eigen::VectorXd g = richardsonGradient(restricted, y, steps);
-  const Eigen::LLT<Eigen::MatrixXd> h(richardsonHessian(restricted, y, steps));
+  const auto n = static_cast<Eigen::Index>(free.size());
+  Eigen::VectorXd g(n);
+  Eigen::MatrixXd h(n, n);
+  for (Eigen::Index i = 0; i < n; ++i) {
+    g(i) = gradient(free[static_cast<std::size_t>(i)]);
+    for (Eigen::Index j = 0; j < n; ++j) h(i, j) = hessian(free[static_cast<std::size_t>(i)], free[static_cast<std::size_t>(j)]);
+  }
+  const Eigen::LLT<Eigen::MatrixXd> chol(h);
   Eigen::VectorXd scaled = g;
-  if (h.info() == Eigen::Success) scaled = h.matrixU().solve(g);  // R: solve(chol(H), g), chol(H) = U, H = UᵀU
+  if (chol.info() == Eigen::Success) scaled = chol.matrixU().solve(g);  // R: solve(chol(H), g), chol(H) = U, H = UᵀU
   double worst = 0.0;
   Eigen::Index at = 0;
-  for (Eigen::Index k = 0; k < g.size(); ++k) {
+  for (Eigen::Index k = 0; k < n; ++k) {
     const double v = std::min(std::fabs(scaled(k)), std::fabs(g(k)));
-    if (v > worst) worst = v, at = k;
+    if (v > worst) worst = v, at = free[static_cast<std::size_t>(k)];
   }
   if (worst > kGradientTolerance) {
     r.converged = false;
@@ -160,7 +159,7 @@ MixedModelResult fitLinear(const MixedModelMatrices& m, const MixedModelRequest&
   r.theta = opt.x;
   r.evaluations = opt.evaluations;
   addCommonWarnings(m, opt, lower, r);
-  checkGradient(objective, opt.x, lower, {}, r);
+  checkGradient(richardsonGradient(objective, opt.x), richardsonHessian(objective, opt.x), opt.x, lower, r);
   const PlsSolution s = solveLinearMixedModel(m, r.theta);
   r.deviance = opt.value;
   r.sigma = std::sqrt(s.pwrss / static_cast<double>(r.reml ? n - p : n));  // Eq. 40 or Eq. 33
@@ -214,9 +213,9 @@ MixedModelResult fitBinomial(const MixedModelMatrices& m, const MixedModelReques
   r.theta = opt.x.head(nt);
   r.evaluations = opt.evaluations;
   addCommonWarnings(m, opt, thetaLowerBounds(m), r);
-  checkGradient(objective, opt.x, lower, noisySteps(), r);
   // Var(β̂): the β block of (H/2)⁻¹, H the Hessian of the deviance in (θ, β) (glmer's vcov).
   const Eigen::MatrixXd h = richardsonHessian(objective, opt.x, noisySteps());
+  checkGradient(richardsonGradient(objective, opt.x, noisySteps()), h, opt.x, lower, r);
   Eigen::MatrixXd vcov = 2.0 * h.inverse();
   if (!std::isfinite(vcov.sum()) || vcov.bottomRightCorner(p, p).diagonal().minCoeff() <= 0.0) {
     r.warnings.push_back("the Hessian of the deviance is not positive definite: standard errors from R_X instead");
