@@ -56,7 +56,8 @@ void addMixedModels(StudyAnalysis& a, const analysis::Table& table, const Experi
     try {
       a.mixed.push_back({label, fitStudyMixedModel(part, e, a.spec, dv)});
     } catch (const analysis::AnalysisError& error) {
-      a.errors.push_back(label + ": mixed model: " + error.what());
+      const std::string what = error.what();
+      a.errors.push_back(label + ": " + (what.rfind("mixed model", 0) == 0 ? "" : "mixed model: ") + what);
     }
   }
 }

@@ -3,12 +3,11 @@
 // lmerTest 3.1-3, pairwise.t.test, BayesFactor 0.9.12-4.4) from reference/mixed/expected.csv.
 #include <nlohmann/json.hpp>
 
-#include <array>
-#include <cstdio>
 #include <string>
 
 #include "tests/analysis/mixed_reference.hpp"
 #include "tests/analysis/test_support.hpp"
+#include "tests/support/run_command.hpp"
 
 namespace tlab::analysis {
 namespace {
@@ -17,28 +16,14 @@ using testing::MixedReference;
 using testing::referencePath;
 using testing::relativelyNear;
 
-struct RunResult {
-  int exitCode = -1;
-  std::string output;
-};
-
-RunResult runTlab(const std::string& arguments, bool mergeStderr = false) {
-  const std::string command = std::string(TLAB_EXE) + " " + arguments + (mergeStderr ? " 2>&1" : " 2>/dev/null");
-  RunResult result;
-  FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) return result;
-  std::array<char, 4096> buffer{};
-  std::size_t n = 0;
-  while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
+tlab::testing::CommandResult runTlab(const std::string& arguments) {
+  return tlab::testing::runCommand(std::string(TLAB_EXE) + " " + arguments);
 }
 
 nlohmann::json runJson(const std::string& arguments) {
-  const RunResult r = runTlab(arguments);
-  EXPECT_EQ(r.exitCode, 0) << arguments << "\n" << r.output;
-  return nlohmann::json::parse(r.output);
+  const auto r = runTlab(arguments);
+  EXPECT_EQ(r.exitCode, 0) << arguments << "\n" << r.err;
+  return nlohmann::json::parse(r.out);
 }
 
 const MixedReference& reference() {
@@ -90,20 +75,20 @@ TEST(CliMixed, LogisticMixedModelAndLevelsOption) {
                              reference().at("binary_crossed", "fixed", "(Intercept)", "estimate") +
                                  reference().at("binary_crossed", "fixed", "methodsmart", "estimate"),
                              1e-4));
-  const RunResult text = runTlab("stats mixed " + referencePath("binary_crossed.csv") + formula);
+  const auto text = runTlab("stats mixed " + referencePath("binary_crossed.csv") + formula);
   EXPECT_EQ(text.exitCode, 0);
-  EXPECT_NE(text.output.find("Laplace approximation"), std::string::npos) << text.output;
-  EXPECT_NE(text.output.find("methodsmart"), std::string::npos);
+  EXPECT_NE(text.out.find("Laplace approximation"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("methodsmart"), std::string::npos);
 }
 
 TEST(CliMixed, ErrorsNameTheProblem) {
-  const RunResult bad = runTlab("stats mixed " + referencePath("crossed.csv") + " --formula \"rt ~ method\"", true);
+  const auto bad = runTlab("stats mixed " + referencePath("crossed.csv") + " --formula \"rt ~ method\"");
   EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.output.find("no random-effects term"), std::string::npos) << bad.output;
-  const RunResult notBinary =
-      runTlab("stats mixed " + referencePath("crossed.csv") + " --formula \"rt ~ method + (1|participant)\" --family binomial", true);
+  EXPECT_NE(bad.err.find("no random-effects term"), std::string::npos) << bad.err;
+  const auto notBinary =
+      runTlab("stats mixed " + referencePath("crossed.csv") + " --formula \"rt ~ method + (1|participant)\" --family binomial");
   EXPECT_EQ(notBinary.exitCode, 1);
-  EXPECT_NE(notBinary.output.find("must be 0 or 1"), std::string::npos) << notBinary.output;
+  EXPECT_NE(notBinary.err.find("must be 0 or 1"), std::string::npos) << notBinary.err;
 }
 
 TEST(CliPairwise, HolmAdjustedPairedTestsEqualR) {
@@ -120,10 +105,10 @@ TEST(CliPairwise, HolmAdjustedPairedTestsEqualR) {
   const auto none = runJson("stats pairwise " + std::string(TLAB_TEST_DATA) + "/analysis/plant_growth.csv --dv weight --between group "
                             "--adjust none --json");
   EXPECT_EQ(none["comparisons"][0]["p"], none["comparisons"][0]["p_adjusted"]);
-  const RunResult bad = runTlab("stats pairwise " + referencePath("crossed.csv") + " --dv rt --within method --subject participant "
-                                "--adjust tukey", true);
+  const auto bad = runTlab("stats pairwise " + referencePath("crossed.csv") + " --dv rt --within method --subject participant "
+                           "--adjust tukey");
   EXPECT_EQ(bad.exitCode, 1);
-  EXPECT_NE(bad.output.find("'tukey' is not a p-value adjustment"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.err.find("'tukey' is not a p-value adjustment"), std::string::npos) << bad.err;
 }
 
 TEST(CliBayes, TTestBayesFactorEqualsTtestBF) {
@@ -132,8 +117,8 @@ TEST(CliBayes, TTestBayesFactorEqualsTtestBF) {
   EXPECT_TRUE(relativelyNear(paired["bf10"].get<double>(), reference().at("bayes", "paired", "medium", "bf10"), 1e-6));
   const auto wide = runJson("stats ttest " + sleep + " --dv extra --between group --bayes --rscale 1.4142135623730951 --json");
   EXPECT_TRUE(relativelyNear(wide["bf10"].get<double>(), reference().at("bayes", "two_sample", "ultrawide", "bf10"), 1e-6));
-  const RunResult text = runTlab("stats ttest " + sleep + " --dv extra --within group --subject ID --bayes");
-  EXPECT_NE(text.output.find("BF10 = "), std::string::npos) << text.output;
+  const auto text = runTlab("stats ttest " + sleep + " --dv extra --within group --subject ID --bayes");
+  EXPECT_NE(text.out.find("BF10 = "), std::string::npos) << text.out;
 }
 
 }  // namespace
