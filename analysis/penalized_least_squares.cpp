@@ -117,7 +117,8 @@ double devianceAtSigma(const PlsSolution& s, std::size_t n, std::size_t p, bool 
   return ml + s.logDetRX2 - static_cast<double>(p) * std::log(twoPi * sigma2);                       // Eq. 39
 }
 
-LaplaceSolution laplaceDeviance(const MixedModelMatrices& m, const Eigen::VectorXd& theta, const Eigen::VectorXd& beta) {
+LaplaceSolution laplaceDeviance(const MixedModelMatrices& m, const Eigen::VectorXd& theta, const Eigen::VectorXd& beta,
+                                const Eigen::VectorXd* start) {
   const SparseMatrix zl = m.Z * relativeCovarianceFactor(m, theta);
   const Eigen::VectorXd offset = m.X * beta;
   const auto n = m.y.size();
@@ -128,7 +129,7 @@ LaplaceSolution laplaceDeviance(const MixedModelMatrices& m, const Eigen::Vector
     return devres + u.squaredNorm();
   };
   LaplaceSolution s;
-  s.u = Eigen::VectorXd::Zero(zl.cols());
+  s.u = start && start->size() == zl.cols() ? *start : Eigen::VectorXd::Zero(zl.cols());
   double current = objective(s.u, s.devianceResiduals);
   Cholesky chol;
   Eigen::VectorXd w(n), mu(n);

@@ -50,6 +50,9 @@ struct LaplaceSolution {
   bool converged = true;
 };
 
-LaplaceSolution laplaceDeviance(const MixedModelMatrices& m, const Eigen::VectorXd& theta, const Eigen::VectorXd& beta);
+// PIRLS starts at `start` (the mode of a nearby evaluation, as lme4 keeps u) or at u = 0; the
+// objective is convex in u, so either converges to the same mode (to rounding).
+LaplaceSolution laplaceDeviance(const MixedModelMatrices& m, const Eigen::VectorXd& theta, const Eigen::VectorXd& beta,
+                                const Eigen::VectorXd* start = nullptr);
 
 }  // namespace tlab::analysis
