@@ -4,6 +4,7 @@
 #include <random>
 
 #include "analysis/anova.hpp"
+#include "analysis/mixed_model.hpp"
 #include "analysis/rank_tests.hpp"
 #include "analysis/ttest.hpp"
 
