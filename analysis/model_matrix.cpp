@@ -168,38 +168,11 @@ Variable groupingFactor(const Table& table, const std::vector<std::string>& grou
   return g;
 }
 
-}  // namespace
-
-std::size_t MixedModelMatrices::thetaSize() const {
-  std::size_t k = 0;
-  for (const auto& b : blocks) k += b.thetaCount();
-  return k;
-}
-
-MixedModelMatrices buildMixedModelMatrices(const Table& table, const ModelFormula& formula, const ModelVariables& spec) {
-  std::vector<std::string> used = formula.variables();
-  used.push_back(formula.response);
-  for (const auto& r : formula.random) used.insert(used.end(), r.grouping.begin(), r.grouping.end());
-  const std::vector<std::size_t> rows = completeRows(table, used);
+// Z and its blocks (Eqs. 6-7): the random-effects terms ordered by decreasing number of levels
+// (mkReTrms: rev(order(nl))), each level's p_k columns side by side.
+void fillRandomEffects(MixedModelMatrices& m, const Table& table, const ModelFormula& formula, const Variables& vars,
+                       const std::vector<std::size_t>& rows) {
   const std::size_t n = rows.size();
-  if (n == 0) throw AnalysisError(table.source() + ": no row has a value in every column of the formula");
-  MixedModelMatrices m;
-  m.response = formula.logResponse ? "log(" + formula.response + ")" : formula.response;
-  m.y.resize(static_cast<Eigen::Index>(n));
-  const std::size_t yc = table.columnIndex(formula.response);
-  for (std::size_t i = 0; i < n; ++i) {
-    double v = table.number(rows[i], yc);
-    if (formula.logResponse) {
-      if (!(v > 0.0)) throw AnalysisError(table.where(rows[i]) + ": column '" + formula.response + "': log of " + table.text(rows[i], yc) + " is undefined");
-      v = std::log(v);
-    }
-    m.y(static_cast<Eigen::Index>(i)) = v;
-  }
-  Variables vars;
-  for (const auto& name : formula.variables()) vars.emplace(name, makeVariable(table, name, rows, spec));
-  fillFixedEffects(m, modelColumns(formula.fixed, vars, n), n);
-
-  // Random-effects terms, ordered by decreasing number of levels (mkReTrms: rev(order(nl))).
   struct Term { RandomEffectsBlock block; Columns columns; Variable group; };
   std::vector<Term> terms;
   for (const auto& r : formula.random) {
@@ -239,6 +212,40 @@ MixedModelMatrices buildMixedModelMatrices(const Table& table, const ModelFormul
   }
   m.Z.resize(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(offset));
   m.Z.setFromTriplets(triplets.begin(), triplets.end());
+}
+
+}  // namespace
+
+std::size_t MixedModelMatrices::thetaSize() const {
+  std::size_t k = 0;
+  for (const auto& b : blocks) k += b.thetaCount();
+  return k;
+}
+
+MixedModelMatrices buildMixedModelMatrices(const Table& table, const ModelFormula& formula, const ModelVariables& spec) {
+  std::vector<std::string> used = formula.variables();
+  used.push_back(formula.response);
+  for (const auto& r : formula.random) used.insert(used.end(), r.grouping.begin(), r.grouping.end());
+  const std::vector<std::size_t> rows = completeRows(table, used);
+  const std::size_t n = rows.size();
+  if (n == 0) throw AnalysisError(table.source() + ": no row has a value in every column of the formula");
+  MixedModelMatrices m;
+  m.response = formula.logResponse ? "log(" + formula.response + ")" : formula.response;
+  m.y.resize(static_cast<Eigen::Index>(n));
+  const std::size_t yc = table.columnIndex(formula.response);
+  for (std::size_t i = 0; i < n; ++i) {
+    double v = table.number(rows[i], yc);
+    if (formula.logResponse) {
+      if (!(v > 0.0)) throw AnalysisError(table.where(rows[i]) + ": column '" + formula.response + "': log of " + table.text(rows[i], yc) + " is undefined");
+      v = std::log(v);
+    }
+    m.y(static_cast<Eigen::Index>(i)) = v;
+  }
+  Variables vars;
+  for (const auto& name : formula.variables()) vars.emplace(name, makeVariable(table, name, rows, spec));
+  fillFixedEffects(m, modelColumns(formula.fixed, vars, n), n);
+
+  fillRandomEffects(m, table, formula, vars, rows);
   return m;
 }
 
