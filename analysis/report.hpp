@@ -92,6 +92,15 @@ struct ReportImage {
   std::string bytes;
 };
 
+// A titled part of a report that a caller fills (e.g. a mixed model of study/: its description,
+// warnings and tables), rendered after the dependent variables.
+struct ReportSection {
+  std::string heading;
+  std::vector<std::string> paragraphs;
+  std::vector<std::string> warnings;
+  std::vector<TextTable> tables;
+};
+
 struct Report {
   std::string title;
   std::string source;
@@ -100,6 +109,7 @@ struct Report {
   std::vector<DependentVariableReport> dependentVariables;
   std::vector<std::string> notes;     // how the numbers were computed, each once
   std::vector<std::string> warnings;  // what a reader must know first (e.g. simulated data): at the top
+  std::vector<ReportSection> sections;  // after the dependent variables (mixed models)
   std::vector<TextTable> appendices;  // further tables after the dependent variables (questionnaires, stimuli)
   std::vector<ReportImage> images;    // a gallery at the end (the stimuli shown)
 };

@@ -63,6 +63,12 @@ std::string body(const Report& report, int level) {
     html += section(comparisonTable(dv.comparisons), "");
     for (const auto& figure : dv.figures) html += image(figure.caption, "image/svg+xml", figure.svg);
   }
+  for (const auto& s : report.sections) {
+    html += heading(level + 1, s.heading);
+    for (const auto& p : s.paragraphs) html += "<p>" + escapeHtml(p) + "</p>\n";
+    for (const auto& w : s.warnings) html += "<p class=\"warning\">" + escapeHtml(w) + "</p>\n";
+    for (const auto& table : s.tables) html += renderHtmlTable(table);
+  }
   for (const auto& table : report.appendices) html += renderHtmlTable(table);
   if (!report.images.empty()) {
     html += "<div class=\"gallery\">\n";

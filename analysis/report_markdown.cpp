@@ -32,6 +32,12 @@ MarkdownDocument renderMarkdown(const Report& report, const std::string& figureS
       md += "![" + figure.caption + "](" + name + ")\n\n";
     }
   }
+  for (const auto& s : report.sections) {
+    md += "## " + s.heading + "\n\n";
+    for (const auto& p : s.paragraphs) md += p + "\n\n";
+    for (const auto& w : s.warnings) md += "> **" + w + "**\n\n";
+    for (const auto& table : s.tables) md += renderMarkdownTable(table);
+  }
   for (const auto& table : report.appendices) md += renderMarkdownTable(table);
   for (std::size_t k = 0; k < report.images.size(); ++k) {
     const std::string name = figureStem + "_image" + std::to_string(k + 1) + (report.images[k].mimeType == "image/png" ? ".png" : ".bin");

@@ -157,4 +157,19 @@ TextTable mannWhitneyTable(const MannWhitneyResult& m) {
   return t;
 }
 
+TextTable pairwiseTable(const PairwiseResult& r) {
+  TextTable t;
+  t.caption = "Pairwise t-tests of " + r.factor + " (p adjusted: " + std::string(pAdjustName(r.adjust)) + ")";
+  t.header = {"first", "second", "test", "t", "df", "mean diff", "p", "p adjusted"};
+  for (const auto& row : r.rows) {
+    if (!row.error.empty()) {
+      t.rows.push_back({row.first, row.second, row.test, "-", "-", "-", "-", row.error});
+      continue;
+    }
+    t.rows.push_back({row.first, row.second, row.test, formatNumber(row.t, 6), formatNumber(row.df, 6), formatNumber(row.meanDiff, 6),
+                      formatP(row.p), formatP(row.pAdjusted)});
+  }
+  return t;
+}
+
 }  // namespace tlab::analysis

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "analysis/anova.hpp"
+#include "analysis/pairwise_tests.hpp"
 #include "analysis/rank_tests.hpp"
 #include "analysis/report.hpp"
 #include "analysis/text_table.hpp"
@@ -21,5 +22,6 @@ TextTable tTestTable(const TTestResult& t);
 TextTable friedmanTable(const FriedmanResult& f);
 TextTable wilcoxonTable(const WilcoxonSignedRankResult& w);
 TextTable mannWhitneyTable(const MannWhitneyResult& m);
+TextTable pairwiseTable(const PairwiseResult& r);
 
 }  // namespace tlab::analysis

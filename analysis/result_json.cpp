@@ -218,4 +218,16 @@ nlohmann::json toJson(const StatcheckReport& r) {
             {"one_tailed_in_txt", r.oneTailedInText}}}};
 }
 
+nlohmann::json toJson(const PairwiseResult& r) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (const auto& row : r.rows) {
+    nlohmann::json j = {{"first", row.first},         {"second", row.second},         {"test", row.test},
+                        {"t", number(row.t)},         {"df", number(row.df)},         {"mean_diff", number(row.meanDiff)},
+                        {"p", number(row.p)},         {"p_adjusted", number(row.pAdjusted)}};
+    if (!row.error.empty()) j["error"] = row.error;
+    rows.push_back(j);
+  }
+  return {{"factor", r.factor}, {"adjust", std::string(pAdjustName(r.adjust))}, {"comparisons", rows}};
+}
+
 }  // namespace tlab::analysis

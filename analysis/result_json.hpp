@@ -6,6 +6,7 @@
 
 #include "analysis/anova.hpp"
 #include "analysis/descriptives.hpp"
+#include "analysis/pairwise_tests.hpp"
 #include "analysis/rank_tests.hpp"
 #include "analysis/reproduce_carnecky.hpp"
 #include "analysis/reproduce_elmqvist.hpp"
@@ -32,5 +33,7 @@ nlohmann::json toJson(const CarneckyReproduction& r);
 nlohmann::json toJson(const std::vector<TableComparison>& rows);
 nlohmann::json toJson(const ElmqvistReproduction& r);
 nlohmann::json toJson(const StatcheckReport& r);
+// {"factor","adjust","comparisons":[{"first","second","test","t","df","mean_diff","p","p_adjusted","error"?}]}
+nlohmann::json toJson(const PairwiseResult& r);
 
 }  // namespace tlab::analysis

@@ -1,5 +1,6 @@
 #include "app/analysis_text.hpp"
 
+#include "analysis/mixed_model_report.hpp"
 #include "analysis/number_format.hpp"
 #include "analysis/text_table.hpp"
 
@@ -28,10 +29,18 @@ std::string analysisText(const study::StudyAnalysis& a) {
       if (!c.error.empty()) table.rows.push_back({dv.dv, c.factor, c.error, ""});
     }
   }
+  const bool adjusted = a.spec.correction != "none";
   for (const auto& p : a.pairwise)
-    table.rows.push_back({p.dv, p.factor + ": " + p.first + " vs " + p.second + " (paired)",
-                          "t(" + analysis::formatNumber(p.test.df) + ") = " + analysis::formatNumber(p.test.t), analysis::formatP(p.test.p)});
+    table.rows.push_back({p.dv, p.factor + ": " + p.first + " vs " + p.second + " (paired" + (adjusted ? ", " + a.spec.correction + "-adjusted p" : "") + ")",
+                          "t(" + analysis::formatNumber(p.test.df) + ") = " + analysis::formatNumber(p.test.t),
+                          analysis::formatP(adjusted ? p.pAdjusted : p.test.p)});
   out += analysis::renderPlainText(table);
+  for (const auto& m : a.mixed) {
+    out += "\n-- " + m.dv + ": " + m.result.description() + "\n" + analysis::fitSummaryLine(m.result) + "\n";
+    for (const auto& w : m.result.warnings) out += "warning: " + w + "\n";
+    out += analysis::renderPlainText(analysis::fixedEffectsTable(m.result));
+    out += analysis::renderPlainText(analysis::randomEffectsTable(m.result));
+  }
   for (const auto& e : a.errors) out += "note: " + e + "\n";
   return out;
 }

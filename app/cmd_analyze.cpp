@@ -1,6 +1,7 @@
 // tlab analyze study.db [--json]: runs the analysis plan of the experiment stored in the database
 // ([[analysis]] in its file) — ANOVA, t-tests and rank tests through analysis/, plus pairwise
-// paired t-tests for within factors with more than two levels — and prints the results.
+// paired t-tests for within factors with more than two levels (p adjusted as the plan's
+// correction says) and the mixed models of tests = ["mixed"] — and prints the results.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -8,6 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "analysis/mixed_model_report.hpp"
 #include "analysis/number_format.hpp"
 #include "analysis/result_json.hpp"
 #include "analysis/text_table.hpp"
@@ -49,7 +51,14 @@ nlohmann::json toJson(const study::StudyAnalysis& a) {
   }
   j["pairwise"] = nlohmann::json::array();
   for (const auto& p : a.pairwise)
-    j["pairwise"].push_back({{"dv", p.dv}, {"factor", p.factor}, {"first", p.first}, {"second", p.second}, {"t_test", analysis::toJson(p.test)}});
+    j["pairwise"].push_back({{"dv", p.dv}, {"factor", p.factor}, {"first", p.first}, {"second", p.second}, {"t_test", analysis::toJson(p.test)},
+                             {"p", p.test.p}, {"p_adjusted", p.pAdjusted}, {"correction", a.spec.correction}});
+  j["mixed_models"] = nlohmann::json::array();
+  for (const auto& m : a.mixed) {
+    nlohmann::json mj = analysis::toJson(m.result);
+    mj["dv"] = m.dv;
+    j["mixed_models"].push_back(mj);
+  }
   j["errors"] = a.errors;
   return j;
 }

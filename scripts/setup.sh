@@ -9,6 +9,7 @@ packages=(
   libsqlite3-dev sqlite3 libboost-dev libtomlplusplus-dev nlohmann-json3-dev libstb-dev libcli11-dev
   libcgal-dev libeigen3-dev libcairo2-dev libssl-dev libfreetype-dev fonts-dejavu-core
   libre2-dev libpoppler-cpp-dev libxml2-dev
+  libnlopt-dev  # BOBYQA for the mixed models (lme4's default optimizer)
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool imagemagick chromium chromium-driver python3-selenium
   libcpp-httplib-dev libpqxx-dev postgresql  # tlab serve and the PostgreSQL store

@@ -136,8 +136,13 @@ struct AnalysisSpec {
   std::vector<std::string> dependentVariables;  // columns of the trial table: correct, score, rt, error, ...
   std::vector<std::string> within;
   std::vector<std::string> between;
-  std::vector<std::string> tests = {"anova", "t-tests", "rank-tests"};
+  std::vector<std::string> tests = {"anova", "t-tests", "rank-tests"};  // and "mixed"
   double alpha = 0.05;
+  // tests = ["mixed"]: the lme4 formula of the mixed model of the dependent variable it names
+  // (empty: correct as a binomial GLMM, rt as an LMM on log(rt), others as an LMM, with the
+  // factors as fixed effects and (1 | participant) + (1 | stimulus)).
+  std::string formula;
+  std::string correction = "none";  // p adjustment of the pairwise tests: holm, bonferroni, hochberg, BH, BY, none
 };
 
 // The simulated observer (study/simulate/simulated_observer.hpp documents every parameter).

@@ -12,6 +12,9 @@
 
 #include <toml++/toml.h>
 
+#include "analysis/analysis_error.hpp"
+#include "analysis/model_formula.hpp"
+#include "analysis/p_adjust.hpp"
 #include "study/design/counterbalancing.hpp"
 #include "study/design/field_reader.hpp"
 #include "study/design/session_flow_file.hpp"
@@ -166,7 +169,7 @@ std::vector<AnalysisSpec> readAnalyses(const FieldReader& r, const toml::table& 
   for (std::size_t i = 0; i < tables.size(); ++i) {
     const toml::table& t = *tables[i];
     const std::string where = "analysis[" + std::to_string(i + 1) + "]";
-    r.checkKeys(t, where, {"title", "tasks", "dv", "within", "between", "tests", "alpha"});
+    r.checkKeys(t, where, {"title", "tasks", "dv", "within", "between", "tests", "alpha", "formula", "correction"});
     AnalysisSpec a;
     a.title = r.string(t, "title", where, false, e.title.empty() ? e.id : e.title);
     a.tasks = r.strings(t, "tasks", where);
@@ -184,9 +187,25 @@ std::vector<AnalysisSpec> readAnalyses(const FieldReader& r, const toml::table& 
         if (!e.factor(f)) r.fail(t.get("within"), where, "no factor named '" + f + "'");
     if (t.get("tests")) a.tests = r.strings(t, "tests", where);
     for (const auto& test : a.tests)
-      if (test != "anova" && test != "t-tests" && test != "rank-tests")
-        r.fail(t.get("tests"), where + ".tests", "'" + test + "' is not one of anova, t-tests, rank-tests");
+      if (test != "anova" && test != "t-tests" && test != "rank-tests" && test != "mixed")
+        r.fail(t.get("tests"), where + ".tests", "'" + test + "' is not one of anova, t-tests, rank-tests, mixed");
     a.alpha = r.number(t, "alpha", where, 0.05, 1e-6, 0.5);
+    a.formula = r.string(t, "formula", where, false);
+    if (!a.formula.empty()) {
+      try {
+        const analysis::ModelFormula f = analysis::parseModelFormula(a.formula);
+        if (std::find(a.dependentVariables.begin(), a.dependentVariables.end(), f.response) == a.dependentVariables.end())
+          r.fail(t.get("formula"), where + ".formula", "the response '" + f.response + "' is not one of the analysis's dv");
+      } catch (const analysis::AnalysisError& error) {
+        r.fail(t.get("formula"), where + ".formula", error.what());
+      }
+    }
+    a.correction = r.string(t, "correction", where, false, a.correction);
+    try {
+      analysis::parsePAdjustMethod(a.correction);
+    } catch (const analysis::AnalysisError& error) {
+      r.fail(t.get("correction"), where + ".correction", error.what());
+    }
     out.push_back(std::move(a));
   }
   return out;

@@ -121,6 +121,7 @@ struct AnalysisRecord {
   int block = 0;
   double value = 0.0;
   std::size_t sourceRow = 0;  // the trial's id, for messages
+  std::string stimulusSha256;  // the image shown: the stimulus of a mixed model's (1 | stimulus)
 };
 
 // One stored form answer, for report summaries.

@@ -168,12 +168,12 @@ std::vector<AnalysisRecord> analysisRecords(TableQueries& q, const std::string& 
   const auto column = kDependentVariableSql.find(dv);
   if (column == kDependentVariableSql.end()) throw StoreError("unknown dependent variable '" + dv + "'");
   std::vector<AnalysisRecord> out;
-  q.forEachRow("SELECT p.participant, t.levels_json, t.task_id, t.block, " + column->second + ", t.id FROM trials t "
+  q.forEachRow("SELECT p.participant, t.levels_json, t.task_id, t.block, " + column->second + ", t.id, t.stimulus_sha256 FROM trials t "
                "JOIN participants p ON p.id = t.participant JOIN responses r ON r.trial = t.id "
                "WHERE p.experiment " + std::string(kOfExperiment) + " AND p.status != 'dropped' AND t.phase = 'test' AND " +
                    column->second + " IS NOT NULL ORDER BY p.id, t.sequence",
                experimentId, [&](const ResultRow& s) {
-                 out.push_back({s.text(0), s.text(1), s.text(2), int(s.integer(3)), s.real(4), std::size_t(s.integer(5))});
+                 out.push_back({s.text(0), s.text(1), s.text(2), int(s.integer(3)), s.real(4), std::size_t(s.integer(5)), s.text(6)});
                });
   return out;
 }

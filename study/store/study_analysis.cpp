@@ -6,8 +6,10 @@
 #include "analysis/analysis_error.hpp"
 #include "analysis/anova_design.hpp"
 #include "analysis/number_format.hpp"
+#include "analysis/p_adjust.hpp"
 #include "analysis/pairwise_tests.hpp"
 #include "analysis/r_moments.hpp"
+#include "study/store/study_mixed_model.hpp"
 #include "study/store/study_record_tables.hpp"
 
 namespace tlab::study {
@@ -23,9 +25,39 @@ void addPairwise(StudyAnalysis& out, const analysis::Table& table, const Experim
     if (!factor || factor->levels.size() <= 2) continue;
     std::vector<std::string> levels;
     for (const auto& l : factor->levels) levels.push_back(l.name);
+    const std::size_t first = out.pairwise.size();
     for (auto& c : analysis::pairwisePairedTTests(table, "participant", name, levels, dv, 1.0 - out.spec.alpha)) {
       if (c.test) out.pairwise.push_back({label, name, c.first, c.second, *c.test});
       else out.errors.push_back(label + ": " + name + " " + c.first + " vs " + c.second + ": " + c.error);
+    }
+    // The comparisons of one factor form the family the correction adjusts over (p.adjust).
+    std::vector<double> p;
+    for (std::size_t k = first; k < out.pairwise.size(); ++k) p.push_back(out.pairwise[k].test.p);
+    const auto adjusted = analysis::pAdjust(p, analysis::parsePAdjustMethod(out.spec.correction));
+    for (std::size_t k = first; k < out.pairwise.size(); ++k) out.pairwise[k].pAdjusted = adjusted[k - first];
+  }
+}
+
+bool planned(const AnalysisSpec& spec, const char* test) {
+  return std::find(spec.tests.begin(), spec.tests.end(), test) != spec.tests.end();
+}
+
+// tests = ["mixed"]: a mixed model per task (the model needs no balance), or of the pooled tasks
+// the analysis names.
+void addMixedModels(StudyAnalysis& a, const analysis::Table& table, const Experiment& e, const std::string& dv) {
+  std::vector<std::string> tasks;
+  for (const auto& t : table.textColumn("task"))
+    if (std::find(tasks.begin(), tasks.end(), t) == tasks.end()) tasks.push_back(t);
+  std::vector<std::pair<std::string, analysis::Table>> parts;
+  if (tasks.size() <= 1 || !a.spec.tasks.empty()) parts.emplace_back(dv, table);
+  else
+    for (const auto& task : tasks) parts.emplace_back(dv + " [task " + task + "]", table.rowsWhere("task", task));
+  for (const auto& [label, part] : parts) {
+    try {
+      a.mixed.push_back({label, fitStudyMixedModel(part, e, a.spec, dv)});
+    } catch (const analysis::AnalysisError& error) {
+      const std::string what = error.what();
+      a.errors.push_back(label + ": " + (what.rfind("mixed model", 0) == 0 ? "" : "mixed model: ") + what);
     }
   }
 }
@@ -47,6 +79,7 @@ std::string joined(const std::vector<std::string>& items) {
 // names its tasks (tasks = [...]), the tasks are pooled and a note says so.
 std::vector<TaskTable> tablesByTask(const analysis::Table& table, const AnalysisSpec& spec, const std::string& dv,
                                     std::vector<std::string>& notes) {
+  const bool mixedPlanned = std::find(spec.tests.begin(), spec.tests.end(), "mixed") != spec.tests.end();
   std::vector<std::string> tasks;
   for (const auto& t : table.textColumn("task"))
     if (std::find(tasks.begin(), tasks.end(), t) == tasks.end()) tasks.push_back(t);
@@ -61,9 +94,10 @@ std::vector<TaskTable> tablesByTask(const analysis::Table& table, const Analysis
     try {
       analysis::makeAnovaDesign(subset, dv, spec.between, spec.within, "participant");
     } catch (const analysis::AnalysisError& error) {
-      notes.push_back(dv + ": pooled over the tasks " + joined(tasks) + " because task '" + task +
-                      "' cannot be analysed alone (" + error.what() +
-                      "); name the tasks to analyse with tasks = [...] in [[analysis]].");
+      notes.push_back(dv + ": " + (mixedPlanned ? "the ANOVA, t-tests and rank tests are " : "") + "pooled over the tasks " +
+                      joined(tasks) + " because task '" + task + "' cannot be analysed alone by them (" + error.what() +
+                      (mixedPlanned ? "); the mixed model analyses each task alone."
+                                    : "); name the tasks to analyse with tasks = [...] in [[analysis]], or plan tests = [\"mixed\"]."));
       return {{dv, table}};
     }
     split.push_back({dv + " [task " + task + "]", std::move(subset)});
@@ -80,7 +114,9 @@ void addNote(analysis::Report& report, const std::string& note) {
 // One dependent variable (per task, see tablesByTask) merged into the analysis's report.
 void addDependentVariable(StudyAnalysis& a, Store& store, const StoredExperiment& stored, const std::string& dv) {
   std::vector<std::string> notes;
-  for (const TaskTable& part : tablesByTask(analysisTable(store, stored, a.spec, dv), a.spec, dv, notes)) {
+  const analysis::Table table = analysisTable(store, stored, a.spec, dv);
+  if (planned(a.spec, "mixed")) addMixedModels(a, table, stored.experiment, dv);
+  for (const TaskTable& part : tablesByTask(table, a.spec, dv, notes)) {
     analysis::Report r = analysis::makeReport(part.table, analysisPlan(a.spec, dv));
     for (auto& d : r.dependentVariables) d.dv = part.label;
     if (a.report.dependentVariables.empty()) {
@@ -91,8 +127,7 @@ void addDependentVariable(StudyAnalysis& a, Store& store, const StoredExperiment
     a.report.plan.dependentVariables.push_back(part.label);
     a.report.dependentVariables.insert(a.report.dependentVariables.end(), r.dependentVariables.begin(), r.dependentVariables.end());
     for (const auto& note : r.notes) addNote(a.report, note);
-    if (std::find(a.spec.tests.begin(), a.spec.tests.end(), "t-tests") != a.spec.tests.end())
-      addPairwise(a, part.table, stored.experiment, dv, part.label);
+    if (planned(a.spec, "t-tests")) addPairwise(a, part.table, stored.experiment, dv, part.label);
   }
   for (const auto& note : notes) addNote(a.report, note);
 }
@@ -111,7 +146,13 @@ std::vector<PlannedPValue> StudyAnalysis::pValues() const {
       if (c.friedman) out.push_back({dv.dv + ": " + c.factor + " friedman", c.friedman->p});
     }
   }
-  for (const auto& pw : pairwise) out.push_back({pw.dv + ": " + pw.factor + " " + pw.first + " vs " + pw.second + " paired t", pw.test.p});
+  const bool adjusted = spec.correction != "none";
+  for (const auto& pw : pairwise)
+    out.push_back({pw.dv + ": " + pw.factor + " " + pw.first + " vs " + pw.second + " paired t" + (adjusted ? " (" + spec.correction + ")" : ""),
+                   adjusted ? pw.pAdjusted : pw.test.p});
+  for (const auto& m : mixed)
+    for (const auto& e : m.result.fixedEffects)
+      if (e.term != "(Intercept)") out.push_back({m.dv + ": mixed model " + e.term, e.p});
   return out;
 }
 
@@ -134,7 +175,10 @@ std::vector<StudyAnalysis> analyzeStudy(Store& store, const StoredExperiment& st
     for (const auto& pw : a.pairwise)
       a.report.notes.push_back("Pairwise paired t-test, " + pw.dv + ", " + pw.factor + " " + pw.first + " vs " + pw.second + ": t(" +
                                analysis::formatNumber(pw.test.df) + ") = " + analysis::formatNumber(pw.test.t) + ", p = " +
-                               analysis::formatP(pw.test.p) + ", mean difference " + analysis::formatNumber(pw.test.meanDiff));
+                               analysis::formatP(pw.test.p) +
+                               (spec.correction != "none" ? " (" + spec.correction + "-adjusted p = " + analysis::formatP(pw.pAdjusted) + ")" : "") +
+                               ", mean difference " + analysis::formatNumber(pw.test.meanDiff));
+    for (const auto& m : a.mixed) a.report.sections.push_back(mixedModelSection(m.dv, m.result));
     for (const auto& e : a.errors) a.report.notes.push_back(e);
     out.push_back(std::move(a));
   }

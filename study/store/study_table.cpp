@@ -81,7 +81,7 @@ analysis::Table analysisTable(Store& store, const StoredExperiment& stored, cons
   const Experiment& e = stored.experiment;
   std::vector<std::string> names = {"participant"};
   for (const auto& f : e.factors) names.push_back(f.name);
-  names.insert(names.end(), {"task", "block", dv});
+  names.insert(names.end(), {"task", "block", "stimulus", dv});
   analysis::Table table(store.location(), names);
   for (const auto& r : store.analysisRecords(e.id, dv)) {
     if (!spec.tasks.empty() && std::find(spec.tasks.begin(), spec.tasks.end(), r.taskId) == spec.tasks.end()) continue;
@@ -90,6 +90,7 @@ analysis::Table analysisTable(Store& store, const StoredExperiment& stored, cons
     for (const auto& f : e.factors) cells.push_back(levels.value(f.name, std::string()));
     cells.push_back(r.taskId);
     cells.push_back(std::to_string(r.block));
+    cells.push_back(r.stimulusSha256);
     char value[64];
     std::snprintf(value, sizeof value, "%.17g", r.value);
     cells.push_back(value);

@@ -1,8 +1,8 @@
 #pragma once
 // The thin adapter from the study database to analysis/: the experiment stored in the database,
 // and for one analysis of its plan and one dependent variable, an analysis::Table with one row
-// per answered-or-missing test record: participant, every factor (level names), task, block and
-// the dependent variable. Training records and dropped-out participants are left out; records
+// per answered-or-missing test record: participant, every factor (level names), task, block, the
+// stimulus (the sha256 of the image shown) and the dependent variable. Training records and dropped-out participants are left out; records
 // without a value for the variable (e.g. the RT of a missing answer) are left out of that table.
 #include <cstdint>
 #include <string>

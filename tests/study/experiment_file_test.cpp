@@ -120,6 +120,18 @@ task = "layer-index"
   EXPECT_NE(errorOf(six).find("no Graeco-Latin square of order 6 exists"), std::string::npos);
   EXPECT_NE(errorOf(kBase + "[[analysis]]\ndv = [\"speed\"]\n").find("bad.toml:10: analysis[1].dv: 'speed' is not one of"),
             std::string::npos);
+  // tests = ["mixed"]: the formula is parsed and must model one of the analysis's dv; the correction is p.adjust's.
+  EXPECT_NE(errorOf(kBase + "[[analysis]]\ndv = [\"rt\"]\ntests = [\"glmm\"]\n").find("'glmm' is not one of anova, t-tests, rank-tests, mixed"),
+            std::string::npos);
+  EXPECT_NE(errorOf(kBase + "[[analysis]]\ndv = [\"rt\"]\ntests = [\"mixed\"]\nformula = \"rt ~ method\"\n")
+                .find("bad.toml:12: analysis[1].formula: formula 'rt ~ method': no random-effects term"),
+            std::string::npos);
+  EXPECT_NE(errorOf(kBase + "[[analysis]]\ndv = [\"rt\"]\nformula = \"correct ~ method + (1 | participant)\"\n")
+                .find("analysis[1].formula: the response 'correct' is not one of the analysis's dv"),
+            std::string::npos);
+  EXPECT_NE(errorOf(kBase + "[[analysis]]\ndv = [\"rt\"]\ncorrection = \"tukey\"\n")
+                .find("bad.toml:11: analysis[1].correction: 'tukey' is not a p-value adjustment"),
+            std::string::npos);
   EXPECT_NE(errorOf(kBase + "[[factors]]\nname = \"method\"\nlevels = [\"c\", \"d\"]\n").find("factor 'method' is defined twice"),
             std::string::npos);
   EXPECT_NE(errorOf("id = \"x\"\nparticipants = 1\nblock_tasks = \"by-position\"\n[[tasks]]\ntask = \"layer-index\"\n[[tasks]]\n"

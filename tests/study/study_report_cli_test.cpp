@@ -3,6 +3,7 @@
 // questionnaire answers and the stimuli shown, tasks analysed one by one unless they cannot be (then
 // pooled with a note saying why), and the output folder created as `export` creates its folder.
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -86,4 +87,48 @@ TEST(StudyReportCli, TasksAreAnalysedOneByOneUnlessTheyCannotBe) {
   EXPECT_NE(pooledHtml.find("<h2>correct</h2>"), std::string::npos);
   EXPECT_NE(pooledHtml.find("correct: pooled over the tasks front, again because task 'front' cannot be analysed alone"),
             std::string::npos);
+}
+
+// tests = ["mixed"] (issue 31): each task gets its mixed model even though no task can be analysed
+// alone by the ANOVA or t-tests; the report names the model exactly, shows the fixed effects and
+// variance components, the pairwise p-values are Holm-adjusted, and formula = "..." overrides.
+TEST(StudyReportCli, MixedModelsPerTaskHolmCorrectionAndFormula) {
+  const auto dir = freshDir("study_report_mixed");
+  const std::string db = simulate(dir, "mixed_plan.toml", 12);
+  const auto report = runCommand(kTlab + " report " + db + " -o " + (dir / "r.html").string());
+  ASSERT_EQ(report.exitCode, 0) << report.err;
+  const std::string html = readText((dir / "r.html").string());
+  for (const char* task : {"front", "again", "third"}) {
+    EXPECT_NE(html.find(std::string("<h2>correct [task ") + task + "]: mixed model</h2>"), std::string::npos) << task;
+    EXPECT_NE(html.find(std::string("<h2>rt [task ") + task + "]: mixed model</h2>"), std::string::npos) << task;
+  }
+  EXPECT_NE(html.find("binomial family with logit link, fit by maximum likelihood with the Laplace approximation (lme4 formula "
+                      "correct ~ method + (1 | participant) + (1 | stimulus)"),
+            std::string::npos);
+  EXPECT_NE(html.find("linear mixed model fit by REML (lme4 formula log(rt) ~ method + (1 | participant) + (1 | stimulus)"),
+            std::string::npos);
+  EXPECT_NE(html.find("The stimulus is the image shown (its SHA-256)."), std::string::npos);
+  EXPECT_NE(html.find("<caption>Fixed effects</caption>"), std::string::npos);
+  EXPECT_NE(html.find("<caption>Random effects (variance components)</caption>"), std::string::npos);
+  EXPECT_NE(html.find("the mixed model analyses each task alone"), std::string::npos);
+  EXPECT_NE(html.find("holm-adjusted p = "), std::string::npos);
+  const std::string second = readText((dir / "r-2.html").string());  // the second [[analysis]], with its own formula
+  EXPECT_NE(second.find("(lme4 formula rt ~ method + (1 | participant);"), std::string::npos);
+
+  const auto analyze = runCommand(kTlab + " analyze " + db + " --json");
+  ASSERT_EQ(analyze.exitCode, 0) << analyze.err;
+  const auto j = nlohmann::json::parse(analyze.out);
+  const auto& first = j["analyses"][0];
+  ASSERT_EQ(first["mixed_models"].size(), 6u);  // correct and rt, three tasks each
+  for (const auto& m : first["mixed_models"]) {
+    EXPECT_EQ(m["fixed_effects"].size(), 3u);
+    EXPECT_EQ(m["fixed_effects"][1]["term"], "methodsmart");  // the experiment's level order: alpha is the reference
+    EXPECT_TRUE(m.contains("warnings"));
+  }
+  ASSERT_FALSE(first["pairwise"].empty());
+  for (const auto& p : first["pairwise"]) {
+    EXPECT_EQ(p["correction"], "holm");
+    EXPECT_GE(p["p_adjusted"].get<double>(), p["p"].get<double>());
+  }
+  EXPECT_EQ(j["analyses"][1]["mixed_models"][0]["formula"], "rt ~ method + (1 | participant)");
 }
