@@ -43,7 +43,11 @@ void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser
   if (!ended_.empty() && !restartable_) return;
   restartable_ = false;
   if (thread_.joinable()) thread_.join();
-  if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
+  if (channel_->closed()) {  // a fresh start after an error; events not stored yet (a takeover) go with it
+    auto events = channel_->takeEvents();
+    channel_ = std::make_shared<SessionChannel>(timeout_);
+    for (auto& event : events) channel_->note(std::move(event));
+  }
   ended_.clear();
   DisplayInfo display;
   const gpu::GpuInfo& gl = study.worker.gpuInfo();
@@ -122,6 +126,20 @@ void ParticipantSession::drop(ServedStudy& study, const std::string& reason) {
 }
 
 void ParticipantSession::stop() { channel()->close("the server is shutting down"); }
+
+bool ParticipantSession::admit(const std::string& browser) {
+  std::lock_guard lock(mutex_);
+  if (browser == browser_) return true;
+  if (browser_.empty()) {
+    browser_ = browser;
+    return true;
+  }
+  if (!channel_->silent()) return false;
+  std::fprintf(stderr, "serve: participant '%s': session taken over by another browser after the time-out of silence\n", participant_.c_str());
+  channel_->note({monotonicNs(), "takeover", nlohmann::json{{"from", browser_.substr(0, 8)}, {"to", browser.substr(0, 8)}}.dump()});
+  browser_ = browser;
+  return true;
+}
 
 std::string ParticipantSession::state() const {
   std::lock_guard lock(mutex_);

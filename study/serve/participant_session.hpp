@@ -47,6 +47,11 @@ class ParticipantSession {
   // Stops waiting for the page (the server shuts down); the session is left to resume.
   void stop();
   std::string state() const;  // "waiting for the page", "running", "ended: ..."
+  // Whether a request from the browser with this key (its tlab-browser cookie; "" when none) may
+  // act on the session. The first browser that brings a key binds the session to it; another one
+  // is let in only after the session's page has been silent for the time-out, and that takeover
+  // is logged (stderr and a "takeover" event).
+  bool admit(const std::string& browser);
 
  private:
   void walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival);
@@ -59,6 +64,7 @@ class ParticipantSession {
   std::atomic<bool> running_{false};
   mutable std::mutex mutex_;
   std::string ended_;
+  std::string browser_;        // the browser key the session is bound to ("": none yet)
   bool restartable_ = false;  // ended by an error, or timed out before enrolment: a new visit starts again
   std::thread thread_;
 };

@@ -28,6 +28,14 @@ std::string messagePage(const std::string& title, const std::string& text) {
   return document(title, "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>");
 }
 
+std::string completionPage(const std::string& title, const std::string& text, const std::string& code, const std::string& url) {
+  std::string body = "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>";
+  if (!code.empty()) body += "<p>Your completion code: <strong id=\"completion-code\">" + analysis::escapeHtml(code) + "</strong></p>";
+  if (!url.empty())
+    body += "<p><a id=\"completion-link\" href=\"" + analysis::escapeHtml(url) + "\">Return to the study platform to confirm completion</a></p>";
+  return document(title, body);
+}
+
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken) {
   std::string body = "<h1>" + analysis::escapeHtml(status["experiment"].get<std::string>()) + " — admin</h1>";
   body += "<p>" + analysis::escapeHtml(status["summary"].get<std::string>()) + "</p>";

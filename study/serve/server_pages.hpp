@@ -8,6 +8,9 @@
 namespace tlab::study {
 
 std::string messagePage(const std::string& title, const std::string& text);
+// A message page that also shows the completion code and the link back to the platform (a
+// participant who finished and opens the link again); either may be empty.
+std::string completionPage(const std::string& title, const std::string& text, const std::string& code, const std::string& url);
 // The admin page for status() (study/serve/study_server_admin.cpp), with drop/extend forms.
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken);
 
