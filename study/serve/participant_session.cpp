@@ -58,6 +58,8 @@ void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser
   display.browserJson = browser.dump();
   std::vector<ResponderEvent> arrival{{monotonicNs(), "arrival", arrival_.dump()}};
   running_ = true;
+  startedAt_ = std::chrono::steady_clock::now();
+  endedAt_.reset();
   thread_ = std::thread([this, &study, display, arrival] { walk(study, display, arrival); });
 }
 
@@ -83,6 +85,8 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
       endWith(title, "You chose not to take part. You can close this page.");
+      std::lock_guard lock(mutex_);
+      ended_ = "declined";
     } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
       endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
@@ -106,6 +110,8 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
     ended_ = std::string("error: ") + ex.what();
     restartable_ = true;
   }
+  std::lock_guard lock(mutex_);
+  endedAt_ = std::chrono::steady_clock::now();
   running_ = false;
 }
 
@@ -141,9 +147,17 @@ bool ParticipantSession::admit(const std::string& browser) {
   return true;
 }
 
+std::optional<double> ParticipantSession::elapsedSeconds() const {
+  std::lock_guard lock(mutex_);
+  if (!startedAt_) return std::nullopt;
+  const auto until = running_ || !endedAt_ ? std::chrono::steady_clock::now() : *endedAt_;  // an ended session's time stops
+  return std::chrono::duration<double>(until - *startedAt_).count();
+}
+
 std::string ParticipantSession::state() const {
   std::lock_guard lock(mutex_);
-  if (running_) return "running";
+  if (running_) return channel_->idleSeconds() > kIdleSeconds ? "idle" : "running";
+  if (ended_ == "declined") return ended_;
   if (!ended_.empty()) return "ended: " + ended_;
   return "waiting for the page";
 }

@@ -120,6 +120,11 @@ std::vector<SessionChannel::Event> SessionChannel::takeEvents() {
   return std::exchange(events_, {});
 }
 
+double SessionChannel::idleSeconds() const {
+  std::lock_guard lock(mutex_);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - lastActivity_).count();
+}
+
 bool SessionChannel::silent() const {
   std::lock_guard lock(mutex_);
   return std::chrono::steady_clock::now() >= lastActivity_ + timeout_;

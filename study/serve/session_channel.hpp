@@ -76,6 +76,8 @@ class SessionChannel {
   std::vector<Event> takeEvents();
   // No request from the page for the inactivity time-out.
   bool silent() const;
+  // Seconds since the page's last request.
+  double idleSeconds() const;
   int refusals() const;
   void touch();
 

@@ -188,6 +188,14 @@ void StudyServer::adminRoutes() {
     sendJson(res, 200, status());
   });
   http_.Post("/admin/(drop|extend)", [this](const httplib::Request& req, httplib::Response& res) { adminAction(req, res); });
+  http_.Get("/admin/drop", [this](const httplib::Request& req, httplib::Response& res) {  // the confirmation before a drop
+    if (!isAdmin(req)) {
+      res.status = 403;
+      return res.set_content(messagePage("Forbidden", "wrong or missing admin token"), "text/html; charset=utf-8");
+    }
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(dropConfirmationPage(req.has_param("participant") ? req.get_param_value("participant") : "", adminToken_), "text/html; charset=utf-8");
+  });
 }
 
 void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {

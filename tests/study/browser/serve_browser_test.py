@@ -594,9 +594,21 @@ def run_in_browser(args, body):
     return 0 if ok else 1
 
 
+def check_admin_page(p, server):
+    """The admin page after the session: the finished participant with their answers, the target and progress."""
+    link = next(line.split("admin: ", 1)[1].strip() for line in server.stdout if line.startswith("admin:"))
+    p.driver.get(link)
+    text = p.until(lambda: p.driver.find_element(By.ID, "summary").text, "the admin page's summary")
+    check(text.startswith("1 slot assigned, 1 of 1 participant finished (the target)"), f"the admin summary: {text!r}")
+    row = [c.text for c in p.driver.find_elements(By.CSS_SELECTOR, "#slots tr:nth-child(2) td")]
+    check(row[1:3] == [PARTICIPANT, "finished"] and row[7:10] == ["6", "0", "7/7"], f"the admin row of {PARTICIPANT}: {row}")
+    p.screenshot("admin")
+
+
 def whole_session(args, p, server, db, work):
     answers = walk_session(p, server)
     print(f"session walked: {answers}")
+    check_admin_page(p, server)
     check_refused_again(p, server, "already-completed")
     server.stop()
     check_database(args.tlab, db, work / "csv", answers)
