@@ -140,7 +140,7 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
                      "(sha256 " + prepared.stimulusSha256.substr(0, 12) + " vs " + record.stimulusSha256.substr(0, 12) + ")");
   if (plan.taskId != s.lastTask) {
     const TaskSpec* spec = experiment_.task(plan.taskId);
-    const std::string title = plan.phase == Phase::Training ? "Training: " + plan.taskId : "Task: " + plan.taskId;
+    const std::string title = plan.phase == Phase::Training ? "Practice" : "Instructions";  // never the task's internal id
     if (!s.responder.showMessage(title, taskIntroduction(s.plan, index, spec->instructions.empty() ? prepared.question.text : spec->instructions)))
       return false;
     s.lastTask = plan.taskId;

@@ -271,6 +271,8 @@ function hint(s) {
     case 'label-set': return 'Click every marked point you choose (on the picture or below; click again to undo), then Done.';
     case 'floor-point': return 'Click the place on the floor plan.';
     case 'letter': return 'Click the letter (or press its key).';
+    case 'layer-number': return 'Type the layer number (1 is the front surface) and press Enter.';
+    case 'count': return 'Type the number and press Enter.';
     default: return s.format + ' — type it and press Enter.';
   }
 }

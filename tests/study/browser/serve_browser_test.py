@@ -291,6 +291,7 @@ def walk_session(p, server):
     answers = {}  # answer kind (training: "training") -> expected raw_answer text
     seen = {}
     reloaded = False
+    instructions = 0  # task instruction screens seen
     p.driver.get(server.link(PARTICIPANT))
     p.until(lambda: "/p/" in p.driver.current_url, "the redirect to the session page")
     s = p.next_screen(-1)
@@ -307,7 +308,9 @@ def walk_session(p, server):
         seq = s["seq"]
         if kind == "message":
             title = p.find("#screen h1").text
-            if title.startswith(("Task:", "Training:")):  # the instructions say how many trials and their limit
+            check(not re.search(r"\b(layer|boundary|nearest|count|find|letter)\b", title), f"a task's internal id in the title {title!r}")
+            if title in ("Instructions", "Practice"):  # the instructions say how many trials and their limit
+                instructions += 1
                 text = p.find("#screen p.text").text
                 check(re.search(r"There (is 1 (practice )?trial|are \d+ (practice )?trials) of this kind now", text)
                       and "time limit of 5 minutes" in text, f"{title}: the instructions do not say the trials and the time limit: {text!r}")
@@ -343,6 +346,7 @@ def walk_session(p, server):
             p.screenshot("break-over")
             ActionChains(p.driver).send_keys(Keys.ENTER).perform()  # Enter continues once the button is enabled
         elif kind == "end":
+            check(instructions == 6, f"{instructions} task instruction screens, expected 6 (the practice, then each task but the practised one)")
             check(not leaving_asks(p), "leaving the debrief asks the participant to stay")
             check(p.find("#completion-code").text == COMPLETION_CODE, "the completion code on the debrief")
             check(p.find("#completion-link").get_attribute("href") == COMPLETION_URL, "the completion link on the debrief")
@@ -433,6 +437,8 @@ def provoke_refusal(p, answer_kind, seq):
 def answer_trial(p, answer_kind, training):
     """Answers the trial on show by clicking and typing; returns the expected stored answer text."""
     if answer_kind == "layer-number":
+        hint = p.find("#hint").text
+        check(hint == "Type the layer number (1 is the front surface) and press Enter.", f"the layer-number hint: {hint!r}")
         number = 1 if training else 2
         p.type_number(number)
         return str(number)
