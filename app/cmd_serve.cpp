@@ -27,7 +27,8 @@ struct ServeCommandOptions {
   std::string experiment;
   std::string db = "study.db";
   std::string listen = "127.0.0.1:8080";
-  int threads = 256;  // cpp-httplib holds a thread per keep-alive connection: 100 participants need well over 100
+  int threads = 256;  // requests answered at once (idle connections hold none)
+  int perAddress = 2000;
   int slots = 0;
   bool quiet = false;
 };
@@ -83,6 +84,7 @@ void serve(const ServeCommandOptions& o) {
   options.host = host;
   options.port = port;
   options.threads = o.threads;
+  options.connectionsPerAddress = std::size_t(o.perAddress);
   study::StudyServer server(study::ServedStudy{e, store, worker, TLAB_VERSION "+" TLAB_GIT_REVISION}, options, study::newToken());
   const int bound = server.bind();
   const std::string base = "http://" + host + ":" + std::to_string(bound);
@@ -110,7 +112,11 @@ void addServeCommand(CLI::App& app) {
   cmd->add_option("--db", o->db, "study database: a file (SQLite) or postgresql://user@host/dbname")->capture_default_str();
   cmd->add_option("--listen", o->listen, "address and port (port 0: any free one; the server binds to this machine only unless told otherwise)")
       ->capture_default_str();
-  cmd->add_option("--threads", o->threads, "HTTP worker threads")->capture_default_str()->check(CLI::Range(2, 1024));
+  cmd->add_option("--threads", o->threads, "HTTP worker threads (requests answered at once; idle connections hold none)")
+      ->capture_default_str()->check(CLI::Range(2, 1024));
+  cmd->add_option("--max-connections-per-address", o->perAddress,
+                  "open connections one client address may hold; beyond, its longest-idle one is closed")
+      ->capture_default_str()->check(CLI::Range(8, 1000000));
   cmd->add_option("--slots", o->slots, "counterbalancing slots to prepare stimuli for (default: one balanced cycle, at most the experiment's participants)");
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
   cmd->callback([o] { serve(*o); });

@@ -29,6 +29,7 @@ struct TrialView {
 struct Feedback {
   bool correct = false;
   std::string rightAnswer;
+  std::optional<std::string> given;  // the participant's answer as stored (nullopt: none in time)
 };
 
 // The display a window session runs on (stored with the session as JSON).

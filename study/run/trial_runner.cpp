@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/run/fault_point.hpp"
+#include "study/run/session_wording.hpp"
 #include "study/design/form_field.hpp"
 #include "study/design/session_plan.hpp"
 #include "tasks/answer_parser.hpp"
@@ -139,8 +140,9 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
                      "(sha256 " + prepared.stimulusSha256.substr(0, 12) + " vs " + record.stimulusSha256.substr(0, 12) + ")");
   if (plan.taskId != s.lastTask) {
     const TaskSpec* spec = experiment_.task(plan.taskId);
-    const std::string title = plan.phase == Phase::Training ? "Training: " + plan.taskId : "Task: " + plan.taskId;
-    if (!s.responder.showMessage(title, spec->instructions.empty() ? prepared.question.text : spec->instructions)) return false;
+    const std::string title = plan.phase == Phase::Training ? "Practice" : "Instructions";  // never the task's internal id
+    if (!s.responder.showMessage(title, taskIntroduction(s.plan, index, spec->instructions.empty() ? prepared.question.text : spec->instructions)))
+      return false;
     s.lastTask = plan.taskId;
   }
   double limit = plan.timeLimitSeconds;
@@ -168,7 +170,7 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
   if (progress_) progress_({s.participant.participant, plan.sequence, int(s.plan.trials.size()), &plan, response.text, score.correct, response.rtSeconds});
   faultPoint("ack", ++acks_);
   if (plan.phase == Phase::Training && experiment_.trainingFeedback && limit > 0.0) {
-    const bool shown = s.responder.showFeedback(view, {score.correct, rightAnswerText(prepared.question)});
+    const bool shown = s.responder.showFeedback(view, {score.correct, rightAnswerText(prepared.question), response.text});
     storeEvents(s, record.id);
     return shown;
   }
@@ -229,7 +231,9 @@ bool TrialRunner::betweenTrials(Session& s, std::size_t done) {
   for (std::size_t i = 0; i <= done; ++i)
     if (trials[i].phase == Phase::Test && (!b.blocks || endsBlock(s.plan, i))) ++count;
   if ((b.blocks && !endsBlock(s.plan, done)) || count % b.every != 0) return true;
-  const bool continued = s.responder.takeBreak(b);
+  BreakSpec shown = b;  // the break says what is left
+  shown.text = breakText(s.plan, done, b);
+  const bool continued = s.responder.takeBreak(shown);
   storeEvents(s, std::nullopt);
   return continued;
 }

@@ -1,6 +1,7 @@
 #include "study/serve/browser_responder.hpp"
 
 #include <chrono>
+#include <cstdio>
 
 #include "study/serve/flow_pages.hpp"
 
@@ -20,6 +21,7 @@ void BrowserResponder::event(std::int64_t tNs, std::string kind, std::string det
 
 std::vector<ResponderEvent> BrowserResponder::takeEvents() {
   for (auto& [tNs, detail] : channel_->takeRefusals()) event(tNs, "refused-reply", std::move(detail));
+  for (auto& e : channel_->takeEvents()) event(e.tNs, std::move(e.kind), std::move(e.detail));
   return std::exchange(events_, {});
 }
 
@@ -80,6 +82,11 @@ std::optional<Response> BrowserResponder::respond(const TrialView& view) {
     }
     response.text = reply->value["text"].get<std::string>();
     response.rtSeconds = reply->value["rt_ms"].get<double>() / 1000.0;
+    if (*response.rtSeconds > view.limitSeconds) {  // kept with its text, scored as missing by the runner
+      char late[96];
+      std::snprintf(late, sizeof late, "late: answered %.3f s after the time limit", *response.rtSeconds - view.limitSeconds);
+      response.note = late;
+    }
     // Both ends of the browser's RT, on the page's clock (performance.now()), kept as an event.
     nlohmann::json times{{"rt_ms", reply->value["rt_ms"]}};
     for (const char* key : {"painted_ms", "input_ms"})

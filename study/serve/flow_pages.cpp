@@ -75,6 +75,7 @@ Screen feedbackScreen(const TrialView& view, const Feedback& feedback) {
   Screen s = continueScreen({{"kind", "feedback"},
                              {"correct", feedback.correct},
                              {"right_answer", feedback.rightAnswer},
+                             {"given", feedback.given ? json(*feedback.given) : json()},
                              {"image", {{"sha256", view.prepared.stimulusSha256}, {"width", view.plan.stimulus.width}, {"height", view.plan.stimulus.height}}}});
   s.images.insert(view.prepared.stimulusSha256);
   return s;

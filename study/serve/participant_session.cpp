@@ -43,7 +43,11 @@ void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser
   if (!ended_.empty() && !restartable_) return;
   restartable_ = false;
   if (thread_.joinable()) thread_.join();
-  if (channel_->closed()) channel_ = std::make_shared<SessionChannel>(timeout_);  // a fresh start after an error
+  if (channel_->closed()) {  // a fresh start after an error; events not stored yet (a takeover) go with it
+    auto events = channel_->takeEvents();
+    channel_ = std::make_shared<SessionChannel>(timeout_);
+    for (auto& event : events) channel_->note(std::move(event));
+  }
   ended_.clear();
   DisplayInfo display;
   const gpu::GpuInfo& gl = study.worker.gpuInfo();
@@ -54,6 +58,8 @@ void ParticipantSession::start(ServedStudy& study, const nlohmann::json& browser
   display.browserJson = browser.dump();
   std::vector<ResponderEvent> arrival{{monotonicNs(), "arrival", arrival_.dump()}};
   running_ = true;
+  startedAt_ = std::chrono::steady_clock::now();
+  endedAt_.reset();
   thread_ = std::thread([this, &study, display, arrival] { walk(study, display, arrival); });
 }
 
@@ -79,6 +85,8 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
       endWith(title, "You chose not to take part. You can close this page.");
+      std::lock_guard lock(mutex_);
+      ended_ = "declined";
     } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
       endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
@@ -102,6 +110,8 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
     ended_ = std::string("error: ") + ex.what();
     restartable_ = true;
   }
+  std::lock_guard lock(mutex_);
+  endedAt_ = std::chrono::steady_clock::now();
   running_ = false;
 }
 
@@ -123,9 +133,31 @@ void ParticipantSession::drop(ServedStudy& study, const std::string& reason) {
 
 void ParticipantSession::stop() { channel()->close("the server is shutting down"); }
 
+bool ParticipantSession::admit(const std::string& browser) {
+  std::lock_guard lock(mutex_);
+  if (browser == browser_) return true;
+  if (browser_.empty()) {
+    browser_ = browser;
+    return true;
+  }
+  if (!channel_->silent()) return false;
+  std::fprintf(stderr, "serve: participant '%s': session taken over by another browser after the time-out of silence\n", participant_.c_str());
+  channel_->note({monotonicNs(), "takeover", nlohmann::json{{"from", browser_.substr(0, 8)}, {"to", browser.substr(0, 8)}}.dump()});
+  browser_ = browser;
+  return true;
+}
+
+std::optional<double> ParticipantSession::elapsedSeconds() const {
+  std::lock_guard lock(mutex_);
+  if (!startedAt_) return std::nullopt;
+  const auto until = running_ || !endedAt_ ? std::chrono::steady_clock::now() : *endedAt_;  // an ended session's time stops
+  return std::chrono::duration<double>(until - *startedAt_).count();
+}
+
 std::string ParticipantSession::state() const {
   std::lock_guard lock(mutex_);
-  if (running_) return "running";
+  if (running_) return channel_->idleSeconds() > kIdleSeconds ? "idle" : "running";
+  if (ended_ == "declined") return ended_;
   if (!ended_.empty()) return "ended: " + ended_;
   return "waiting for the page";
 }

@@ -8,6 +8,7 @@
 #include <chrono>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 
@@ -46,7 +47,17 @@ class ParticipantSession {
   void drop(ServedStudy& study, const std::string& reason);
   // Stops waiting for the page (the server shuts down); the session is left to resume.
   void stop();
-  std::string state() const;  // "waiting for the page", "running", "ended: ..."
+  // "waiting for the page", "running", "idle" (running, but no request from the page for
+  // kIdleSeconds: its browser is likely closed), "declined", "ended: ...".
+  std::string state() const;
+  static constexpr double kIdleSeconds = 45.0;  // an open page asks for its screen every 30 s
+  // Seconds since the session thread started (nullopt: not started in this server's run).
+  std::optional<double> elapsedSeconds() const;
+  // Whether a request from the browser with this key (its tlab-browser cookie; "" when none) may
+  // act on the session. The first browser that brings a key binds the session to it; another one
+  // is let in only after the session's page has been silent for the time-out, and that takeover
+  // is logged (stderr and a "takeover" event).
+  bool admit(const std::string& browser);
 
  private:
   void walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival);
@@ -59,6 +70,8 @@ class ParticipantSession {
   std::atomic<bool> running_{false};
   mutable std::mutex mutex_;
   std::string ended_;
+  std::optional<std::chrono::steady_clock::time_point> startedAt_, endedAt_;
+  std::string browser_;        // the browser key the session is bound to ("": none yet)
   bool restartable_ = false;  // ended by an error, or timed out before enrolment: a new visit starts again
   std::thread thread_;
 };

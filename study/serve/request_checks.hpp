@@ -14,6 +14,10 @@ namespace tlab::study {
 // 1 to 128 letters, digits or _.@- (Prolific ids and the like; nothing a path or a log could misread).
 bool validParticipantId(const std::string& id);
 
+// The browser key of a request: the value of its tlab-browser cookie when that is 32 hex digits
+// (the participant page makes one per browser), "" otherwise.
+std::string browserKey(const std::string& cookieHeader);
+
 // The page's display report: only numbers, booleans and short texts, at most 40 keys; the
 // reason when it is anything else.
 std::optional<std::string> checkDisplay(const nlohmann::json& body);

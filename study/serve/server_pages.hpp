@@ -8,7 +8,14 @@
 namespace tlab::study {
 
 std::string messagePage(const std::string& title, const std::string& text);
-// The admin page for status() (study/serve/study_server_admin.cpp), with drop/extend forms.
+// A message page that also shows the completion code and the link back to the platform (a
+// participant who finished and opens the link again); either may be empty.
+std::string completionPage(const std::string& title, const std::string& text, const std::string& code, const std::string& url);
+// The admin page for status() (study/serve/study_server_admin.cpp), with drop/extend forms; it
+// reloads itself every 10 s. Drop leads to dropConfirmationPage first.
 std::string adminPage(const nlohmann::json& status, const std::string& adminToken);
+std::string dropConfirmationPage(const std::string& participant, const std::string& adminToken);
+// "45 s", "3 min 05 s", "1 h 02 min" ("" for null).
+std::string durationCell(const nlohmann::json& seconds);
 
 }  // namespace tlab::study

@@ -60,6 +60,9 @@ SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& 
   }
   if (seq != seq_ || !screen_.check) {
     error = "screen " + std::to_string(seq) + " is no longer shown; the current one is " + std::to_string(seq_);
+    // An answer to a trial that has gone (its time ran out on the server first): kept as an event.
+    if (body.is_object() && body.value("type", "") == "answer" && events_.size() < 100)
+      events_.push_back({receivedNs, "late-answer", jsonText({{"screen", seq}, {"current", seq_}, {"body", body.dump().substr(0, 500)}})});
     return Delivery::Stale;
   }
   Checked c;
@@ -105,6 +108,26 @@ bool SessionChannel::mayFetch(const std::string& sha) const {
 std::vector<std::pair<std::int64_t, std::string>> SessionChannel::takeRefusals() {
   std::lock_guard lock(mutex_);
   return std::exchange(refused_, {});
+}
+
+void SessionChannel::note(Event event) {
+  std::lock_guard lock(mutex_);
+  if (events_.size() < 100) events_.push_back(std::move(event));
+}
+
+std::vector<SessionChannel::Event> SessionChannel::takeEvents() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(events_, {});
+}
+
+double SessionChannel::idleSeconds() const {
+  std::lock_guard lock(mutex_);
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - lastActivity_).count();
+}
+
+bool SessionChannel::silent() const {
+  std::lock_guard lock(mutex_);
+  return std::chrono::steady_clock::now() >= lastActivity_ + timeout_;
 }
 
 int SessionChannel::refusals() const {

@@ -66,6 +66,18 @@ class SessionChannel {
   bool mayFetch(const std::string& sha) const;
   // Refused replies are kept as events ("refused-reply") until the session thread stores them.
   std::vector<std::pair<std::int64_t, std::string>> takeRefusals();
+  // Answers to a screen that had gone ("late-answer") and what the server noted of the session
+  // ("takeover"): events kept until the session thread stores them.
+  struct Event {
+    std::int64_t tNs = 0;
+    std::string kind, detail;
+  };
+  void note(Event event);
+  std::vector<Event> takeEvents();
+  // No request from the page for the inactivity time-out.
+  bool silent() const;
+  // Seconds since the page's last request.
+  double idleSeconds() const;
   int refusals() const;
   void touch();
 
@@ -87,6 +99,7 @@ class SessionChannel {
   std::int64_t delivered_ = 0, handled_ = 0, popped_ = 0;  // replies counted
   std::set<std::string> images_;
   std::vector<std::pair<std::int64_t, std::string>> refused_;
+  std::vector<Event> events_;
   int refusals_ = 0;
   std::string closedBecause_;
   bool timedOut_ = false;

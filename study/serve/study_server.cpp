@@ -1,12 +1,6 @@
 #include "study/serve/study_server.hpp"
 
-#include <arpa/inet.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
 #include <stdexcept>
 
 #include "core/file_text.hpp"
@@ -22,6 +16,7 @@ namespace {
 using nlohmann::json;
 
 constexpr const char* kToken = "([0-9a-f]{64})";
+constexpr int kIdleSeconds = 120;  // a keep-alive connection with nothing to say is closed after this
 
 void sendJson(httplib::Response& res, int status, const json& body) {
   res.status = status;
@@ -46,22 +41,14 @@ std::optional<json> parseBody(const httplib::Request& req, httplib::Response& re
 }  // namespace
 
 StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string adminToken)
-    : study_(std::move(study)), options_(std::move(options)), adminToken_(std::move(adminToken)) {
-  const int threads = options_.threads;
-  http_.new_task_queue = [threads] { return new httplib::ThreadPool(std::size_t(threads)); };
+    : study_(std::move(study)),
+      options_(std::move(options)),
+      adminToken_(std::move(adminToken)),
+      dispatcher_(DispatchLimits{options_.threads, options_.connectionsPerAddress, std::size_t(16 * options_.threads), std::chrono::milliseconds(10000),
+                                 std::chrono::milliseconds(kIdleSeconds * 1000), 16 * 1024, options_.maxBodyBytes},
+                  [this](int fd, std::size_t bytes) { return http_.answer(fd, bytes, 10); }) {
   http_.set_payload_max_length(options_.maxBodyBytes);
-  // SO_REUSEADDR (a restarted server gets its port back at once) but not httplib's default
-  // SO_REUSEPORT, which would let a second server bind the same port and split the participants.
-  http_.set_socket_options([](int sock) {
-    const int yes = 1;
-    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
-  });
-  http_.set_tcp_nodelay(true);  // headers and body go out as separate writes: without it each reply waits ~40 ms for a delayed ACK
-  // A page makes dozens of requests; closing its connection every 5 (cpp-httplib's default) makes
-  // it reconnect in bursts that overflow the listen backlog (5): dropped SYNs cost 1 s, 3 s, 7 s.
-  http_.set_keep_alive_max_count(1000);
-  http_.set_read_timeout(10, 0);
-  http_.set_write_timeout(10, 0);
+  http_.set_keep_alive_timeout(kIdleSeconds);  // what the Keep-Alive header tells the browser: the dispatcher's idle time-out
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
                              {"Referrer-Policy", "no-referrer"},
                              {"X-Frame-Options", "DENY"},
@@ -90,54 +77,30 @@ StudyServer::~StudyServer() {
   for (auto& [token, s] : byToken_) s->stop();
 }
 
-namespace {
+int StudyServer::bind() { return options_.port = dispatcher_.bind(options_.host, options_.port); }
 
-// cpp-httplib listens with a backlog of 5 (compiled into Debian's library): a burst of arrivals
-// then loses SYNs, which browsers retry only after 1, 3, 7 s. Linux lets listen() be called again
-// on a listening socket to change its backlog; the socket is found by its bound port.
-void widenListenBacklog(int port) {
-  for (const auto& entry : std::filesystem::directory_iterator("/proc/self/fd")) {
-    const int fd = std::atoi(entry.path().filename().c_str());
-    int listening = 0;
-    socklen_t size = sizeof listening;
-    sockaddr_storage address{};
-    socklen_t length = sizeof address;
-    if (::getsockopt(fd, SOL_SOCKET, SO_ACCEPTCONN, &listening, &size) != 0 || !listening) continue;
-    if (::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) continue;
-    const int bound = address.ss_family == AF_INET    ? ntohs(reinterpret_cast<sockaddr_in*>(&address)->sin_port)
-                      : address.ss_family == AF_INET6 ? ntohs(reinterpret_cast<sockaddr_in6*>(&address)->sin6_port)
-                                                      : -1;
-    if (bound == port) ::listen(fd, SOMAXCONN);
-  }
-}
+void StudyServer::listen() { dispatcher_.run(); }
 
-}  // namespace
-
-int StudyServer::bind() {
-  if (options_.port == 0) {  // any free port (tests): the one bound is printed
-    const int port = http_.bind_to_any_port(options_.host);
-    if (port > 0) {
-      widenListenBacklog(port);
-      return options_.port = port;
-    }
-  } else if (http_.bind_to_port(options_.host, options_.port)) {
-    widenListenBacklog(options_.port);
-    return options_.port;
-  }
-  throw std::runtime_error("cannot listen on " + options_.host + ":" + std::to_string(options_.port) +
-                             " (the port is in use or the address is not this machine's); choose another with --listen HOST:PORT");
-}
-
-void StudyServer::listen() { http_.listen_after_bind(); }
-
-void StudyServer::stop() { http_.stop(); }
+void StudyServer::stop() { dispatcher_.stop(); }
 
 std::shared_ptr<ParticipantSession> StudyServer::session(const std::string& token) {
   std::lock_guard lock(mutex_);
   const auto it = byToken_.find(token);
-  if (it == byToken_.end()) return nullptr;
-  it->second->channel()->touch();
-  return it->second;
+  return it == byToken_.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<ParticipantSession> StudyServer::admitted(const httplib::Request& req, httplib::Response& res) {
+  const auto s = session(req.matches[1]);
+  if (!s) {
+    refuse(res, 404, "no such session");
+    return nullptr;
+  }
+  if (!s->admit(browserKey(req.get_header_value("Cookie")))) {
+    refuse(res, 403, "other browser: this session is open in another browser");
+    return nullptr;
+  }
+  s->channel()->touch();  // only the session's own browser keeps it alive
+  return s;
 }
 
 bool StudyServer::isAdmin(const httplib::Request& req) const {
@@ -181,18 +144,18 @@ void StudyServer::pageRoutes() {
 // The participant page's JSON API: every route is bound to one session token.
 void StudyServer::apiRoutes() {
   http_.Get(std::string("/api/") + kToken + "/screen", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = session(req.matches[1]);
-    if (!s) return refuse(res, 404, "no such session");
+    const auto s = admitted(req, res);
+    if (!s) return;
     sendJson(res, 200, s->channel()->current());
   });
   http_.Get(std::string("/api/") + kToken + "/config", [this](const httplib::Request& req, httplib::Response& res) {
-    if (!session(req.matches[1])) return refuse(res, 404, "no such session");
+    if (!admitted(req, res)) return;
     const Experiment& e = study_.experiment;
     sendJson(res, 200, {{"title", e.participantTitle.empty() ? "Study" : e.participantTitle}, {"calibrate", e.online.sizeCalibration}});
   });
   http_.Post(std::string("/api/") + kToken + "/display", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = session(req.matches[1]);
-    if (!s) return refuse(res, 404, "no such session");
+    const auto s = admitted(req, res);
+    if (!s) return;
     const auto body = parseBody(req, res);
     if (!body) return;
     if (const auto error = checkDisplay(*body)) return refuse(res, 400, "display: " + *error);
@@ -200,14 +163,15 @@ void StudyServer::apiRoutes() {
     sendJson(res, 200, s->channel()->awaitScreenAfter(0, std::chrono::milliseconds(15000)));
   });
   http_.Post(std::string("/api/") + kToken + "/reply", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = session(req.matches[1]);
-    if (!s) return refuse(res, 404, "no such session");
+    const auto s = admitted(req, res);
+    if (!s) return;
     reply(*s, req, res);
   });
   http_.Get(std::string("/api/") + kToken + "/image/([0-9a-f]{64})\\.png", [this](const httplib::Request& req, httplib::Response& res) {
-    const auto s = session(req.matches[1]);
+    const auto s = admitted(req, res);
+    if (!s) return;
     const std::string sha = req.matches[2];
-    if (!s || !s->channel()->mayFetch(sha)) return refuse(res, 404, "no such image for this session");
+    if (!s->channel()->mayFetch(sha)) return refuse(res, 404, "no such image for this session");
     const auto path = study_.worker.imagePath(sha);
     if (!path) return refuse(res, 404, "no such image");
     const auto png = core::readFileText(*path);
@@ -224,6 +188,14 @@ void StudyServer::adminRoutes() {
     sendJson(res, 200, status());
   });
   http_.Post("/admin/(drop|extend)", [this](const httplib::Request& req, httplib::Response& res) { adminAction(req, res); });
+  http_.Get("/admin/drop", [this](const httplib::Request& req, httplib::Response& res) {  // the confirmation before a drop
+    if (!isAdmin(req)) {
+      res.status = 403;
+      return res.set_content(messagePage("Forbidden", "wrong or missing admin token"), "text/html; charset=utf-8");
+    }
+    res.set_header("Cache-Control", "no-store");
+    res.set_content(dropConfirmationPage(req.has_param("participant") ? req.get_param_value("participant") : "", adminToken_), "text/html; charset=utf-8");
+  });
 }
 
 void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
@@ -240,7 +212,12 @@ void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
   // The store first: a participant who finished (declined, was dropped) in this server's run has a
   // session in memory too, whose walk would be refused by the runner if it started again.
   const auto existing = study_.store.findParticipant(e.id, id);
-  if (existing && existing->status == "finished") return page(409, "Already completed", "You have already completed this study. Thank you!");
+  if (existing && existing->status == "finished") {  // the code and the link again: the participant may not have copied them
+    res.status = 409;
+    return res.set_content(completionPage("Already completed", "You have already completed this study. Thank you!", e.debrief.completionCode,
+                                          e.online.completionUrl),
+                           "text/html; charset=utf-8");
+  }
   if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
   if (existing && existing->status == "dropped")
     return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");

@@ -1,5 +1,6 @@
 #pragma once
-// StudyServer: `tlab serve` — one experiment served over HTTP (cpp-httplib) to participants'
+// StudyServer: `tlab serve` — one experiment served over HTTP (cpp-httplib's routing behind an
+// epoll ConnectionDispatcher, so idle connections hold no thread) to participants'
 // browsers. Participants arrive at /s/<experiment id>?<participant parameter>=ID (Prolific's
 // PROLIFIC_PID, or "pid"), get an unguessable token and the participant page (/p/<token>), whose
 // script walks the session flow through the JSON API under /api/<token>/. Every request is bound
@@ -13,7 +14,9 @@
 
 #include <httplib.h>
 
+#include "study/serve/connection_dispatcher.hpp"
 #include "study/serve/participant_session.hpp"
+#include "study/serve/routing_server.hpp"
 
 namespace tlab::study {
 
@@ -21,7 +24,8 @@ struct ServeOptions {
   std::string host = "127.0.0.1";
   int port = 8080;
   std::size_t maxBodyBytes = 64 * 1024;
-  int threads = 256;  // HTTP worker threads: one per open keep-alive connection (browsers open several)
+  int threads = 256;  // HTTP worker threads: one per request being answered (a reply waits for the session thread)
+  std::size_t connectionsPerAddress = 2000;  // beyond: the address's longest-idle connection is closed
 };
 
 class StudyServer {
@@ -48,12 +52,16 @@ class StudyServer {
   void adminAction(const httplib::Request& req, httplib::Response& res);
   nlohmann::json status();
   std::shared_ptr<ParticipantSession> session(const std::string& token);
+  // The session of an API request (its token in the path), when its browser may act on it; else
+  // nullptr with the refusal written into `res` (404: no such session; 403: another browser's).
+  std::shared_ptr<ParticipantSession> admitted(const httplib::Request& req, httplib::Response& res);
   bool isAdmin(const httplib::Request& req) const;
 
   ServedStudy study_;
   ServeOptions options_;
   std::string adminToken_;
-  httplib::Server http_;
+  RoutingServer http_;               // the routes, fed one whole request at a time by
+  ConnectionDispatcher dispatcher_;  // the event loop that holds every connection
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<ParticipantSession>> byToken_, byParticipant_;
 };

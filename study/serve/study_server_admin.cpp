@@ -1,10 +1,51 @@
-// StudyServer's admin side: progress per slot, live counts, drop and extend.
+// StudyServer's admin side: progress per slot against the target, what each live session shows
+// (screen, elapsed and idle time), answered and missing responses, drop (after a confirmation) and extend.
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
+
+#include "study/run/session_wording.hpp"
 
 #include "study/serve/server_pages.hpp"
 #include "study/serve/study_server.hpp"
 
 namespace tlab::study {
+
+namespace {
+
+// What a live session shows now: the screen's kind, a trial with its place ("trial 3 of 10").
+std::string screenText(const nlohmann::json& page) {
+  const std::string kind = page.value("kind", "wait");
+  if (kind != "trial") return kind;
+  const std::string phase = page.value("phase", "") == "training" ? "training " : "trial ";
+  return phase + std::to_string(page.value("index", 0)) + " of " + std::to_string(page.value("total", 0));
+}
+
+// Per participant: answered and missing responses of test trials stored (training is not analysed).
+std::map<std::string, std::pair<int, int>> answeredAndMissing(Store& store, const std::string& experimentId) {
+  std::map<std::string, std::pair<int, int>> out;
+  for (const auto& r : store.analysisRecords(experimentId, "answered")) {
+    auto& [answered, missing] = out[r.participant];
+    (r.value != 0.0 ? answered : missing) += 1;
+  }
+  return out;
+}
+
+// The live part of a participant's row: session state, screen, elapsed and idle seconds.
+void addLive(nlohmann::json& row, const ParticipantSession* session) {
+  if (!session) {
+    row.update({{"session", "not connected to this server"}, {"screen", ""}, {"elapsed_s", nullptr}, {"idle_s", nullptr}});
+    return;
+  }
+  const auto channel = session->channel();
+  const auto elapsed = session->elapsedSeconds();
+  row.update({{"session", session->state()},
+              {"screen", screenText(channel->current())},
+              {"elapsed_s", elapsed ? nlohmann::json(std::round(*elapsed)) : nlohmann::json()},
+              {"idle_s", std::round(channel->idleSeconds())}});
+}
+
+}  // namespace
 
 nlohmann::json StudyServer::status() {
   const Experiment& e = study_.experiment;
@@ -13,8 +54,9 @@ nlohmann::json StudyServer::status() {
     std::lock_guard lock(mutex_);
     live = byParticipant_;
   }
+  const auto counts = answeredAndMissing(study_.store, e.id);
   nlohmann::json slots = nlohmann::json::array();
-  int running = 0, finished = 0, answered = 0;
+  int running = 0, idle = 0, finished = 0, answered = 0, missing = 0;
   for (const auto& a : study_.store.assignments(e.id)) {
     int done = 0, total = 0;
     if (const auto p = study_.store.findParticipant(e.id, a.participant))
@@ -22,13 +64,17 @@ nlohmann::json StudyServer::status() {
         ++total;
         done += t.answered ? 1 : 0;
       }
+    const auto c = counts.count(a.participant) ? counts.at(a.participant) : std::pair<int, int>{0, 0};
+    nlohmann::json row{{"slot", a.slot}, {"participant", a.participant}, {"status", a.status}, {"answered", c.first}, {"missing", c.second},
+                       {"trials", std::to_string(done) + "/" + std::to_string(total)}};
     const auto s = live.find(a.participant);
-    const std::string session = s == live.end() ? "not connected to this server" : s->second->state();
-    running += session == "running" ? 1 : 0;
+    addLive(row, s == live.end() ? nullptr : s->second.get());
+    running += row["session"] == "running";
+    idle += row["session"] == "idle";
     finished += a.status == "finished" ? 1 : 0;
-    answered += done;
-    slots.push_back({{"slot", a.slot}, {"participant", a.participant}, {"status", a.status}, {"answered", std::to_string(done) + "/" + std::to_string(total)},
-                     {"session", session}});
+    answered += c.first;
+    missing += c.second;
+    slots.push_back(row);
   }
   // Who arrived but has no slot yet: at the welcome or the consent (a newcomer is enrolled once they agree).
   nlohmann::json arrived = nlohmann::json::array();
@@ -36,15 +82,20 @@ nlohmann::json StudyServer::status() {
     bool assigned = false;
     for (const auto& s : slots) assigned = assigned || s["participant"] == participant;
     if (assigned) continue;
-    const std::string state = session->state();
-    running += state == "running" ? 1 : 0;
-    arrived.push_back({{"participant", participant}, {"session", state}});
+    nlohmann::json row{{"participant", participant}};
+    addLive(row, session.get());
+    running += row["session"] == "running";
+    idle += row["session"] == "idle";
+    arrived.push_back(row);
   }
-  char summary[200];
-  std::snprintf(summary, sizeof summary, "%zu slots assigned, %d running now, %d finished, %d responses stored; %zu participants arrived at this server",
-                slots.size(), running, finished, answered, live.size());
-  return {{"experiment", e.id}, {"summary", summary}, {"slots", slots}, {"arrived", arrived},
-          {"running", running}, {"finished", finished}, {"responses", answered}};
+  const int target = std::max(e.participants, 1);
+  const std::string summary = countOf(long(slots.size()), "slot", "slots") + " assigned, " + std::to_string(finished) + " of " +
+                              countOf(target, "participant", "participants") + " finished (the target); " + std::to_string(running) +
+                              " running now, " + std::to_string(idle) + " idle; " + countOf(answered, "answer", "answers") + " and " +
+                              countOf(missing, "missing response", "missing responses") + " to test trials stored; " +
+                              countOf(long(live.size()), "participant", "participants") + " arrived at this server";
+  return {{"experiment", e.id}, {"summary", summary}, {"slots", slots}, {"arrived", arrived}, {"target", target}, {"finished", finished},
+          {"running", running}, {"idle", idle}, {"responses", answered + missing}, {"answered", answered}, {"missing", missing}};
 }
 
 void StudyServer::admin(const httplib::Request& req, httplib::Response& res) {

@@ -3,6 +3,7 @@
 // reach, hostile requests, time-outs with back-filled slots, the admin page, and a restart.
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <thread>
 
@@ -181,17 +182,42 @@ TEST_F(Serve, TheAdminPageNeedsItsTokenAndDropsFreeTheSlot) {
   const std::string waiting = arrive(page, "at-consent");  // arrived, not enrolled: listed apart from the slots
   page.api(waiting, "display", display());
   const std::string token = arrive(page, "p1");
-  walk(page, token, page.api(token, "display", display()).body, 1);
+  walk(page, token, page.api(token, "display", display()).body, 3);  // the 2 training trials and 1 test trial
+  const std::string decliner = arrive(page, "declines");  // declined: ended, never "running"
+  const json welcome = page.api(decliner, "display", display()).body;
+  const json consent = page.api(decliner, "reply", {{"seq", welcome["seq"]}, {"type", "continue"}}).body;
+  json after = page.api(decliner, "reply", {{"seq", consent["seq"]}, {"type", "consent"}, {"accepted", false}}).body;
+  for (int i = 0; i < 5 && after["kind"] == "message"; ++i) after = page.api(decliner, "reply", {{"seq", after["seq"]}, {"type", "continue"}}).body;
+  EXPECT_EQ(after["kind"], "end") << after.dump();
   const json status = page.get("/admin/status.json?token=" + admin).body;
   ASSERT_EQ(status["slots"].size(), 1u);
-  EXPECT_EQ(status["slots"][0]["participant"], "p1");
-  EXPECT_EQ(status["slots"][0]["answered"], "1/10");
-  ASSERT_EQ(status["arrived"].size(), 1u);
-  EXPECT_EQ(status["arrived"][0]["participant"], "at-consent");
+  const json& p1 = status["slots"][0];
+  EXPECT_EQ(p1["participant"], "p1");
+  EXPECT_EQ(p1["answered"], 1);
+  EXPECT_EQ(p1["missing"], 0);
+  EXPECT_EQ(p1["trials"], "3/10");
+  EXPECT_EQ(p1["session"], "running");
+  EXPECT_EQ(p1["screen"], "trial 2 of 8") << p1.dump();
+  EXPECT_TRUE(p1["elapsed_s"].is_number() && p1["idle_s"].is_number() && p1["idle_s"] <= p1["elapsed_s"]) << p1.dump();
+  ASSERT_EQ(status["arrived"].size(), 2u);
+  std::map<std::string, std::string> arrivedState;
+  for (const auto& a : status["arrived"]) arrivedState[a["participant"]] = a["session"];
+  EXPECT_EQ(arrivedState, (std::map<std::string, std::string>{{"at-consent", "running"}, {"declines", "declined"}}));
   EXPECT_EQ(status["running"], 2);
+  EXPECT_EQ(status["target"], 4);
+  EXPECT_EQ(status["summary"], "1 slot assigned, 0 of 4 participants finished (the target); 2 running now, 0 idle; 1 answer and 0 missing "
+                               "responses to test trials stored; 3 participants arrived at this server");
   const auto html = page.raw("/admin?token=" + admin);
   EXPECT_EQ(html->status, 200);
   EXPECT_NE(html->body.find("p1"), std::string::npos);
+  EXPECT_NE(html->body.find("<meta http-equiv=\"refresh\" content=\"10\">"), std::string::npos) << "the page reloads itself";
+  // Drop asks first: the page's drop button leads to a confirmation with the real (POST) drop.
+  EXPECT_EQ(page.raw("/admin/drop?participant=p1&token=" + std::string(64, 'c'))->status, 403);
+  const auto confirm = page.raw("/admin/drop?participant=p1&token=" + admin);
+  EXPECT_EQ(confirm->status, 200);
+  EXPECT_NE(confirm->body.find("<h1>Drop p1?</h1>"), std::string::npos) << confirm->body;
+  EXPECT_NE(confirm->body.find("<form method=\"post\" action=\"/admin/drop\">"), std::string::npos) << confirm->body;
+  EXPECT_EQ(page.screen(token).body["kind"], "trial") << "the confirmation page drops nobody";
   EXPECT_EQ(page.post("/admin/drop", "participant=p1&token=" + std::string(64, 'b'), "application/x-www-form-urlencoded").status, 403);
   EXPECT_EQ(page.post("/admin/drop", "participant=p1&token=" + admin, "application/x-www-form-urlencoded").status, 303);
   EXPECT_EQ(page.screen(token).body["kind"], "end");
@@ -199,10 +225,10 @@ TEST_F(Serve, TheAdminPageNeedsItsTokenAndDropsFreeTheSlot) {
   EXPECT_EQ(page.arrive(kStudy, "PROLIFIC_PID=p1").first, 409);
   const std::string next = arrive(page, "p2");
   walk(page, next, page.api(next, "display", display()).body, 0);
-  const json after = page.get("/admin/status.json?token=" + admin).body;
+  const json later = page.get("/admin/status.json?token=" + admin).body;
   bool backFilled = false;
-  for (const auto& s : after["slots"]) backFilled = backFilled || (s["participant"] == "p2" && s["slot"] == 0);
-  EXPECT_TRUE(backFilled) << after.dump();
+  for (const auto& s : later["slots"]) backFilled = backFilled || (s["participant"] == "p2" && s["slot"] == 0);
+  EXPECT_TRUE(backFilled) << later.dump();
 }
 
 TEST_F(Serve, ASilentParticipantTimesOutAndTheSlotIsBackFilled) {

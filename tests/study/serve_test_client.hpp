@@ -26,7 +26,11 @@ struct Reply {
 
 class PageClient {
  public:
-  explicit PageClient(int port) : http_("127.0.0.1", port) { http_.set_read_timeout(30, 0); }
+  // `cookie`: the Cookie header a browser would send ("tlab-browser=KEY"); none by default.
+  explicit PageClient(int port, const std::string& cookie = "") : http_("127.0.0.1", port) {
+    http_.set_read_timeout(30, 0);
+    if (!cookie.empty()) http_.set_default_headers({{"Cookie", cookie}});
+  }
 
   // GET /s/STUDY?QUERY: the status and the redirect's token ("" when none).
   std::pair<int, std::string> arrive(const std::string& study, const std::string& query) {

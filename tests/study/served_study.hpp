@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"
@@ -16,9 +17,13 @@ namespace tlab::testing {
 
 class ServedStudy {
  public:
-  ServedStudy(const std::string& experiment, const std::string& db, const std::filesystem::path& dir, int port = 0)
+  // `extra`: more arguments of tlab serve.
+  ServedStudy(const std::string& experiment, const std::string& db, const std::filesystem::path& dir, int port = 0,
+              const std::vector<std::string>& extra = {})
       : out_((dir / ("serve-" + std::to_string(port) + "-" + std::to_string(++starts()) + ".out")).string()), err_(out_ + ".err") {
-    pid_ = spawnProcess({TLAB_EXE, "serve", experiment, "--db", db, "--listen", "127.0.0.1:" + std::to_string(port), "--quiet"}, out_, err_);
+    std::vector<std::string> command{TLAB_EXE, "serve", experiment, "--db", db, "--listen", "127.0.0.1:" + std::to_string(port), "--quiet"};
+    command.insert(command.end(), extra.begin(), extra.end());
+    pid_ = spawnProcess(command, out_, err_);
     waitForPort();
   }
   ~ServedStudy() { stop(SIGTERM); }

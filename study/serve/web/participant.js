@@ -13,6 +13,18 @@ let timers = [];         // cleared when the screen changes
 let keyHandler = null;
 let resizeHandler = null;
 
+// This browser's key, a cookie made once: the server binds a session to the browser that started
+// it, so that knowing a participant id is not enough to take the session over from elsewhere.
+(function browserKey() {
+  if (/(?:^|;\s*)tlab-browser=[0-9a-f]{32}(?:;|$)/.test(document.cookie)) return;
+  const bytes = crypto.getRandomValues(new Uint8Array(16));
+  document.cookie = 'tlab-browser=' + Array.from(bytes, (b) => b.toString(16).padStart(2, '0')).join('') + '; path=/; max-age=31536000; SameSite=Strict';
+})();
+
+// Leaving the page (back button, closing the tab) during a session asks first.
+const inSession = () => current !== null && !['end', 'error'].includes(current.kind);
+addEventListener('beforeunload', (e) => { if (inSession()) { e.preventDefault(); e.returnValue = ''; } });
+
 function el(tag, attrs, ...children) {
   const e = document.createElement(tag);
   for (const [k, v] of Object.entries(attrs || {})) {
@@ -38,6 +50,11 @@ async function request(method, path, body) {
   }
   let json = {};
   try { json = await r.json(); } catch (e) { json = { error: 'The server sent an unreadable reply.' }; }
+  if (r.status === 403) {  // the session belongs to another browser: nothing here can go on
+    problem('This session is open in another browser or on another device. Please continue there. If you closed it, ' +
+      'this page can take the session over once it has been idle for the time-out.', () => location.reload());
+    return new Promise(() => {});
+  }
   return { status: r.status, body: json };
 }
 
@@ -49,7 +66,10 @@ async function reply(body) {
   if (r.status === 200) show(r.body);
   else if (r.status === 409) show(r.body.screen);
   else if (r.status === 400) showInlineError(r.body.error || 'This answer was not accepted.');
-  else problem('Your answer could not be saved (' + (r.body.error || 'server error') + '). Please check your connection and try again.', () => reply(body));
+  else {  // resolves with the reply to the retry: the caller learns how the answer finally fared
+    return new Promise((resolve) => problem('Your answer could not be saved (' + (r.body.error || 'server error') + '). Please check your connection and try again.',
+      () => resolve(reply(body))));
+  }
   return r;
 }
 
@@ -140,7 +160,11 @@ function form(s) {
     getters.push(get);
     main.append(el('div', { class: 'field', 'data-field': f.id }, el('p', {}, f.text + (f.required ? '' : ' (optional)')), input));
   });
-  main.append(el('button', { type: 'button', id: 'submit', onclick: () => reply({ type: 'form', values: getters.map((g) => g()) }) }, 'Continue'));
+  const go = el('button', { type: 'button', id: 'submit', onclick: () => {
+    go.disabled = true;  // one submission in flight; a refused one gives the form back
+    reply({ type: 'form', values: getters.map((g) => g()) }).then((r) => { if (current === s) go.disabled = false; });
+  } }, 'Continue');
+  main.append(go);
 }
 
 // The picture at its rendered size in device pixels; a warning when the window is too small for
@@ -247,17 +271,41 @@ function hint(s) {
     case 'label-set': return 'Click every marked point you choose (on the picture or below; click again to undo), then Done.';
     case 'floor-point': return 'Click the place on the floor plan.';
     case 'letter': return 'Click the letter (or press its key).';
+    case 'layer-number': return 'Type the layer number (1 is the front surface) and press Enter.';
+    case 'count': return 'Type the number and press Enter.';
     default: return s.format + ' — type it and press Enter.';
   }
 }
 
+// After a refused answer the trial takes answers again: the number box is focused with its text
+// selected, so the corrected answer is simply typed over it.
+function answerAgain() {
+  const box = document.getElementById('answer');
+  if (box) { box.focus(); box.select(); }
+}
+
+// The time limit ran out: the page says so, takes no more input, and then tells the server.
+function timeUp() {
+  main.querySelectorAll('input, button').forEach((e) => { e.disabled = true; });
+  main.querySelectorAll('.error').forEach((e) => e.remove());
+  const hint = document.getElementById('hint');
+  const note = el('p', { class: 'time-up', id: 'time-up', role: 'alert' }, 'Time is up');
+  if (hint) hint.replaceWith(note); else main.append(note);
+  timers.push(setTimeout(() => reply({ type: 'timeout' }), 1500));
+}
+
 function trial(s) {
   let onset = null, done = false;
+  // One answer in flight at a time; a refused one (400) gives the trial back to the participant.
   const submit = (answer, ev) => {
     if (done || onset === null) return;
     done = true;
     const at = ev && ev.timeStamp ? ev.timeStamp : performance.now();
-    reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset), painted_ms: onset, input_ms: at });
+    reply({ type: 'answer', answer, rt_ms: Math.max(0, at - onset), painted_ms: onset, input_ms: at }).then((r) => {
+      if (current !== s || r.status !== 400) return;
+      done = false;
+      answerAgain();
+    });
   };
   const stage = el('div', { class: 'stage', id: 'stage' });
   const img = picture(s.image, api('image/' + s.image.sha256 + '.png'), s.floor_plan ? s.floor_plan.width : 0);
@@ -282,7 +330,7 @@ function trial(s) {
     const tick = () => {
       const left = Math.max(0, s.limit_s - before - (performance.now() - onset) / 1000);
       clock.textContent = Math.floor(left / 60) + ':' + String(Math.floor(left % 60)).padStart(2, '0');
-      if (left <= 0 && !done) { done = true; reply({ type: 'timeout' }); }
+      if (left <= 0 && !done) { done = true; timeUp(); }
     };
     tick();
     timers.push(setInterval(tick, 250));
@@ -290,9 +338,12 @@ function trial(s) {
 }
 
 function feedback(s) {
-  main.append(el('h1', {}, s.correct ? 'Correct' : 'Not quite'), paragraphs('The right answer: ' + s.right_answer),
-    picture(s.image, api('image/' + s.image.sha256 + '.png')),
-    el('p', {}, el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue')));
+  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue');
+  const given = s.given === null || s.given === undefined ? 'none (the time was up)' : s.given;
+  main.append(el('h1', {}, s.correct ? 'Correct' : 'Not quite'),
+    el('p', { class: 'text', id: 'given' }, 'Your answer: ' + given), el('p', { class: 'text', id: 'right' }, 'The right answer: ' + s.right_answer),
+    picture(s.image, api('image/' + s.image.sha256 + '.png')), el('p', {}, go));
+  onKey((e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); go.click(); } });
 }
 
 function pause(s) {
@@ -307,6 +358,7 @@ function pause(s) {
   tick();
   timers.push(setInterval(tick, 250));
   main.append(el('h1', {}, 'Break'), paragraphs(s.text), go, left);
+  onKey((e) => { if (e.key === 'Enter' && !go.disabled) { e.preventDefault(); go.click(); } });
 }
 
 function end(s) {

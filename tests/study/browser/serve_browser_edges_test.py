@@ -4,8 +4,8 @@
 * the credit-card size calibration ("virtual chinrest"): the slider is moved until the card is
   as wide as it should be, and the session's display JSON stores the pixels per centimetre;
 * a participant who declines consent: the page says so and only the decision is stored;
-* a trial whose time limit runs out in the browser: the countdown reaches 0, the next screen comes
-  by itself, and the trial is stored as missing ("time limit reached in the browser").
+* a trial whose time limit runs out in the browser: the countdown reaches 0, the page says "Time is
+  up", the next screen comes by itself, and the trial is stored as missing ("time limit reached in the browser").
 
 Uses the browser, server and participant helpers of serve_browser_test.py.
 
@@ -70,9 +70,17 @@ def time_out_then_answer(p, server):
         p.find("#accept" if s["kind"] == "consent" else "#continue").click()
     p.trial_ready()
     p.screenshot("trial-before-time-out")
-    # Nobody answers: the countdown runs out and the page sends the time-out itself.
+    # Nobody answers: the countdown runs out, the page says "Time is up" on the trial, and sends the
+    # time-out itself. What the page showed is recorded as it changes (no sampling that could miss it).
+    p.driver.execute_script(
+        "window.timeUpOn = []; const m = document.getElementById('screen');"
+        "new MutationObserver(() => { const t = document.getElementById('time-up');"
+        " if (t && !timeUpOn.includes(m.dataset.seq)) timeUpOn.push(m.dataset.seq, t.textContent); })"
+        ".observe(m, {childList: true, subtree: true});")
     s = p.next_screen(seq)
     check(s["kind"] == "trial", f"the second trial expected after the time-out, got {s}")
+    shown = p.driver.execute_script("return window.timeUpOn;")
+    check(shown == [str(seq), "Time is up"], f"'Time is up' on the timed-out trial before the next screen: {shown}")
     p.trial_ready()
     p.type_number(1)
     s = p.next_screen(s["seq"])

@@ -6,7 +6,9 @@ the information form, a training trial with feedback, one trial of every answer 
 Enter, label hit boxes on the picture, Done, the floor plan, a letter button), the turntable
 drag, a page reload in the middle of a trial, a break, the questionnaire and the debrief with
 its completion code and link. The database is then checked through `tlab export --csv`, and
-the same participant id arriving again is refused as "already completed".
+the same participant id arriving again is refused as "already completed". Every trial first gets an
+answer the server refuses (typed out of range, or clicked and changed on its way to the server);
+the page must take the corrected answer, which is the one stored.
 
 A screenshot of every screen goes into --screenshots DIR (or $TLAB_BROWSER_SCREENSHOTS; default:
 a temporary folder, printed). Synchronisation is by explicit waits on the page's state
@@ -188,9 +190,11 @@ class Participant:
         """A real mouse click at the element's centre (the browser's hit testing decides what is clicked)."""
         ActionChains(self.driver).move_to_element(element).click().perform()
 
-    def type_number(self, number):
+    def type_number(self, number, select_all=False):
         box = self.find("#answer")
         self.until(lambda: self.driver.switch_to.active_element == box, "the answer box to have the focus")
+        if select_all:
+            box.send_keys(Keys.CONTROL, "a")
         box.send_keys(str(number), Keys.ENTER)
 
 
@@ -260,11 +264,34 @@ def drag_turntable(p):
     p.until(lambda: p.driver.execute_script("return document.querySelector('#stage img').complete;"), "the new view to load")
 
 
+def leaving_asks(p):
+    """Whether the page asks before it is left (its beforeunload handler cancels the event)."""
+    return p.driver.execute_script("const e = new Event('beforeunload', {cancelable: true}); dispatchEvent(e); return e.defaultPrevented;")
+
+
+def check_other_browser_refused(server):
+    """The participant's link opened in a second browser (another profile: another cookie) while the
+    session is live: that page says the session is open elsewhere and gets no screen."""
+    profile = Path(tempfile.mkdtemp(prefix="tlab-other-browser-"))
+    other = start_browser(profile)
+    try:
+        other.get(server.link(PARTICIPANT))
+        q = Participant(other, Path(tempfile.gettempdir()))
+        q.until(lambda: q.find("#problem").is_displayed(), "the other browser's notice")
+        text = q.find("#problem-text").text
+        check("open in another browser" in text, f"the other browser's notice says: {text!r}")
+        check(q.state()["kind"] == "", f"the other browser was shown a screen: {q.state()}")
+    finally:
+        other.quit()
+        shutil.rmtree(profile, ignore_errors=True)
+
+
 def walk_session(p, server):
     """Walks one participant through the whole session; returns what was answered, by answer kind."""
     answers = {}  # answer kind (training: "training") -> expected raw_answer text
     seen = {}
     reloaded = False
+    instructions = 0  # task instruction screens seen
     p.driver.get(server.link(PARTICIPANT))
     p.until(lambda: "/p/" in p.driver.current_url, "the redirect to the session page")
     s = p.next_screen(-1)
@@ -280,6 +307,15 @@ def walk_session(p, server):
         p.screenshot(name)
         seq = s["seq"]
         if kind == "message":
+            title = p.find("#screen h1").text
+            check(not re.search(r"\b(layer|boundary|nearest|count|find|letter)\b", title), f"a task's internal id in the title {title!r}")
+            if title in ("Instructions", "Practice"):  # the instructions say how many trials and their limit
+                instructions += 1
+                text = p.find("#screen p.text").text
+                check(re.search(r"There (is 1 (practice )?trial|are \d+ (practice )?trials) of this kind now", text)
+                      and "time limit of 5 minutes" in text, f"{title}: the instructions do not say the trials and the time limit: {text!r}")
+            if seen[key] == 1:
+                check_other_browser_refused(server)
             p.find("#continue").click()
         elif kind == "consent":
             check(p.find("#decline").is_displayed(), "the consent screen has no decline button")
@@ -298,15 +334,20 @@ def walk_session(p, server):
             heading = p.find("h1").text
             check(heading in ("Correct", "Not quite"), f"feedback heading: {heading!r}")
             check("The right answer:" in p.find("#screen").text, "the feedback shows no right answer")
-            p.find("#continue").click()
+            given = p.find("#given").text
+            check(given == "Your answer: " + answers["training"], f"the feedback shows {given!r}, the participant answered {answers['training']!r}")
+            ActionChains(p.driver).send_keys(Keys.ENTER).perform()  # Enter continues, as the button does
         elif kind == "break":
             go = p.find("#continue")
             check(not go.is_enabled(), "the break's Continue button is enabled before min_seconds")
             check(re.search(r"in \d+ s", p.find("#screen").text), "the break shows no countdown")
+            check(re.search(r"\d+ trials? (is|are) left\.", p.find("#screen").text), f"the break does not say what is left: {p.find('#screen').text!r}")
             p.until(go.is_enabled, "the break's Continue button to be enabled")
             p.screenshot("break-over")
-            go.click()
+            ActionChains(p.driver).send_keys(Keys.ENTER).perform()  # Enter continues once the button is enabled
         elif kind == "end":
+            check(instructions == 6, f"{instructions} task instruction screens, expected 6 (the practice, then each task but the practised one)")
+            check(not leaving_asks(p), "leaving the debrief asks the participant to stay")
             check(p.find("#completion-code").text == COMPLETION_CODE, "the completion code on the debrief")
             check(p.find("#completion-link").get_attribute("href") == COMPLETION_URL, "the completion link on the debrief")
             # A reload of the debrief (to copy the code) shows it again.
@@ -331,6 +372,11 @@ def walk_session(p, server):
                 check_picture_unscaled(p, "trial after reload")
                 p.screenshot("trial-label-after-reload")
                 reloaded = True
+            check(leaving_asks(p), f"{name}: leaving the page during a trial does not ask first (beforeunload)")
+            refused = provoke_refusal(p, answer_kind, seq)
+            if answer_kind in ("layer-number", "label-set"):
+                p.screenshot(f"{name}-refused")
+            check(refused, f"{name}: no reason for the refusal on the page")
             answers["training" if training else answer_kind] = answer_trial(p, answer_kind, training)
         else:
             raise AssertionError(f"unexpected screen kind {kind!r}")
@@ -352,9 +398,47 @@ def fill_form(p):
             field.find_element(By.CSS_SELECTOR, "input").send_keys(value)
 
 
+def corrupt_next_answer(p, answer):
+    """The page's next answer reaches the server as `answer` (a value the server refuses): for the
+    widgets where no click can make a refused answer, the refusal is the server's real reply."""
+    p.driver.execute_script(
+        "const send = window.fetch, bad = JSON.parse(arguments[0]);"
+        "window.fetch = (url, options) => { if (options && options.body) { const b = JSON.parse(options.body);"
+        " if (b.type === 'answer') { window.fetch = send; b.answer = bad; options = Object.assign({}, options, {body: JSON.stringify(b)}); } }"
+        " return send(url, options); };", json.dumps(answer))
+
+
+def provoke_refusal(p, answer_kind, seq):
+    """A first answer the server refuses (typed, or clicked and changed on its way): the page says
+    why and stays on the trial, ready for the corrected answer that answer_trial then gives."""
+    if answer_kind == "layer-number":
+        p.type_number(0)  # below 1: refused by the server
+    elif answer_kind == "count":
+        p.type_number(1000001)  # above 1000000: refused by the server
+    elif answer_kind == "label":
+        corrupt_next_answer(p, "ZZ")
+        p.press_at(p.finds("#stage .hit")[0])
+    elif answer_kind == "label-set":
+        corrupt_next_answer(p, ["ZZ"])
+        p.find("#submit").click()
+    elif answer_kind == "floor-point":
+        corrupt_next_answer(p, {"x": -1, "y": -1})
+        p.press_at(p.find("#floor-plan"))
+    elif answer_kind == "letter":
+        corrupt_next_answer(p, "?")
+        p.press_at(p.finds("#screen button.letter")[0])
+    else:
+        raise AssertionError(f"an answer kind the test does not know: {answer_kind}")
+    error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], f"{answer_kind}: the refused answer's message")[0]
+    check(p.state()["seq"] == seq and p.state()["kind"] == "trial", f"{answer_kind}: the trial was left after a refused answer")
+    return error.text
+
+
 def answer_trial(p, answer_kind, training):
     """Answers the trial on show by clicking and typing; returns the expected stored answer text."""
     if answer_kind == "layer-number":
+        hint = p.find("#hint").text
+        check(hint == "Type the layer number (1 is the front surface) and press Enter.", f"the layer-number hint: {hint!r}")
         number = 1 if training else 2
         p.type_number(number)
         return str(number)
@@ -363,7 +447,7 @@ def answer_trial(p, answer_kind, training):
         drag_turntable(p)
         p.screenshot("trial-count-turned")
         check_too_small_notice(p)
-        p.type_number(3)
+        p.type_number(3, select_all=True)
         return "3"
     if answer_kind in ("label", "label-set"):
         check_hits_on_labels(p, answer_kind)
@@ -432,7 +516,10 @@ def check_database(tlab, db, folder, answers):
     check(any(o.get("showing") == 2 and o.get("via") == "browser" for o in onsets), f"no onset with showing 2: {onsets}")
     check(sum(1 for e in events if e["kind"] == "camera") >= 1, "no camera event from the turntable drag")
     refused = [json.loads(e["detail"]) for e in events if e["kind"] == "refused-reply"]
-    check(len(refused) == 1 and '"form"' in refused[0]["body"], f"refused replies (expected the empty form only): {refused}")
+    forms = [r for r in refused if '"form"' in r["body"]]
+    answers_refused = [r for r in refused if '"answer"' in r["body"]]
+    check(len(forms) == 1 and len(answers_refused) == 7 and len(refused) == 8,
+          f"refused replies (expected the empty form and the first answer of each of the 7 trials): {refused}")
     sessions = read_csv(folder, "sessions.csv")
     check(len(sessions) == 1, f"{len(sessions)} sessions")
     session = sessions[0]
@@ -454,6 +541,9 @@ def check_database(tlab, db, folder, answers):
 def check_refused_again(p, server, name):
     p.driver.get(server.link(PARTICIPANT))
     p.until(lambda: "Already completed" in p.driver.find_element(By.TAG_NAME, "body").text, "the 'already completed' page")
+    # The code and the way back to the platform again (the participant may not have copied them).
+    check(p.find("#completion-code").text == COMPLETION_CODE, "the completion code on the 'already completed' page")
+    check(p.find("#completion-link").get_attribute("href") == COMPLETION_URL, "the completion link on the 'already completed' page")
     p.screenshot(name)
 
 
@@ -510,9 +600,21 @@ def run_in_browser(args, body):
     return 0 if ok else 1
 
 
+def check_admin_page(p, server):
+    """The admin page after the session: the finished participant with their answers, the target and progress."""
+    link = next(line.split("admin: ", 1)[1].strip() for line in server.stdout if line.startswith("admin:"))
+    p.driver.get(link)
+    text = p.until(lambda: p.driver.find_element(By.ID, "summary").text, "the admin page's summary")
+    check(text.startswith("1 slot assigned, 1 of 1 participant finished (the target)"), f"the admin summary: {text!r}")
+    row = [c.text for c in p.driver.find_elements(By.CSS_SELECTOR, "#slots tr:nth-child(2) td")]
+    check(row[1:3] == [PARTICIPANT, "finished"] and row[7:10] == ["6", "0", "7/7"], f"the admin row of {PARTICIPANT}: {row}")
+    p.screenshot("admin")
+
+
 def whole_session(args, p, server, db, work):
     answers = walk_session(p, server)
     print(f"session walked: {answers}")
+    check_admin_page(p, server)
     check_refused_again(p, server, "already-completed")
     server.stop()
     check_database(args.tlab, db, work / "csv", answers)

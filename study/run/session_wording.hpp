@@ -1,0 +1,27 @@
+#pragma once
+// What the session flow tells participants about the trials ahead, in words every front end
+// (window, browser) shows alike: how many trials a task has and its time limit (with the task's
+// instructions), and how many trials or blocks are left at a break.
+#include <cstddef>
+#include <string>
+
+#include "study/design/experiment.hpp"
+#include "study/design/session_plan.hpp"
+
+namespace tlab::study {
+
+// "3 trials" / "1 trial": a count with its noun in the right number.
+std::string countOf(long n, const std::string& singular, const std::string& plural);
+
+// A time limit in words: "45 seconds", "1 minute", "2.5 minutes".
+std::string durationText(double seconds);
+
+// The task's instructions followed by how many trials of it come now (the run of trials of the
+// same task and phase from `index` on) and their time limit.
+std::string taskIntroduction(const SessionPlan& plan, std::size_t index, const std::string& instructions);
+
+// The break's text followed by what is left after trial `done`: test trials, or blocks when the
+// breaks count blocks.
+std::string breakText(const SessionPlan& plan, std::size_t done, const BreakSpec& spec);
+
+}  // namespace tlab::study
