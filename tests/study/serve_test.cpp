@@ -308,7 +308,7 @@ TEST_F(Serve, BadStartsAreOneLineAndWalkingIsRefusedOnline) {
   EXPECT_EQ(std::count(taken.err.begin(), taken.err.end(), '\n'), 1) << taken.err;
   const auto walking = runCommand(commandLine({TLAB_EXE, "serve", example("elmqvist.toml"), "--db", (dir_ / "e.db").string(), "--quiet"}));
   EXPECT_EQ(walking.exitCode, 1);
-  EXPECT_NE(walking.err.find("elmqvist.toml:68: tasks["), std::string::npos) << walking.err;
+  EXPECT_NE(walking.err.find("elmqvist.toml:73: tasks["), std::string::npos) << walking.err;
   EXPECT_NE(walking.err.find("tlab run"), std::string::npos) << walking.err;
   EXPECT_FALSE(std::filesystem::exists(dir_ / "e.db")) << "nothing is written before the checks pass";
   const auto unreachable = runCommand(commandLine({TLAB_EXE, "serve", studyData("serve_tiny.toml"), "--db",
