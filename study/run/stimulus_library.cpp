@@ -1,6 +1,7 @@
 #include "study/run/stimulus_library.hpp"
 
 #include "study/run/fault_point.hpp"
+#include "tasks/answer_form.hpp"
 
 #include <filesystem>
 #include <sstream>
@@ -45,7 +46,7 @@ core::Image readExternalImage(const StimulusKey& key) {
 
 render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key) { return resolveCamera(scene, key); }
 
-bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
+bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target" && p.role != "gauge"; }
 
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter) {
   return drawOutlinedMarks(picture, stimuli::visibleMarks(probeMarks(question)), painter);
@@ -160,7 +161,7 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   p.stimulusSha256 = found->second.first;
   p.stimulus = found->second.second;
   p.stimulusPath = (std::filesystem::path(directory_) / (p.stimulusSha256 + ".png")).string();
-  if (p.question.answerKind == tasks::AnswerKind::FloorPoint) {
+  if (tasks::answerForm(p.question).widget(p.question).kind == tasks::WidgetKind::FloorPlanPoint) {
     const auto& [plan, image] = floorPlan(trial.stimulus);
     p.floorPlan = plan;
     p.floorPlanImage = image;
