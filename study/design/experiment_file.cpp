@@ -292,6 +292,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.observer = readObserver(r, root);
   resolveStyleFiles(r, root, e, checks == StimulusChecks::Run);
   checkDesign(r, root, e);
+  if (checks == StimulusChecks::Run) refuseLiveViewsOfImages(e);
   recordImageFiles(e, checks == StimulusChecks::Run);
   if (checks == StimulusChecks::Run) checkStimuli(r, root, e);
   return e;

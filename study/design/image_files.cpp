@@ -8,6 +8,7 @@
 #include "core/file_text.hpp"
 #include "core/sha256.hpp"
 #include "study/design/counterbalancing.hpp"
+#include "study/design/experiment_file.hpp"
 
 namespace tlab::study {
 
@@ -27,6 +28,19 @@ std::vector<StimulusKey> externalImageStimuli(const Experiment& e) {
     for (const auto& t : makeSessionPlan(e, design, int(slot)).trials)
       if (!t.stimulus.images.empty() && seen.insert(t.stimulus.images).second) keys.push_back(t.stimulus);
   return keys;
+}
+
+void refuseLiveViewsOfImages(const Experiment& e) {
+  if (externalImageStimuli(e).empty()) return;
+  const Design design = makeDesign(e);
+  for (std::size_t slot = 0; slot < design.balancedMultiple(); ++slot)
+    for (const auto& t : makeSessionPlan(e, design, int(slot)).trials)
+      if (!t.stimulus.images.empty() && t.navigation != Navigation::None)
+        for (const auto& task : e.tasks)
+          if (task.id == t.taskId)
+            throw ExperimentFileError(task.navigationSource + ": navigation = \"" + navigationName(t.navigation) +
+                                      "\" draws tlab's live view of the scene, which cannot show the images from another renderer of " +
+                                      t.condition + " (give the task a `when` without that level, or no navigation)");
 }
 
 std::vector<StyleFileUse> recordedImageFiles(const std::string& text) {

@@ -16,6 +16,11 @@ namespace tlab::study {
 // The stimuli that show an image, once per image, in the order the design first shows them.
 std::vector<StimulusKey> externalImageStimuli(const Experiment& e);
 
+// A task with navigation draws tlab's live view of the scene, which cannot show a picture from
+// another renderer: refused (ExperimentFileError naming the task's navigation field) when one of
+// its trials would show images.
+void refuseLiveViewsOfImages(const Experiment& e);
+
 // The raw images' identities a text records (StyleFileUse: written, path, sha256).
 std::vector<StyleFileUse> recordedImageFiles(const std::string& text);
 

@@ -127,3 +127,33 @@ TEST(ExternalImagesCli, ImagesFromAShiftedOrFlippedCameraAreRefusedWithTheirIoU)
   EXPECT_EQ(flipped.exitCode, 1);
   EXPECT_NE(flipped.err.find("likely cause: vertical flip"), std::string::npos) << flipped.err;
 }
+
+TEST(ExternalImagesCli, ATaskExploredLiveCannotShowImagesAndIsRefusedAtDesignTime) {
+  const auto dir = freshDir("external_images_live");
+  const auto study = (dir / "study.toml").string();
+  std::ofstream(study) << R"(id = "live-theirs"
+seed = 1
+participants = 1
+counterbalancing = "fixed"
+
+[stimulus]
+size = "128x96"
+scene = "builtin:abstract?seed=3"
+
+[[factors]]
+name = "method"
+levels = [{ name = "constant", style = "constant" }, { name = "theirs", images = "renders/abstract.png" }]
+
+[[tasks]]
+id = "count"
+task = "counting"
+navigation = "orbit"
+)";
+  const auto r = runCommand(kTlab + " design " + study);
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("study.toml:17: tasks[1].navigation: navigation = \"orbit\" draws tlab's live view of the scene, which cannot show "
+                       "the images from another renderer of method=theirs"),
+            std::string::npos)
+      << r.err;
+}
