@@ -19,6 +19,7 @@
 #include "study/design/field_reader.hpp"
 #include "study/design/session_flow_file.hpp"
 #include "study/design/stimulus_checks.hpp"
+#include "study/design/image_files.hpp"
 #include "study/design/style_files.hpp"
 #include "tasks/task_registry.hpp"
 
@@ -293,6 +294,8 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.observer = readObserver(r, root);
   resolveStyleFiles(r, root, e, checks == StimulusChecks::Run);
   checkDesign(r, root, e);
+  if (checks == StimulusChecks::Run) refuseLiveViewsOfImages(e);
+  recordImageFiles(e, checks == StimulusChecks::Run);
   if (checks == StimulusChecks::Run) checkStimuli(r, root, e);
   return e;
 }

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <sstream>
 
-#include "core/png_file.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
+#include "stimuli/sets/external_image_alignment.hpp"
 #include "stimuli/sets/stimulus_producer.hpp"
 #include "tasks/task_registry.hpp"
 
@@ -35,13 +35,7 @@ render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key)
 }  // namespace
 
 core::Image readExternalImage(const StimulusKey& key) {
-  auto image = core::readPngFile(key.images);
-  if (!image) throw std::runtime_error(key.images + ": cannot read the image (a PNG is expected)");
-  if (image->width != key.width || image->height != key.height)
-    throw std::runtime_error(key.images + ": the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
-                             " but the stimulus is " + std::to_string(key.width) + "x" + std::to_string(key.height) + " (stimulus.size)");
-  for (auto& p : image->pixels) p.a = 1.0f;  // shown over nothing: opaque
-  return *image;
+  return stimuli::opaque(stimuli::readExternalImage(key.images, key.width, key.height));
 }
 
 render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key) { return resolveCamera(scene, key); }
