@@ -110,8 +110,8 @@ std::optional<std::string> TrialScreen::typedChar(const std::string& ch) {
 }
 
 std::optional<std::string> TrialScreen::enter() {
-  std::string text = typed_;
-  if (!text.empty()) return text;
+  const std::string& text = typed_;
+  if (text.find_first_not_of(" \t") != std::string::npos) return text;  // blanks alone are no typed answer
   if (widget_.kind == WidgetKind::PickLabels) return selected_.empty() ? "none" : selectedText();
   if (widget_.kind == WidgetKind::Gauge) return form_.fromInput(view_.prepared.question, tasks::GaugeSetting{gauge_.x, gauge_.y});
   return std::nullopt;

@@ -31,7 +31,7 @@ TEST(WindowCli, ShowsTheImageInAGlfwWindowUnderXvfb) {
   const auto displayFile = (dir / "display").string(), errFile = (dir / "err.txt").string();
   const std::string args = " render builtin:open-cylinders --size 160x120 --style constant -o ";
   // Xvfb picks a free display itself (-displayfd); tlab runs on it in the background; we wait for
-  // its window, press Escape, and a watchdog ends tlab if the window never shows up.
+  // its window, press Escape (again until tlab has gone), and a watchdog ends tlab if the window never shows up.
   const std::string script =
       "Xvfb -displayfd 3 -screen 0 640x480x24 3>" + displayFile + " >/dev/null 2>&1 & XPID=$!; "
       "for i in $(seq 100); do [ -s " + displayFile + " ] && break; sleep 0.1; done; "
@@ -39,7 +39,9 @@ TEST(WindowCli, ShowsTheImageInAGlfwWindowUnderXvfb) {
       + kTlab + args + windowPng + " --window >/dev/null 2>" + errFile + " & TPID=$!; "
       "(sleep 60; kill $TPID) >/dev/null 2>&1 & WATCHDOG=$!; "
       "WID=$(timeout 30 xdotool search --sync --name tlab.render | head -1); "
-      "xdotool key --window \"$WID\" Escape 2>/dev/null; "
+      // Escape until tlab is gone: a key sent before the window takes input is lost (seen under load
+      // with another Xvfb test running beside this one).
+      "for i in $(seq 100); do kill -0 $TPID 2>/dev/null || break; xdotool key --window \"$WID\" Escape 2>/dev/null; sleep 0.2; done; "
       "wait $TPID; RC=$?; kill $WATCHDOG $XPID 2>/dev/null; echo \"window=$WID rc=$RC\"";
   const auto r = runCommand("bash -c " + quoted(script));
   EXPECT_NE(r.out.find("rc=0"), std::string::npos) << r.out << readText(errFile);
