@@ -13,18 +13,6 @@ namespace {
 
 using tasks::AnswerKind;
 
-std::string hint(AnswerKind kind) {
-  switch (kind) {
-    case AnswerKind::LayerNumber: return "Type the layer number (1 = front) and press Enter.";
-    case AnswerKind::Count: return "Type the number and press Enter.";
-    case AnswerKind::Label: return "Click the label (or type it and press Enter).";
-    case AnswerKind::LabelSet: return "Click labels to select them, then press Enter (Enter with none selected: none).";
-    case AnswerKind::Letter: return "Click the letter (or press its key).";
-    case AnswerKind::FloorPoint: return "Click the place on the floor plan (right), or type x,z and press Enter.";
-  }
-  return "";
-}
-
 std::string formatCountdown(double seconds) {
   const int s = std::max(0, int(std::ceil(seconds)));
   char buf[32];
@@ -38,7 +26,7 @@ bool hasFloorPlan(const TrialView& view) {
 
 }  // namespace
 
-TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter) : view_(view), painter_(painter), base_(std::move(blank)) {
+TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter, const ParticipantTexts& texts) : view_(view), painter_(painter), base_(std::move(blank)) {
   const tasks::Question& q = view.prepared.question;
   const Canvas& stimulus = *view.prepared.stimulus;
   layout_ = hasFloorPlan(view) ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height())
@@ -57,9 +45,10 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     layoutJson_["plan"] = {layout_.plan->x, layout_.plan->y, layout_.plan->width, layout_.plan->height};
   }
   painter_.drawLine(base_, q.text, 16, 12, 22.0f, kInk);
-  painter_.drawLine(base_, hint(q.answerKind), 16, layout_.answer.y + 8, 18.0f, kMuted);
-  char counter[64];  // training and test trials are counted apart
-  std::snprintf(counter, sizeof counter, "%s %d/%d", view.plan.phase == Phase::Training ? "training" : "trial", view.index, view.total);
+  // How to answer here (the window also takes typed labels), by the answer's kind.
+  painter_.drawLine(base_, texts.text(std::string("window_answer.") + tasks::answerKindName(q.answerKind)), 16, layout_.answer.y + 8, 18.0f, kMuted);
+  const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",
+                                           {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
   painter_.drawLine(base_, counter, base_.width() - 260, 12, 18.0f, kMuted);
   for (const auto& p : q.points) {
     if (!isMarkedPoint(p)) continue;

@@ -71,38 +71,39 @@ void ParticipantSession::endWith(const std::string& title, const std::string& te
 
 void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival) {
   const Experiment& e = study.experiment;
-  const std::string title = e.participantTitle.empty() ? "Study" : e.participantTitle;
+  const ParticipantTexts& t = e.texts;
+  const std::string title = e.participantTitle.empty() ? t.text("title.page") : e.participantTitle;
   try {
     const auto existing = study.store.findParticipant(e.id, participant_);
     const RunOptions options{participant_, existing.has_value(), study.tlabVersion};
     BrowserResponder responder(
         channel_, [&](const TrialView& view) { return study.worker.images(view.plan, view.prepared); }, display, std::move(arrival));
     responder.completionUrl(e.online.completionUrl);
+    responder.askCalibration(e.online.sizeCalibration, e.online.calibrationNoCard);
     TrialRunner runner(e, study.store, study.worker);
     const SessionResult r = runner.run(options, responder);
     if (r.outcome == SessionOutcome::Finished) {
       std::lock_guard lock(mutex_);  // the responder showed the debrief page, which stays
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
-      endWith(title, "You chose not to take part. You can close this page.");
+      endWith(title, t.text("flow.declined_close"));
       std::lock_guard lock(mutex_);
       ended_ = "declined";
     } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
-      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
+      endWith(title, t.text("end.timed_out_replaced"));
     } else if (channel_->timedOut()) {  // still at the welcome or the consent: nothing was stored, they may start again
-      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Reload the page to start again.");
+      endWith(title, t.text("end.timed_out_restart"));
       std::lock_guard lock(mutex_);
       restartable_ = true;
     } else if (channel_->closed()) {
-      endWith(title, "This session has ended: " + channel_->closedBecause() + ".");
+      endWith(title, t.text("end.closed"));
     }
   } catch (const std::exception& ex) {
     std::fprintf(stderr, "serve: participant '%s': %s\n", participant_.c_str(), ex.what());
     Screen s;
     s.page = {{"kind", "error"},
-              {"text", "The server could not continue your session (your answers so far are stored). Please wait a moment and "
-                       "try again; if this keeps happening, contact the researcher."},
+              {"text", t.text("end.server_problem")},
               {"retry", true}};
     channel_->publish(std::move(s));
     channel_->close("the server could not continue the session");  // the details go to the log, not to the page
@@ -145,6 +146,11 @@ bool ParticipantSession::admit(const std::string& browser) {
   channel_->note({monotonicNs(), "takeover", nlohmann::json{{"from", browser_.substr(0, 8)}, {"to", browser.substr(0, 8)}}.dump()});
   browser_ = browser;
   return true;
+}
+
+void ParticipantSession::release() {
+  std::lock_guard lock(mutex_);
+  if (!running_ && !startedAt_) browser_.clear();
 }
 
 std::optional<double> ParticipantSession::elapsedSeconds() const {
