@@ -155,7 +155,8 @@ void StudyServer::apiRoutes() {
     sendJson(res, 200, {{"title", e.participantTitle.empty() ? e.texts.text("title.page") : e.participantTitle},
                         {"calibrate", e.online.sizeCalibration},
                         {"language", e.texts.language()},
-                        {"stimulus_size", {{"mode", e.online.stimulusSize}, {"cm", e.online.stimulusCm}}},
+                        {"stimulus_size", {{"mode", e.online.stimulusSize}, {"cm", e.online.stimulusCm},
+                                           {"width", e.stimulus.width}, {"height", e.stimulus.height}}},
                         {"devices", e.online.devices}});
   });
   http_.Post(std::string("/api/") + kToken + "/display", [this](const httplib::Request& req, httplib::Response& res) {

@@ -200,6 +200,16 @@ function shownSize(image) {
   return shown;
 }
 
+// The session's stimulus size, stored with its display (a size in cm is known only after the
+// calibration: each onset stores it).
+function sessionSize(size) {
+  const out = { stimulus_size: size.mode === 'cm' ? size.cm + 'cm' : size.mode };
+  if (size.mode === 'cm') return out;
+  const shown = shownSize({ width: size.width, height: size.height });
+  return Object.assign(out, { stimulus_css_width: shown.css_width, stimulus_css_height: shown.css_height,
+    stimulus_device_width: shown.device_width, stimulus_device_height: shown.device_height });
+}
+
 // The picture at the size stimulus_size asks; a warning when the window is too small for
 // it (and for what stands beside it: besideWidth device pixels, the floor plan).
 function picture(image, src, besideWidth = 0) {
@@ -461,6 +471,7 @@ async function start() {
   settings = config.body;
   const display = {
     device: deviceKind(), max_touch_points: navigator.maxTouchPoints || 0,
+    ...sessionSize(settings.stimulus_size),
     screen_width: screen.width, screen_height: screen.height, window_width: innerWidth, window_height: innerHeight,
     device_pixel_ratio: devicePixelRatio, user_agent: navigator.userAgent.slice(0, 300), refresh_hz: await refreshRate(),
   };

@@ -106,7 +106,11 @@ def sizes(args, p, server, db, work):
     participants = sorted(r["participant"] for r in base.read_csv(work / "csv", "participants.csv"))
     check(participants == ["desktop-1x", "desktop-2x"], f"the phone was stored: {participants}")
     onsets = {e["participant"]: json.loads(e["detail"])["shown"] for e in base.read_csv(work / "csv", "events.csv") if e["kind"] == "onset"}
+    displays = {s["participant"]: json.loads(s["display"])["browser"] for s in base.read_csv(work / "csv", "sessions.csv")}
     for who, scale in (("desktop-1x", 1), ("desktop-2x", 2)):
+        d = displays[who]
+        check(d["stimulus_size"] == "native" and d["stimulus_css_width"] == PICTURE and d["stimulus_device_width"] == PICTURE * scale,
+              f"{who}: the session's display JSON {d}")
         shown = onsets[who]
         check(shown["mode"] == "native" and shown["css_width"] == PICTURE and shown["device_width"] == PICTURE * scale
               and shown["device_pixel_ratio"] == scale and "cm_width" not in shown, f"{who}: the stored shown size {shown}")
