@@ -86,9 +86,11 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
       std::lock_guard lock(mutex_);  // the responder showed the debrief page, which stays
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
-      endWith(title, t.text("flow.declined_close"));
-      std::lock_guard lock(mutex_);
-      ended_ = "declined";
+      {
+        std::lock_guard lock(mutex_);  // declined before the page shows its end: the admin page never lists it as running
+        ended_ = "declined";
+      }
+      channel()->publish(endScreen(title, t.text("flow.declined_close"), "", ""));
     } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
       endWith(title, t.text("end.timed_out_replaced"));
@@ -162,8 +164,8 @@ std::optional<double> ParticipantSession::elapsedSeconds() const {
 
 std::string ParticipantSession::state() const {
   std::lock_guard lock(mutex_);
+  if (ended_ == "declined") return ended_;  // set before its end screen is published, while the walk still winds up
   if (running_) return channel_->idleSeconds() > kIdleSeconds ? "idle" : "running";
-  if (ended_ == "declined") return ended_;
   if (!ended_.empty()) return "ended: " + ended_;
   return "waiting for the page";
 }
