@@ -87,6 +87,10 @@ std::string blockTasks(const study::SessionPlan& plan, int block) {
 
 void run(const DesignOptions& o) {
   const study::Experiment e = study::readExperimentFile(o.experiment);
+  // A language without a shipped translation (or one lacking a key): what participants would see in English.
+  for (const auto& key : e.texts.untranslated())
+    std::fprintf(stderr, "warning: %s = \"%s\": text.%s has no text in this language; participants see the English \"%s\" (set it in [text])\n",
+                 e.languageSource.c_str(), e.texts.language().c_str(), key.c_str(), e.texts.text(key).c_str());
   const auto images = checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line
   const study::Design design = study::makeDesign(e);
   const int participants = o.participants > 0 ? o.participants : e.participants;

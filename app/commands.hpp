@@ -22,6 +22,7 @@ void addStimuliCommand(CLI::App& app);   // cmd_stimuli.cpp
 void addIntegrateBench(CLI::App& bench); // cmd_stimuli.cpp: tlab bench integrate
 void addTaskCommand(CLI::App& app);      // cmd_task.cpp
 void addDesignCommand(CLI::App& app);    // cmd_design.cpp
+void addTextsCommand(CLI::App& app);     // cmd_texts.cpp
 void addRunCommand(CLI::App& app);       // cmd_run.cpp
 void addServeCommand(CLI::App& app);     // cmd_serve.cpp
 void addLoadtestCommand(CLI::App& app);  // cmd_loadtest.cpp

@@ -56,6 +56,7 @@ int main(int argc, char** argv) {
   tlab::app::addTaskCommand(app);
   tlab::app::addStimuliCommand(app);
   tlab::app::addDesignCommand(app);
+  tlab::app::addTextsCommand(app);
   tlab::app::addRunCommand(app);
   tlab::app::addServeCommand(app);
   tlab::app::addLoadtestCommand(app);

@@ -1,9 +1,10 @@
 #pragma once
 // How a question is answered, in one place per answer kind (the jsPsych idea of a trial type as one
 // package, for the answer): the one parser from the answer's text form, the text form of a value,
-// the score, the words that tell a person how to answer, the widget a front end draws (as data), how
-// a front end's input becomes the answer's text, and how a simulated observer and the load tester
-// answer. Front ends (window, browser page, booklet, simulated observer, load tester) draw the few
+// the score, the widget a front end draws (as data), how a front end's input becomes the answer's
+// text, and how a simulated observer and the load tester answer. The words that tell a person how
+// to answer are keys answer.<name> and window_answer.<name> of the participant text table
+// (study/design/texts/), so that they are translated with every other word a participant reads. Front ends (window, browser page, booklet, simulated observer, load tester) draw the few
 // widget primitives of WidgetKind; nothing outside tasks/ switches on an AnswerKind.
 #include <optional>
 #include <set>
@@ -61,7 +62,6 @@ class AnswerForm {
   virtual AnswerKind kind() const = 0;
   virtual const char* name() const = 0;          // "layer-number", ...: stored with every trial
   virtual const char* format() const = 0;        // how to type it, for messages and --help
-  virtual std::string hint() const = 0;          // how to answer, written for people
   // The one parser: the text form into the ground truth's alternative. Throws AnswerFormatError.
   virtual GroundTruth parse(const Question& q, const std::string& text) const = 0;
   // The answer's text form of a value of the ground truth's alternative (parse(text(v)) == v).

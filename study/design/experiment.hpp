@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "study/design/participant_texts.hpp"
 #include "study/run/camera_navigator.hpp"
 
 namespace tlab::study {
@@ -128,6 +129,12 @@ struct OnlineSpec {
   double turntableElevationDegrees = 60.0;   // spread of the elevations (centred on the start view)
   std::string completionUrl;                 // the debrief links here (Prolific's completion URL)
   bool sizeCalibration = false;              // the credit-card screen that measures pixels per centimetre
+  bool calibrationNoCard = false;            // the calibration offers "I have no card" (stored as such)
+  // How big a stimulus is shown: "native" (whole device pixels, an integer upscale to at least its
+  // CSS size), "css" (its size in CSS px) or "cm" (stimulusCm wide; needs the size calibration).
+  std::string stimulusSize = "native";
+  double stimulusCm = 0.0;
+  std::vector<std::string> devices = {"desktop"};  // which devices may take part: desktop, tablet, phone
 };
 
 struct AnalysisSpec {
@@ -202,6 +209,9 @@ struct Experiment {
   DebriefSpec debrief;
   OnlineSpec online;
   std::vector<Questionnaire> questionnaires;
+  // Every word participants see: the language's table (language = "de") with [text]'s overrides.
+  ParticipantTexts texts;
+  std::string languageSource;  // "file:line: language" (or the file alone when it sets none), for tlab design's warnings
   std::vector<AnalysisSpec> analyses;
   ObserverParams observer;
 

@@ -270,7 +270,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   }
   r.checkKeys(root, "", {"id", "title", "participant_title", "seed", "participants", "counterbalancing", "block_tasks", "welcome",
                          "goodbye", "consent", "info", "standard_info", "training", "breaks", "debrief", "online", "stimulus", "factors", "tasks",
-                         "questionnaires", "analysis", "observer"});
+                         "questionnaires", "analysis", "observer", "language", "text"});
   Experiment e;
   e.path = path;
   e.text = text;
@@ -280,6 +280,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.seed = std::uint64_t(r.integer(root, "seed", "", 1, 0));
   e.participants = int(r.integer(root, "participants", "", 1, 1, true));
   e.welcome = r.string(root, "welcome", "", false);
+  readParticipantTexts(r, root, e);
   readSessionFlow(r, root, e);
   e.stimulus = readStimulus(r, root);
   e.factors = readFactors(r, root);
@@ -289,7 +290,7 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   else if (blockTasks == "by-position") e.blockTasks = BlockTasks::ByPosition;
   else r.fail(root.get("block_tasks"), "block_tasks", "expected \"all\" or \"by-position\", got '" + blockTasks + "'");
   e.tasks = readTasks(r, root, e.factors);
-  e.questionnaires = readQuestionnaires(r, root);
+  e.questionnaires = readQuestionnaires(r, root, e.texts);
   e.analyses = readAnalyses(r, root, e);
   e.observer = readObserver(r, root);
   resolveStyleFiles(r, root, e, checks == StimulusChecks::Run);

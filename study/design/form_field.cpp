@@ -17,33 +17,28 @@ std::optional<double> parseNumber(const std::string& text) {
   return v;
 }
 
-std::string numberText(double v) {
-  std::ostringstream s;
-  s << v;
-  return s.str();
-}
-
 }  // namespace
 
-std::string fieldError(const FormField& f, const std::string& value) {
-  if (value.empty()) return f.required || f.kind == FieldKind::Likert ? "an answer is required" : "";
+std::string fieldError(const FormField& f, const std::string& value, const ParticipantTexts& texts) {
+  if (value.empty()) return f.required || f.kind == FieldKind::Likert ? texts.text("form.required") : "";
   switch (f.kind) {
     case FieldKind::Likert: {
       const auto v = parseNumber(value);
-      if (!v || *v != std::floor(*v) || *v < 1 || *v > f.points) return "choose a value from 1 to " + std::to_string(f.points);
+      if (!v || *v != std::floor(*v) || *v < 1 || *v > f.points) return texts.format("form.likert_range", {{"points", std::to_string(f.points)}});
       return "";
     }
     case FieldKind::Choice:
-      return std::find(f.options.begin(), f.options.end(), value) == f.options.end() ? "choose one of the options" : "";
+      return std::find(f.options.begin(), f.options.end(), value) == f.options.end() ? texts.text("form.choose_option") : "";
     case FieldKind::Number: {
       const auto v = parseNumber(value);
-      if (!v) return "'" + value + "' is not a number";
-      if (f.integer && *v != std::floor(*v)) return "a whole number is required";
-      if (*v < f.minimum || *v > f.maximum) return "a number from " + numberText(f.minimum) + " to " + numberText(f.maximum) + " is required";
+      if (!v) return texts.format("form.not_number", {{"value", value}});
+      if (f.integer && *v != std::floor(*v)) return texts.text("form.whole_number");
+      if (*v < f.minimum || *v > f.maximum)
+        return texts.format("form.number_range", {{"min", texts.number(f.minimum)}, {"max", texts.number(f.maximum)}});
       return "";
     }
     case FieldKind::Text:
-      return value.size() > 10000 ? "at most 10000 characters" : "";
+      return value.size() > 10000 ? texts.text("form.too_long") : "";
   }
   return "";
 }
@@ -55,15 +50,14 @@ std::optional<double> fieldNumber(const FormField& f, const std::string& value) 
   return parseNumber(value);
 }
 
-std::string fieldHint(const FormField& f) {
+std::string fieldHint(const FormField& f, const ParticipantTexts& texts) {
   switch (f.kind) {
     case FieldKind::Likert:
-      return "Press or click 1 (" + f.lowAnchor + ") to " + std::to_string(f.points) + " (" + f.highAnchor + ").";
-    case FieldKind::Choice: return "Press the number of your choice or click it.";
+      return texts.format("form.hint_likert", {{"low", f.lowAnchor}, {"high", f.highAnchor}, {"points", std::to_string(f.points)}});
+    case FieldKind::Choice: return texts.text("form.hint_choice");
     case FieldKind::Number:
-      return "Type a " + std::string(f.integer ? "whole " : "") + "number from " + numberText(f.minimum) + " to " + numberText(f.maximum) +
-             " and press Enter.";
-    case FieldKind::Text: return std::string("Type your answer and press Enter") + (f.required ? "." : " (Enter alone: no answer).");
+      return texts.format(f.integer ? "form.hint_whole_number" : "form.hint_number", {{"min", texts.number(f.minimum)}, {"max", texts.number(f.maximum)}});
+    case FieldKind::Text: return texts.text(f.required ? "form.hint_text" : "form.hint_text_optional");
   }
   return "";
 }

@@ -1,22 +1,54 @@
 #include "study/design/session_flow_file.hpp"
 
+#include <regex>
 #include <set>
+#include <stdexcept>
 
 namespace tlab::study {
 
 namespace {
 
+// Likert anchors and the other defaults of a form field, in the participants' language.
+FormField fieldDefaults(const ParticipantTexts& t, FieldKind kind) {
+  FormField f;
+  f.kind = kind;
+  f.lowAnchor = t.text("defaults.likert_low");
+  f.highAnchor = t.text("defaults.likert_high");
+  return f;
+}
+
 // The participant information most vision studies ask for (standard_info = true).
-std::vector<FormField> standardInfo() {
-  FormField age{"age", "Your age in years", FieldKind::Number};
+std::vector<FormField> standardInfo(const ParticipantTexts& t) {
+  FormField age = fieldDefaults(t, FieldKind::Number), gender = fieldDefaults(t, FieldKind::Choice), vision = gender;
+  age.id = "age";
+  age.text = t.text("info.age");
   age.minimum = 16;
   age.maximum = 120;
   age.integer = true;
-  FormField gender{"gender", "Your gender", FieldKind::Choice};
-  gender.options = {"female", "male", "non-binary", "prefer not to say"};
-  FormField vision{"vision", "Your vision", FieldKind::Choice};
-  vision.options = {"normal", "corrected to normal (glasses, lenses)", "other"};
+  gender.id = "gender";
+  gender.text = t.text("info.gender");
+  gender.options = {t.text("info.gender_female"), t.text("info.gender_male"), t.text("info.gender_nonbinary"), t.text("info.gender_none")};
+  vision.id = "vision";
+  vision.text = t.text("info.vision");
+  vision.options = {t.text("info.vision_normal"), t.text("info.vision_corrected"), t.text("info.vision_other")};
   return {age, gender, vision};
+}
+
+// [text]: its tables flattened to dotted keys, each set in the table (an unknown key fails).
+void readTextOverrides(const FieldReader& r, const toml::table& table, const std::string& prefix, ParticipantTexts& texts) {
+  for (auto&& [key, node] : table) {
+    const std::string name = prefix + std::string(key.str());
+    if (const toml::table* inner = node.as_table()) {
+      readTextOverrides(r, *inner, name + ".", texts);
+      continue;
+    }
+    if (!node.is_string()) r.fail(&node, "text." + name, "must be a string");
+    try {
+      texts.set(name, node.as_string()->get());
+    } catch (const std::out_of_range&) {
+      r.fail(&node, "text." + name, "unknown key (tlab texts FILE lists every key)");
+    }
+  }
 }
 
 FieldKind parseKind(const FieldReader& r, const toml::table& t, const std::string& where, FieldKind fallback) {
@@ -72,10 +104,28 @@ const toml::table* optionalTable(const FieldReader& r, const toml::table& root, 
   return t;
 }
 
+// stimulus_size = "native" | "css" | "10cm" (a physical width needs the size calibration).
+void readStimulusSize(const FieldReader& r, const toml::table& t, OnlineSpec& o) {
+  const toml::node* n = t.get("stimulus_size");
+  if (!n) return;
+  const std::string size = r.string(t, "stimulus_size", "online", true);
+  std::smatch m;
+  if (size == "native" || size == "css") {
+    o.stimulusSize = size;
+  } else if (std::regex_match(size, m, std::regex("([0-9]+(\\.[0-9]+)?) ?cm")) && std::stod(m[1]) > 0.0 && std::stod(m[1]) <= 100.0) {
+    if (!o.sizeCalibration) r.fail(n, "online.stimulus_size", "a size in cm needs size_calibration = true (the page must know its pixels per cm)");
+    o.stimulusSize = "cm";
+    o.stimulusCm = std::stod(m[1]);
+  } else {
+    r.fail(n, "online.stimulus_size", "expected \"native\", \"css\" or a width such as \"10cm\" (up to 100 cm), got '" + size + "'");
+  }
+}
+
 void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
   const toml::table* t = optionalTable(r, root, "online",
                                        {"participant_parameter", "study_parameter", "session_parameter", "timeout_minutes", "turntable_azimuths",
-                                        "turntable_elevations", "turntable_elevation_degrees", "completion_url", "size_calibration"});
+                                        "turntable_elevations", "turntable_elevation_degrees", "completion_url", "size_calibration",
+                                        "calibration_no_card", "stimulus_size", "devices"});
   if (!t) return;
   o.participantParameter = r.string(*t, "participant_parameter", "online", false, o.participantParameter);
   if (o.participantParameter.empty()) r.fail(t->get("participant_parameter"), "online.participant_parameter", "must not be empty");
@@ -94,14 +144,39 @@ void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
     if (!n->is_boolean()) r.fail(n, "online.size_calibration", "must be true or false");
     o.sizeCalibration = n->as_boolean()->get();
   }
+  if (const toml::node* n = t->get("calibration_no_card")) {
+    if (!n->is_boolean()) r.fail(n, "online.calibration_no_card", "must be true or false");
+    o.calibrationNoCard = n->as_boolean()->get();
+  }
+  readStimulusSize(r, *t, o);
+  if (t->get("devices")) o.devices = r.strings(*t, "devices", "online");
+  for (const auto& d : o.devices)
+    if (d != "desktop" && d != "tablet" && d != "phone")
+      r.fail(t->get("devices"), "online.devices", "expected desktop, tablet or phone, got '" + d + "'");
+  if (o.devices.empty()) r.fail(t->get("devices"), "online.devices", "at least one kind of device must be allowed");
 }
 
 }  // namespace
 
+void readParticipantTexts(const FieldReader& r, const toml::table& root, Experiment& e) {
+  const std::string language = r.string(root, "language", "", false, "en");
+  if (!std::regex_match(language, std::regex("[a-z]{2,3}(-[A-Za-z0-9]{2,8})?")))
+    r.fail(root.get("language"), "language", "expected a language code such as \"de\" or \"fr\", got '" + language + "'");
+  e.texts = ParticipantTexts(language);
+  e.languageSource = root.get("language") ? r.at(root.get("language"), "language") : e.path;
+  if (const toml::node* n = root.get("text")) {
+    if (!n->is_table()) r.fail(n, "text", "must be a table of texts ([text] KEY = \"...\")");
+    readTextOverrides(r, *n->as_table(), "", e.texts);
+  }
+}
+
 void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& e) {
+  const ParticipantTexts& texts = e.texts;
   e.participantTitle = r.string(root, "participant_title", "", false);
+  e.breaks.text = texts.text("defaults.break_text");
+  e.debrief.text = texts.text("defaults.debrief_text");
   if (const toml::table* c = optionalTable(r, root, "consent", {"text", "accept", "decline"})) {
-    ConsentSpec consent;
+    ConsentSpec consent{"", texts.text("defaults.consent_accept"), texts.text("defaults.consent_decline")};
     consent.text = r.string(*c, "text", "consent", true);
     consent.accept = r.string(*c, "accept", "consent", false, consent.accept);
     consent.decline = r.string(*c, "decline", "consent", false, consent.decline);
@@ -109,11 +184,10 @@ void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& 
   }
   if (const toml::node* n = root.get("standard_info")) {
     if (!n->is_boolean()) r.fail(n, "standard_info", "must be true or false");
-    if (n->as_boolean()->get()) e.info = standardInfo();
+    if (n->as_boolean()->get()) e.info = standardInfo(texts);
   }
   const auto info = r.tables(root, "info");
-  FormField infoDefaults;
-  infoDefaults.kind = FieldKind::Text;
+  const FormField infoDefaults = fieldDefaults(texts, FieldKind::Text);
   for (std::size_t i = 0; i < info.size(); ++i) e.info.push_back(readField(r, *info[i], "info[" + std::to_string(i + 1) + "]", infoDefaults));
   requireUniqueIds(r, e.info, root.get("info"), "info");
   if (const toml::table* t = optionalTable(r, root, "training", {"feedback"})) {
@@ -138,7 +212,7 @@ void readSessionFlow(const FieldReader& r, const toml::table& root, Experiment& 
   }
 }
 
-std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root) {
+std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::table& root, const ParticipantTexts& texts) {
   std::vector<Questionnaire> out;
   const auto tables = r.tables(root, "questionnaires");
   for (std::size_t i = 0; i < tables.size(); ++i) {
@@ -151,7 +225,7 @@ std::vector<Questionnaire> readQuestionnaires(const FieldReader& r, const toml::
     if (q.when != "start" && q.when != "end" && q.when != "after-block")
       r.fail(t.get("when"), where + ".when", "expected start, end or after-block");
     q.title = r.string(t, "title", where, false);
-    FormField defaults;  // likert items take the questionnaire's points and anchors
+    FormField defaults = fieldDefaults(texts, FieldKind::Likert);  // likert items take the questionnaire's points and anchors
     defaults.points = int(r.integer(t, "points", where, 7, 2));
     if (defaults.points > 11) r.fail(t.get("points"), where + ".points", "at most 11 points");
     const auto anchors = r.strings(t, "anchors", where);

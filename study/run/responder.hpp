@@ -82,7 +82,7 @@ class Responder {
   // The last screen (the debrief with its completion code): a message the participant closes, or
   // for a browser the page that stays (study/serve/browser_responder.hpp).
   virtual void showDebrief(const std::string& title, const DebriefSpec& debrief) {
-    showMessage(title, debrief.text + (debrief.completionCode.empty() ? "" : "\n\nYour completion code: " + debrief.completionCode));
+    showMessage(title, debrief.text + (debrief.completionCode.empty() ? "" : "\n\n" + texts().text("end.completion_code") + " " + debrief.completionCode));
   }
   // After a training answer: the stimulus with the right answer drawn, and whether it was right.
   virtual bool showFeedback(const TrialView& view, const Feedback& feedback) = 0;
@@ -92,6 +92,12 @@ class Responder {
   virtual std::vector<ResponderEvent> takeEvents() { return {}; }
   // The display the session runs on; nullopt for simulated observers.
   virtual std::optional<DisplayInfo> display() const { return std::nullopt; }
+  // The words of every screen (TrialRunner::run gives the experiment's before the first screen).
+  void useTexts(const ParticipantTexts& texts) { texts_ = texts; }
+  const ParticipantTexts& texts() const { return texts_; }
+
+ private:
+  ParticipantTexts texts_;
 };
 
 }  // namespace tlab::study

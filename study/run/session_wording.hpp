@@ -1,7 +1,8 @@
 #pragma once
 // What the session flow tells participants about the trials ahead, in words every front end
-// (window, browser) shows alike: how many trials a task has and its time limit (with the task's
-// instructions), and how many trials or blocks are left at a break.
+// (window, browser) shows alike, in the experiment's language (ParticipantTexts): how many trials
+// a task has and its time limit (with the task's instructions), and how many trials or blocks are
+// left at a break.
 #include <cstddef>
 #include <string>
 
@@ -10,18 +11,18 @@
 
 namespace tlab::study {
 
-// "3 trials" / "1 trial": a count with its noun in the right number.
+// "3 trials" / "1 trial": a count with its noun in the right number (the admin page's English).
 std::string countOf(long n, const std::string& singular, const std::string& plural);
 
-// A time limit in words: "45 seconds", "1 minute", "2.5 minutes".
-std::string durationText(double seconds);
+// A time limit in words: "45 seconds", "1 minute", "2.5 minutes" ("2,5 Minuten").
+std::string durationText(double seconds, const ParticipantTexts& texts);
 
 // The task's instructions followed by how many trials of it come now (the run of trials of the
 // same task and phase from `index` on) and their time limit.
-std::string taskIntroduction(const SessionPlan& plan, std::size_t index, const std::string& instructions);
+std::string taskIntroduction(const SessionPlan& plan, std::size_t index, const std::string& instructions, const ParticipantTexts& texts);
 
 // The break's text followed by what is left after trial `done`: test trials, or blocks when the
 // breaks count blocks.
-std::string breakText(const SessionPlan& plan, std::size_t done, const BreakSpec& spec);
+std::string breakText(const SessionPlan& plan, std::size_t done, const BreakSpec& spec, const ParticipantTexts& texts);
 
 }  // namespace tlab::study

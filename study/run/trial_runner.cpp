@@ -93,7 +93,7 @@ void TrialRunner::storeEvents(Session& s, std::optional<std::int64_t> trial) {
 bool TrialRunner::runQuestionnaires(Session& s, const std::string& when, int block) {
   for (const auto& q : experiment_.questionnaires) {
     if (q.when != when || store_.hasQuestionnaireAnswers(s.participant.id, q.id, block)) continue;
-    const auto values = s.responder.fillForm(q.title.empty() ? "Questionnaire" : q.title, q.items);
+    const auto values = s.responder.fillForm(q.title.empty() ? experiment_.texts.text("title.questionnaire") : q.title, q.items);
     storeEvents(s, std::nullopt);
     if (!values) return false;
     store_.recordQuestionnaire(s.participant.id, s.session, q.id, block, formAnswers(q.items, *values));
@@ -140,8 +140,10 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
                      "(sha256 " + prepared.stimulusSha256.substr(0, 12) + " vs " + record.stimulusSha256.substr(0, 12) + ")");
   if (plan.taskId != s.lastTask) {
     const TaskSpec* spec = experiment_.task(plan.taskId);
-    const std::string title = plan.phase == Phase::Training ? "Practice" : "Instructions";  // never the task's internal id
-    if (!s.responder.showMessage(title, taskIntroduction(s.plan, index, spec->instructions.empty() ? prepared.question.text : spec->instructions)))
+    // Never the task's internal id: "Practice" or "Instructions" in the participants' language.
+    const std::string& title = experiment_.texts.text(plan.phase == Phase::Training ? "title.practice" : "title.instructions");
+    const std::string& instructions = spec->instructions.empty() ? prepared.question.text : spec->instructions;
+    if (!s.responder.showMessage(title, taskIntroduction(s.plan, index, instructions, experiment_.texts)))
       return false;
     s.lastTask = plan.taskId;
   }
@@ -201,10 +203,10 @@ std::optional<SessionOutcome> TrialRunner::openSession(Session& s, bool newcomer
       return SessionOutcome::Declined;
     }
   }
-  if (!newcomer && !s.responder.showMessage(participantTitle(), "Welcome back. The session continues where it stopped."))
+  if (!newcomer && !s.responder.showMessage(participantTitle(), experiment_.texts.text("flow.welcome_back")))
     return SessionOutcome::Closed;
   if (!experiment_.info.empty() && !store_.hasInfo(s.participant.id)) {
-    const auto values = s.responder.fillForm("About you", experiment_.info);
+    const auto values = s.responder.fillForm(experiment_.texts.text("title.about_you"), experiment_.info);
     storeEvents(s, std::nullopt);
     if (!values) return SessionOutcome::Closed;
     store_.recordInfo(s.participant.id, s.session, formAnswers(experiment_.info, *values));
@@ -220,8 +222,8 @@ bool TrialRunner::betweenTrials(Session& s, std::size_t done) {
   if (done + 1 >= trials.size()) return true;
   const PlannedTrial& last = trials[done];
   if (last.phase == Phase::Training && trials[done + 1].phase == Phase::Test) {
-    const bool shown = s.responder.showMessage(participantTitle(), "Training is over. The test trials begin now" +
-                                                                       std::string(experiment_.trainingFeedback ? "; they give no feedback." : "."));
+    const bool shown =
+        s.responder.showMessage(participantTitle(), experiment_.texts.text(experiment_.trainingFeedback ? "flow.training_over_no_feedback" : "flow.training_over"));
     storeEvents(s, std::nullopt);
     return shown;
   }
@@ -232,7 +234,7 @@ bool TrialRunner::betweenTrials(Session& s, std::size_t done) {
     if (trials[i].phase == Phase::Test && (!b.blocks || endsBlock(s.plan, i))) ++count;
   if ((b.blocks && !endsBlock(s.plan, done)) || count % b.every != 0) return true;
   BreakSpec shown = b;  // the break says what is left
-  shown.text = breakText(s.plan, done, b);
+  shown.text = breakText(s.plan, done, b, experiment_.texts);
   const bool continued = s.responder.takeBreak(shown);
   storeEvents(s, std::nullopt);
   return continued;
@@ -266,6 +268,7 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
   faultPoint("open");
   const auto existing = store_.findParticipant(experiment_.id, options.participant);
   SessionResult result;
+  responder.useTexts(experiment_.texts);
   Session s{responder, {}, 0, {}, {}, {}, {}};
   if (const auto outcome = admit(options, responder, existing, s.participant, s.plan)) {
     result.outcome = *outcome;

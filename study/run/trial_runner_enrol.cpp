@@ -87,7 +87,7 @@ ParticipantRecord TrialRunner::enrolNewcomer(const RunOptions& options, Newcomer
 }
 
 std::string TrialRunner::participantTitle() const {
-  return experiment_.participantTitle.empty() ? "Welcome" : experiment_.participantTitle;
+  return experiment_.participantTitle.empty() ? experiment_.texts.text("title.welcome") : experiment_.participantTitle;
 }
 
 // Welcome and consent come before anything is stored of a newcomer; a decline stores only that.
@@ -98,7 +98,7 @@ std::optional<SessionOutcome> TrialRunner::greetNewcomer(const RunOptions& optio
   if (!accepted) return SessionOutcome::Closed;
   if (*accepted) return std::nullopt;
   store_.recordDecline(experiment_, options.tlabVersion, options.participant);
-  responder.showMessage(participantTitle(), "You chose not to take part. Nothing but that choice was stored. Thank you.");
+  responder.showMessage(participantTitle(), experiment_.texts.text("flow.declined"));
   return SessionOutcome::Declined;
 }
 

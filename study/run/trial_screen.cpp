@@ -24,19 +24,9 @@ bool hasFloorPlan(const TrialView& view, const tasks::Widget& widget) {
   return widget.kind == WidgetKind::FloorPlanPoint && view.prepared.floorPlan.has_value();
 }
 
-// The window also takes typed answers where the page has buttons or marks only.
-std::string windowHint(const tasks::AnswerForm& form, const tasks::Widget& widget) {
-  switch (widget.kind) {
-    case WidgetKind::PickLabel:
-    case WidgetKind::FloorPlanPoint: return form.hint() + " (Or type it and press Enter.)";
-    case WidgetKind::Gauge: return "Drag on the picture (or use the arrow keys) to turn the gauge; Enter when it lies flat.";
-    default: return form.hint();
-  }
-}
-
 }  // namespace
 
-TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter)
+TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter, const ParticipantTexts& texts)
     : view_(view), form_(tasks::answerForm(view.prepared.question)), widget_(form_.widget(view.prepared.question)), painter_(painter),
       base_(std::move(blank)) {
   const tasks::Question& q = view.prepared.question;
@@ -58,9 +48,10 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     layoutJson_["plan"] = {layout_.plan->x, layout_.plan->y, layout_.plan->width, layout_.plan->height};
   }
   painter_.drawLine(base_, q.text, 16, 12, 22.0f, kInk);
-  painter_.drawLine(base_, windowHint(form_, widget_), 16, layout_.answer.y + 8, 18.0f, kMuted);
-  char counter[64];  // training and test trials are counted apart
-  std::snprintf(counter, sizeof counter, "%s %d/%d", view.plan.phase == Phase::Training ? "training" : "trial", view.index, view.total);
+  // How to answer here (the window also takes typed labels), by the answer's kind.
+  painter_.drawLine(base_, texts.text(std::string("window_answer.") + form_.name()), 16, layout_.answer.y + 8, 18.0f, kMuted);
+  const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",
+                                           {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
   painter_.drawLine(base_, counter, base_.width() - 260, 12, 18.0f, kMuted);
   for (const auto& p : widget_.marks) {
     labels_.push_back(p.label);

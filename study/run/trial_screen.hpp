@@ -24,7 +24,7 @@ namespace tlab::study {
 
 class TrialScreen {
  public:
-  TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter);
+  TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter, const ParticipantTexts& texts);
 
   // The frame to show with `secondsLeft` on the countdown (the live view drawn in when there is one).
   Canvas frame(double secondsLeft);

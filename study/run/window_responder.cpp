@@ -174,8 +174,8 @@ std::vector<ResponderEvent> WindowResponder::takeEvents() {
 bool WindowResponder::pause() {
   event(monotonicNs(), "pause", "");
   Canvas c = blank();
-  painter_.drawLine(c, "Paused", 40, c.height() / 3, 36.0f, kInk);
-  painter_.drawLine(c, "Press Space to continue.", 40, c.height() / 3 + 60, 22.0f, kMuted);
+  painter_.drawLine(c, texts().text("window.paused"), 40, c.height() / 3, 36.0f, kInk);
+  painter_.drawLine(c, texts().text("window.continue"), 40, c.height() / 3 + 60, 22.0f, kMuted);
   present(c);
   while (!closed_) {
     waitForInput(0.1);
@@ -199,7 +199,7 @@ bool WindowResponder::showMessage(const std::string& title, const std::string& t
   Canvas c = blank();
   painter_.drawLine(c, title, 40, 40, 32.0f, kInk);
   painter_.drawParagraph(c, text, 40, 100, c.width() - 80, 22.0f, kInk);
-  painter_.drawLine(c, "Press Space or click to continue.", 40, c.height() - 60, 20.0f, kMuted);
+  painter_.drawLine(c, texts().text("window.continue_or_click"), 40, c.height() - 60, 20.0f, kMuted);
   present(c);
   inputs_.clear();
   script({{Input::Kind::Key, GLFW_KEY_SPACE, 0, 0, 0, 0}}, 0.2);

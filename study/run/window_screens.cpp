@@ -68,7 +68,7 @@ std::optional<bool> WindowResponder::askConsent(const std::string& title, const 
   const auto buttons = buttonColumn(40, std::min(bottom + 30, c.height() - 150), std::min(c.width() - 80, 640),
                                     {consent.accept, consent.decline});
   for (const auto& b : buttons) drawButton(c, painter_, b, false);
-  painter_.drawLine(c, "Press 1 or click to agree, 2 to decline.", 40, c.height() - 40, 18.0f, kMuted);
+  painter_.drawLine(c, texts().text("window.consent_keys"), 40, c.height() - 40, 18.0f, kMuted);
   event(present(c), "consent-screen", nlohmann::json({{"buttons", buttonCentres(buttons)}}).dump());
   inputs_.clear();
   scriptText("1", false, 0.2);
@@ -91,7 +91,7 @@ std::optional<std::string> WindowResponder::askField(const std::string& title, c
   Canvas base = blank();
   painter_.drawLine(base, title + " (" + std::to_string(index) + "/" + std::to_string(count) + ")", 40, 30, 28.0f, kInk);
   const int bottom = 90 + painter_.drawParagraph(base, field.text, 40, 90, base.width() - 80, 24.0f, kInk);
-  painter_.drawLine(base, fieldHint(field), 40, bottom + 16, 18.0f, kMuted);
+  painter_.drawLine(base, fieldHint(field, texts()), 40, bottom + 16, 18.0f, kMuted);
   std::vector<Button> buttons;
   std::vector<std::string> values;  // what each button answers
   if (field.kind == FieldKind::Likert) {
@@ -118,7 +118,7 @@ std::optional<std::string> WindowResponder::askField(const std::string& title, c
   const bool typing = field.kind == FieldKind::Number || field.kind == FieldKind::Text;
   auto screen = [&] {
     Canvas c = base;
-    if (typing) painter_.drawLine(c, "answer: " + typed + "_", 40, base.height() / 2, 24.0f, kInk);
+    if (typing) painter_.drawLine(c, texts().format("form.typed", {{"text", typed}}), 40, base.height() / 2, 24.0f, kInk);
     if (!error.empty()) painter_.drawLine(c, error, 40, base.height() / 2 + 50, 18.0f, kWarn);
     return c;
   };
@@ -135,7 +135,7 @@ std::optional<std::string> WindowResponder::askField(const std::string& title, c
     if (in->kind == Input::Kind::Key && typing && in->key == GLFW_KEY_BACKSPACE) dropLastCodepoint(typed);
     if (in->kind == Input::Kind::Key && typing && (in->key == GLFW_KEY_ENTER || in->key == GLFW_KEY_KP_ENTER)) answer = typed;
     if (answer) {
-      error = fieldError(field, *answer);
+      error = fieldError(field, *answer, texts());
       if (error.empty()) return answer;
     }
     shown = screen();
@@ -158,7 +158,7 @@ std::optional<std::vector<std::string>> WindowResponder::fillForm(const std::str
     int y = 90;
     for (std::size_t i = 0; i < fields.size() && y < c.height() - 120; ++i, y += 34)
       painter_.drawLine(c, fields[i].text.substr(0, 60) + ": " + (values[i].empty() ? "(no answer)" : values[i]), 40, y, 20.0f, kInk);
-    painter_.drawLine(c, "Press Enter to confirm, or Backspace to answer again.", 40, c.height() - 60, 20.0f, kMuted);
+    painter_.drawLine(c, texts().text("window.form_confirm"), 40, c.height() - 60, 20.0f, kMuted);
     event(present(c), "form-confirm", title);
     inputs_.clear();
     script({{Input::Kind::Key, GLFW_KEY_ENTER, 0, 0, 0, 0}}, 0.3);
@@ -189,9 +189,9 @@ bool WindowResponder::showFeedback(const TrialView& view, const Feedback& feedba
       const glm::dvec2 s = layout.toScreen(p.pixel);
       c.strokeCircle(s.x, s.y, 16.0, 4.0, kRight);
     }
-  painter_.drawLine(c, feedback.correct ? "Correct." : "Not correct.", 16, 12, 26.0f, feedback.correct ? kRight : kWarn);
-  painter_.drawLine(c, "The right answer: " + feedback.rightAnswer, 16, layout.answer.y + 8, 22.0f, kInk);
-  painter_.drawLine(c, "Press Space to continue.", 16, layout.answer.y + 44, 18.0f, kMuted);
+  painter_.drawLine(c, texts().text(feedback.correct ? "feedback.correct" : "feedback.wrong"), 16, 12, 26.0f, feedback.correct ? kRight : kWarn);
+  painter_.drawLine(c, texts().format("feedback.right", {{"answer", feedback.rightAnswer}}), 16, layout.answer.y + 8, 22.0f, kInk);
+  painter_.drawLine(c, texts().text("window.continue"), 16, layout.answer.y + 44, 18.0f, kMuted);
   event(present(c), "feedback", nlohmann::json({{"correct", feedback.correct}, {"right_answer", feedback.rightAnswer}}).dump());
   faultPoint("feedback", ++feedbacks_);
   inputs_.clear();
@@ -208,9 +208,10 @@ bool WindowResponder::takeBreak(const BreakSpec& spec) {
   event(start, "break", nlohmann::json({{"min_seconds", spec.minSeconds}}).dump());
   auto screen = [&](double left) {
     Canvas c = blank();
-    painter_.drawLine(c, "Break", 40, 40, 32.0f, kInk);
+    painter_.drawLine(c, texts().text("break.title"), 40, 40, 32.0f, kInk);
     painter_.drawParagraph(c, spec.text, 40, 100, c.width() - 80, 22.0f, kInk);
-    const std::string line = left > 0 ? "You can continue in " + std::to_string(int(std::ceil(left))) + " s." : "Press Space to continue.";
+    const std::string line =
+        left > 0 ? texts().format("break.window_wait", {{"n", std::to_string(int(std::ceil(left)))}}) : texts().text("window.continue");
     painter_.drawLine(c, line, 40, c.height() - 60, 20.0f, kMuted);
     return c;
   };

@@ -139,7 +139,7 @@ void WindowResponder::presentWhenDue(const Canvas& current, TrialClock& clock) {
 // answer parses or the limit passes. Paused time is left out of the RT and the countdown.
 std::optional<Response> WindowResponder::respond(const TrialView& view) {
   if (closed_) return std::nullopt;
-  TrialScreen screen(view, blank(), painter_);
+  TrialScreen screen(view, blank(), painter_, texts());
   inputs_.clear();
   TrialClock clock;
   clock.refreshMs = 1000.0 / (refreshHz() > 0 ? refreshHz() : 60);

@@ -37,17 +37,30 @@ bool BrowserResponder::showMessage(const std::string& title, const std::string& 
 std::optional<bool> BrowserResponder::askConsent(const std::string& title, const ConsentSpec& consent) {
   const auto reply = show(consentScreen(title, consent));
   if (!reply) return std::nullopt;
+  if (reply->value.get<bool>() && !calibrate()) return std::nullopt;  // after consent: what it is for has been said
   return reply->value.get<bool>();
 }
 
 std::optional<std::vector<std::string>> BrowserResponder::fillForm(const std::string& title, const std::vector<FormField>& fields) {
-  const auto reply = show(formScreen(title, fields));
+  const auto reply = show(formScreen(title, fields, texts()));
   if (!reply) return std::nullopt;
   return reply->value.get<std::vector<std::string>>();
 }
 
+bool BrowserResponder::calibrate() {
+  if (!askCalibration_ || calibration_) return true;
+  const auto reply = show(calibrationScreen(noCard_));
+  if (!reply) return false;
+  calibration_ = reply->value;
+  event(reply->receivedNs, "calibration", reply->value.dump());
+  return true;
+}
+
 std::optional<Response> BrowserResponder::respond(const TrialView& view) {
-  channel_->publish(trialScreen(view, images_(view)));
+  if (!calibrate()) return std::nullopt;
+  Screen screen = trialScreen(view, images_(view));
+  if (calibration_) screen.page["px_per_cm"] = (*calibration_)["px_per_cm"];  // null: skipped
+  channel_->publish(std::move(screen));
   Response response;
   std::optional<SteadyTime> deadline;
   for (;;) {
@@ -65,8 +78,9 @@ std::optional<Response> BrowserResponder::respond(const TrialView& view) {
     }
     if (reply->type == "onset" || response.onsetNs == 0) {  // an answer without an onset report: shown at least by then
       const bool reported = reply->type == "onset";
-      view.onset(reply->receivedNs, nlohmann::json{{"via", "browser"}, {"painted_ms", reported ? reply->value["painted_ms"] : nlohmann::json()},
-                                                   {"reported", reported}}.dump());
+      nlohmann::json detail{{"via", "browser"}, {"painted_ms", reported ? reply->value["painted_ms"] : nlohmann::json()}, {"reported", reported}};
+      if (reported && !reply->value["shown"].is_null()) detail["shown"] = reply->value["shown"];  // the stimulus's size on the screen
+      view.onset(reply->receivedNs, detail.dump());
       if (response.onsetNs == 0) {
         response.onsetNs = reply->receivedNs;
         deadline = steadyAt(reply->receivedNs) + std::chrono::duration_cast<SteadyTime::duration>(

@@ -36,6 +36,9 @@ class BrowserResponder : public Responder {
   // The end page: the debrief, the completion code and the link back to the platform; it stays.
   void showDebrief(const std::string& title, const DebriefSpec& debrief) override;
   void completionUrl(std::string url) { completionUrl_ = std::move(url); }
+  // [online] size_calibration: the credit-card screen right after consent (or before the first
+  // trial of a returning participant); `noCard` offers "I have no card".
+  void askCalibration(bool ask, bool noCard) { askCalibration_ = ask, noCard_ = noCard; }
   std::vector<ResponderEvent> takeEvents() override;
   std::optional<DisplayInfo> display() const override { return display_; }
 
@@ -43,6 +46,8 @@ class BrowserResponder : public Responder {
 
  private:
   std::optional<Reply> show(Screen screen);
+  // Shows the calibration once per participant's session; false: the session was closed.
+  bool calibrate();
   void event(std::int64_t tNs, std::string kind, std::string detail);
 
   std::shared_ptr<SessionChannel> channel_;
@@ -50,6 +55,8 @@ class BrowserResponder : public Responder {
   DisplayInfo display_;
   std::vector<ResponderEvent> events_;
   std::string completionUrl_;
+  bool askCalibration_ = false, noCard_ = false;
+  std::optional<nlohmann::json> calibration_;  // the participant's calibration (server side: every trial page carries px_per_cm)
 };
 
 }  // namespace tlab::study

@@ -32,6 +32,11 @@ json LoadParticipant::step(const json& screen) {
     think(thinkTime());
     return finishing(screen, loadFormValues(screen, rng_));
   }
+  if (kind == "calibration") {  // a card sized with a few adjustments on a 1x screen of 96 dpi
+    think(thinkTime());
+    return finishing(screen, {{"type", "calibration"}, {"skipped", false}, {"px_per_cm", 37.8}, {"card_css_px", 323.6},
+                              {"device_pixel_ratio", 1}, {"adjustments", 3}});
+  }
   throw std::runtime_error("unexpected screen kind '" + kind + "': " + screen.dump().substr(0, 200));
 }
 

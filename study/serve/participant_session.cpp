@@ -71,38 +71,41 @@ void ParticipantSession::endWith(const std::string& title, const std::string& te
 
 void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival) {
   const Experiment& e = study.experiment;
-  const std::string title = e.participantTitle.empty() ? "Study" : e.participantTitle;
+  const ParticipantTexts& t = e.texts;
+  const std::string title = e.participantTitle.empty() ? t.text("title.page") : e.participantTitle;
   try {
     const auto existing = study.store.findParticipant(e.id, participant_);
     const RunOptions options{participant_, existing.has_value(), study.tlabVersion};
     BrowserResponder responder(
         channel_, [&](const TrialView& view) { return study.worker.images(view.plan, view.prepared); }, display, std::move(arrival));
     responder.completionUrl(e.online.completionUrl);
+    responder.askCalibration(e.online.sizeCalibration, e.online.calibrationNoCard);
     TrialRunner runner(e, study.store, study.worker);
     const SessionResult r = runner.run(options, responder);
     if (r.outcome == SessionOutcome::Finished) {
       std::lock_guard lock(mutex_);  // the responder showed the debrief page, which stays
       ended_ = "finished";
     } else if (r.outcome == SessionOutcome::Declined) {
-      endWith(title, "You chose not to take part. You can close this page.");
-      std::lock_guard lock(mutex_);
-      ended_ = "declined";
+      {
+        std::lock_guard lock(mutex_);  // declined before the page shows its end: the admin page never lists it as running
+        ended_ = "declined";
+      }
+      channel()->publish(endScreen(title, t.text("flow.declined_close"), "", ""));
     } else if (channel_->timedOut() && study.store.findParticipant(e.id, participant_)) {  // enrolled: the slot is freed
       study.store.dropParticipant(e.id, participant_, channel_->closedBecause());
-      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Your place was given to another participant.");
+      endWith(title, t.text("end.timed_out_replaced"));
     } else if (channel_->timedOut()) {  // still at the welcome or the consent: nothing was stored, they may start again
-      endWith(title, "This session has ended: it " + channel_->closedBecause() + ". Reload the page to start again.");
+      endWith(title, t.text("end.timed_out_restart"));
       std::lock_guard lock(mutex_);
       restartable_ = true;
     } else if (channel_->closed()) {
-      endWith(title, "This session has ended: " + channel_->closedBecause() + ".");
+      endWith(title, t.text("end.closed"));
     }
   } catch (const std::exception& ex) {
     std::fprintf(stderr, "serve: participant '%s': %s\n", participant_.c_str(), ex.what());
     Screen s;
     s.page = {{"kind", "error"},
-              {"text", "The server could not continue your session (your answers so far are stored). Please wait a moment and "
-                       "try again; if this keeps happening, contact the researcher."},
+              {"text", t.text("end.server_problem")},
               {"retry", true}};
     channel_->publish(std::move(s));
     channel_->close("the server could not continue the session");  // the details go to the log, not to the page
@@ -147,6 +150,11 @@ bool ParticipantSession::admit(const std::string& browser) {
   return true;
 }
 
+void ParticipantSession::release() {
+  std::lock_guard lock(mutex_);
+  if (!running_ && !startedAt_) browser_.clear();
+}
+
 std::optional<double> ParticipantSession::elapsedSeconds() const {
   std::lock_guard lock(mutex_);
   if (!startedAt_) return std::nullopt;
@@ -156,8 +164,8 @@ std::optional<double> ParticipantSession::elapsedSeconds() const {
 
 std::string ParticipantSession::state() const {
   std::lock_guard lock(mutex_);
+  if (ended_ == "declined") return ended_;  // set before its end screen is published, while the walk still winds up
   if (running_) return channel_->idleSeconds() > kIdleSeconds ? "idle" : "running";
-  if (ended_ == "declined") return ended_;
   if (!ended_.empty()) return "ended: " + ended_;
   return "waiting for the page";
 }

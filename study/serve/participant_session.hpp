@@ -58,6 +58,9 @@ class ParticipantSession {
   // is let in only after the session's page has been silent for the time-out, and that takeover
   // is logged (stderr and a "takeover" event).
   bool admit(const std::string& browser);
+  // Forgets the browser that opened a session that never started (a refused device), so that the
+  // participant can come back at once in another browser.
+  void release();
 
  private:
   void walk(ServedStudy& study, DisplayInfo display, std::vector<ResponderEvent> arrival);

@@ -6,13 +6,14 @@
 #include <stdexcept>
 
 #include "analysis/number_format.hpp"
+#include "study/serve/web_assets.hpp"
 
 namespace tlab::study {
 
 namespace {
 
-std::string document(const std::string& title, const std::string& body, const std::string& head = "") {
-  return "<!doctype html><html lang=\"en\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\">" + head +
+std::string document(const std::string& title, const std::string& body, const std::string& head = "", const std::string& language = "en") {
+  return "<!doctype html><html lang=\"" + analysis::escapeHtml(language) + "\"><head><meta charset=\"utf-8\"><meta name=\"viewport\" content=\"width=device-width\">" + head +
          "<title>" + analysis::escapeHtml(title) + "</title><link rel=\"stylesheet\" href=\"/static/participant.css\"></head><body><main>" + body +
          "</main></body></html>\n";
 }
@@ -28,16 +29,50 @@ std::string actionForm(const std::string& action, const std::string& participant
 
 }  // namespace
 
-std::string messagePage(const std::string& title, const std::string& text) {
-  return document(title, "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>");
+std::string messagePage(const std::string& title, const std::string& text, const std::string& language) {
+  return document(title, "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>", "", language);
 }
 
-std::string completionPage(const std::string& title, const std::string& text, const std::string& code, const std::string& url) {
+std::string completionPage(const std::string& title, const std::string& text, const std::string& code, const std::string& url,
+                           const ParticipantTexts& texts) {
   std::string body = "<h1>" + analysis::escapeHtml(title) + "</h1><p>" + analysis::escapeHtml(text) + "</p>";
-  if (!code.empty()) body += "<p>Your completion code: <strong id=\"completion-code\">" + analysis::escapeHtml(code) + "</strong></p>";
+  if (!code.empty())
+    body += "<p>" + analysis::escapeHtml(texts.text("end.completion_code")) + " <strong id=\"completion-code\">" + analysis::escapeHtml(code) + "</strong></p>";
   if (!url.empty())
-    body += "<p><a id=\"completion-link\" href=\"" + analysis::escapeHtml(url) + "\">Return to the study platform to confirm completion</a></p>";
-  return document(title, body);
+    body += "<p><a id=\"completion-link\" href=\"" + analysis::escapeHtml(url) + "\">" + analysis::escapeHtml(texts.text("end.return_link")) + "</a></p>";
+  return document(title, body, "", texts.language());
+}
+
+namespace {
+
+// The whole table as JSON for the page's <script type="application/json">: "<" written as \u003c,
+// so that no text can close the script element.
+std::string textsJson(const ParticipantTexts& texts) {
+  std::string out;
+  for (const char c : nlohmann::json(texts.entries()).dump()) out += c == '<' ? std::string("\\u003c") : std::string(1, c);
+  return out;
+}
+
+}  // namespace
+
+std::string participantPage(const ParticipantTexts& texts) {
+  const std::string_view html = webAsset("participant.html");
+  std::string out;
+  for (std::size_t i = 0; i < html.size();) {
+    const std::size_t open = html.find("{{", i);
+    if (open == std::string_view::npos) {
+      out += html.substr(i);
+      break;
+    }
+    const std::size_t close = html.find("}}", open);
+    if (close == std::string_view::npos) throw std::logic_error("participant.html: an unclosed {{");
+    const std::string key(html.substr(open + 2, close - open - 2));
+    out += html.substr(i, open - i);
+    if (key == "texts") out += textsJson(texts);
+    else out += analysis::escapeHtml(key == "language" ? texts.language() : texts.text(key));
+    i = close + 2;
+  }
+  return out;
 }
 
 std::string durationCell(const nlohmann::json& seconds) {

@@ -5,6 +5,7 @@
 
 #include "core/file_text.hpp"
 #include "study/serve/browser_responder.hpp"
+#include "study/serve/flow_pages.hpp"
 #include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
 #include "study/serve/web_assets.hpp"
@@ -53,7 +54,7 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
                              {"Referrer-Policy", "no-referrer"},
                              {"X-Frame-Options", "DENY"},
                              {"Content-Security-Policy", "default-src 'self'; img-src 'self'; style-src 'self'; script-src 'self'"}});
-  http_.set_exception_handler([](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
+  http_.set_exception_handler([this](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
     std::string what = "unknown error";
     try {
       std::rethrow_exception(ep);
@@ -64,9 +65,8 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
     if (req.path.rfind("/api/", 0) == 0) return refuse(res, 500, req.method + " " + req.path + ": " + what);
     std::fprintf(stderr, "serve: 500: %s %s: %s\n", req.method.c_str(), req.path.c_str(), what.c_str());
     res.status = 500;  // a page for people: what happened, in words, and what to do
-    res.set_content(messagePage("Please try again", "The study server has a problem right now. Your answers so far are stored. "
-                                                    "Please try again in a few minutes."),
-                    "text/html; charset=utf-8");
+    const ParticipantTexts& t = study_.experiment.texts;
+    res.set_content(messagePage(t.text("arrival.try_again_title"), t.text("arrival.try_again"), t.language()), "text/html; charset=utf-8");
   });
   routes();
 }
@@ -133,11 +133,12 @@ void StudyServer::pageRoutes() {
   http_.Get(std::string("/p/") + kToken, [this](const httplib::Request& req, httplib::Response& res) {
     if (!session(req.matches[1])) {
       res.status = 404;
-      res.set_content(messagePage("Not found", "This session link is not valid. Please use the link you were given."), "text/html; charset=utf-8");
+      const ParticipantTexts& t = study_.experiment.texts;
+      res.set_content(messagePage(t.text("arrival.not_found_title"), t.text("arrival.no_session"), t.language()), "text/html; charset=utf-8");
       return;
     }
     res.set_header("Cache-Control", "no-store");
-    res.set_content(std::string(webAsset("participant.html")), "text/html; charset=utf-8");
+    res.set_content(participantPage(study_.experiment.texts), "text/html; charset=utf-8");
   });
 }
 
@@ -151,7 +152,12 @@ void StudyServer::apiRoutes() {
   http_.Get(std::string("/api/") + kToken + "/config", [this](const httplib::Request& req, httplib::Response& res) {
     if (!admitted(req, res)) return;
     const Experiment& e = study_.experiment;
-    sendJson(res, 200, {{"title", e.participantTitle.empty() ? "Study" : e.participantTitle}, {"calibrate", e.online.sizeCalibration}});
+    sendJson(res, 200, {{"title", e.participantTitle.empty() ? e.texts.text("title.page") : e.participantTitle},
+                        {"calibrate", e.online.sizeCalibration},
+                        {"language", e.texts.language()},
+                        {"stimulus_size", {{"mode", e.online.stimulusSize}, {"cm", e.online.stimulusCm},
+                                           {"width", e.stimulus.width}, {"height", e.stimulus.height}}},
+                        {"devices", e.online.devices}});
   });
   http_.Post(std::string("/api/") + kToken + "/display", [this](const httplib::Request& req, httplib::Response& res) {
     const auto s = admitted(req, res);
@@ -159,6 +165,12 @@ void StudyServer::apiRoutes() {
     const auto body = parseBody(req, res);
     if (!body) return;
     if (const auto error = checkDisplay(*body)) return refuse(res, 400, "display: " + *error);
+    if (const auto refusal = deviceRefusal(study_.experiment, *body)) {  // nothing stored: they may come back on another device
+      std::fprintf(stderr, "serve: participant '%s': a %s is not allowed by [online] devices; refused\n", s->participant().c_str(),
+                   body->value("device", "").c_str());
+      s->release();
+      return sendJson(res, 200, *refusal);
+    }
     s->start(study_, *body);
     sendJson(res, 200, s->channel()->awaitScreenAfter(0, std::chrono::milliseconds(15000)));
   });
@@ -200,27 +212,26 @@ void StudyServer::adminRoutes() {
 
 void StudyServer::arrive(const httplib::Request& req, httplib::Response& res) {
   const Experiment& e = study_.experiment;
-  auto page = [&res](int status, const std::string& title, const std::string& text) {
+  const ParticipantTexts& t = e.texts;
+  auto page = [&res, &t](int status, const std::string& title, const std::string& text) {
     res.status = status;
-    res.set_content(messagePage(title, text), "text/html; charset=utf-8");
+    res.set_content(messagePage(t.text(title), text, t.language()), "text/html; charset=utf-8");
   };
-  if (req.matches[1] != e.id) return page(404, "Not found", "There is no study with this name here. Please check the link you were given.");
+  if (req.matches[1] != e.id) return page(404, "arrival.not_found_title", t.text("arrival.no_study"));
   const std::string& parameter = e.online.participantParameter;
   const std::string id = req.has_param(parameter.c_str()) ? req.get_param_value(parameter.c_str()) : "";
-  if (!validParticipantId(id))
-    return page(400, "Link incomplete", "The link is missing the participant id (" + parameter + "=...: 1 to 128 letters, digits or _.@-).");
+  if (!validParticipantId(id)) return page(400, "arrival.incomplete_title", t.format("arrival.incomplete", {{"parameter", parameter}}));
   // The store first: a participant who finished (declined, was dropped) in this server's run has a
   // session in memory too, whose walk would be refused by the runner if it started again.
   const auto existing = study_.store.findParticipant(e.id, id);
   if (existing && existing->status == "finished") {  // the code and the link again: the participant may not have copied them
     res.status = 409;
-    return res.set_content(completionPage("Already completed", "You have already completed this study. Thank you!", e.debrief.completionCode,
-                                          e.online.completionUrl),
-                           "text/html; charset=utf-8");
+    return res.set_content(
+        completionPage(t.text("arrival.completed_title"), t.text("arrival.completed"), e.debrief.completionCode, e.online.completionUrl, t),
+        "text/html; charset=utf-8");
   }
-  if (existing && existing->status == "declined") return page(409, "Not taking part", "You chose not to take part in this study.");
-  if (existing && existing->status == "dropped")
-    return page(409, "Session ended", "Your session of this study has ended and your place was given to another participant.");
+  if (existing && existing->status == "declined") return page(409, "arrival.declined_title", t.text("arrival.declined"));
+  if (existing && existing->status == "dropped") return page(409, "arrival.ended_title", t.text("arrival.ended"));
   std::shared_ptr<ParticipantSession> s;
   {
     std::lock_guard lock(mutex_);

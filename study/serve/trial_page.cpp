@@ -88,6 +88,18 @@ double milliseconds(const json& body, const char* key) {
   return v;
 }
 
+// The shown size the page reports with an onset (its mode, CSS and device pixels, cm): at most 10
+// numbers or short texts; null when absent.
+json shownSize(const json& body) {
+  const auto shown = body.find("shown");
+  if (shown == body.end()) return nullptr;
+  if (!shown->is_object() || shown->size() > 10) throw std::invalid_argument("'shown': expected an object of at most 10 fields");
+  for (const auto& [key, value] : shown->items())
+    if (key.size() > 24 || !(value.is_number() || (value.is_string() && value.get<std::string>().size() <= 16)))
+      throw std::invalid_argument("'shown." + key.substr(0, 24) + "': expected a number or a short text");
+  return *shown;
+}
+
 json turntableJson(const Turntable& t) {
   json views = json::array();
   for (const auto& v : t.views) views.push_back({{"sha256", v.sha256}, {"azimuth", v.azimuthDegrees}, {"elevation", v.elevationDegrees}});
@@ -107,7 +119,6 @@ json pageOf(const TrialView& view, const TrialImages& images) {
             {"question", q.text},
             {"answer_kind", form.name()},
             {"format", form.format()},
-            {"hint", form.hint()},
             {"widget", widgetJson(widget)},
             {"limit_s", view.limitSeconds},
             {"image", {{"sha256", view.prepared.stimulusSha256}, {"width", view.plan.stimulus.width}, {"height", view.plan.stimulus.height}}},
@@ -122,7 +133,7 @@ Checked checkTrialReply(const AnswerContext& context, const std::optional<Turnta
   if (!body.is_object()) return {"reply: expected a JSON object", {}};
   const std::string type = body.value("type", "");
   try {
-    if (type == "onset") return {"", {type, {{"painted_ms", milliseconds(body, "painted_ms")}}}};
+    if (type == "onset") return {"", {type, {{"painted_ms", milliseconds(body, "painted_ms")}, {"shown", shownSize(body)}}}};
     if (type == "timeout") return {"", {type, json::object()}};
     if (type == "view") {
       if (!turntable) throw std::invalid_argument("this trial has no turntable");

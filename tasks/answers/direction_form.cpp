@@ -38,9 +38,6 @@ class DirectionForm final : public AnswerForm {
   AnswerKind kind() const override { return AnswerKind::Direction; }
   const char* name() const override { return "direction"; }
   const char* format() const override { return "a direction 'x,y,z' in world coordinates (the surface normal; any length)"; }
-  std::string hint() const override {
-    return "Drag on the picture to turn the gauge until it lies flat on the surface, then press Done.";
-  }
   GroundTruth parse(const Question&, const std::string& text) const override { return parseDirection(text); }
   std::string text(const Question&, const GroundTruth& value) const override { return directionText(std::get<glm::dvec3>(value)); }
   void score(const Question& q, const GroundTruth& given, Score& s) const override {

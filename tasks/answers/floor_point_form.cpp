@@ -16,7 +16,6 @@ class FloorPointForm final : public AnswerForm {
   AnswerKind kind() const override { return AnswerKind::FloorPoint; }
   const char* name() const override { return "floor-point"; }
   const char* format() const override { return "a floor-plan point 'X,Z' in world units"; }
-  std::string hint() const override { return "Click the place on the floor plan."; }
   GroundTruth parse(const Question&, const std::string& text) const override { return parseFloorPoint(text); }
   std::string text(const Question&, const GroundTruth& value) const override {
     const auto p = std::get<glm::dvec2>(value);

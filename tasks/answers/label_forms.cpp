@@ -21,7 +21,6 @@ class LabelForm final : public AnswerForm {
   AnswerKind kind() const override { return AnswerKind::Label; }
   const char* name() const override { return "label"; }
   const char* format() const override { return "one of the candidate labels (e.g. 'X')"; }
-  std::string hint() const override { return "Click the marked point on the picture (or its button below)."; }
   GroundTruth parse(const Question& q, const std::string& text) const override { return parseLabel(text, labelsWithRole(q, "candidate")); }
   std::string text(const Question&, const GroundTruth& value) const override { return std::get<std::string>(value); }
   void score(const Question& q, const GroundTruth& given, Score& s) const override { s.correct = given == q.truth; }
@@ -43,7 +42,6 @@ class LabelSetForm final : public AnswerForm {
   AnswerKind kind() const override { return AnswerKind::LabelSet; }
   const char* name() const override { return "label-set"; }
   const char* format() const override { return "labels separated by commas, or 'none' for no label (e.g. 'C,E')"; }
-  std::string hint() const override { return "Click every marked point you choose (on the picture or below; click again to undo), then Done."; }
   GroundTruth parse(const Question& q, const std::string& text) const override { return parseLabelSet(text, q.labels()); }
   std::string text(const Question&, const GroundTruth& value) const override {
     std::string out;
@@ -74,7 +72,6 @@ class LetterForm final : public AnswerForm {
   AnswerKind kind() const override { return AnswerKind::Letter; }
   const char* name() const override { return "letter"; }
   const char* format() const override { return "one of the letters C, K, R, X, Y"; }
-  std::string hint() const override { return "Click the letter (or press its key)."; }
   GroundTruth parse(const Question&, const std::string& text) const override { return parseLetter(text); }
   std::string text(const Question&, const GroundTruth& value) const override { return std::get<std::string>(value); }
   void score(const Question& q, const GroundTruth& given, Score& s) const override { s.correct = given == q.truth; }

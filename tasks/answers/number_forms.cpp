@@ -29,7 +29,6 @@ class LayerNumberForm final : public WholeNumberForm {
   AnswerKind kind() const override { return AnswerKind::LayerNumber; }
   const char* name() const override { return "layer-number"; }
   const char* format() const override { return "a layer number: a whole number >= 1 (1 = front)"; }
-  std::string hint() const override { return "Type the layer number (1 is the front surface) and press Enter."; }
   GroundTruth parse(const Question&, const std::string& text) const override { return parseLayerNumber(text); }
   void score(const Question& q, const GroundTruth& given, Score& s) const override { s.correct = given == q.truth; }
   std::string guess(const Question& q, core::SeededRandom& random) const override {
@@ -49,7 +48,6 @@ class CountForm final : public WholeNumberForm {
   AnswerKind kind() const override { return AnswerKind::Count; }
   const char* name() const override { return "count"; }
   const char* format() const override { return "a count: a whole number >= 0"; }
-  std::string hint() const override { return "Type the number and press Enter."; }
   GroundTruth parse(const Question&, const std::string& text) const override { return parseCount(text); }
   void score(const Question& q, const GroundTruth& given, Score& s) const override {
     s.correct = given == q.truth;

@@ -70,10 +70,31 @@ TEST(ExperimentFile, TheOnlineTableIsReadAndChecked) {
   EXPECT_NE(errorOf(kBase + "[online]\nport = 80\n").find("bad.toml:10: online.port: unknown key"), std::string::npos);
 }
 
+TEST(ExperimentFile, StimulusSizeDevicesAndCalibrationOnline) {
+  const Experiment d = parseExperiment(kBase, "d.toml", StimulusChecks::Skip);
+  EXPECT_EQ(d.online.stimulusSize, "native");  // the defaults
+  EXPECT_EQ(d.online.devices, std::vector<std::string>{"desktop"});
+  EXPECT_FALSE(d.online.calibrationNoCard);
+  const Experiment cm = parseExperiment(kBase + "[online]\nsize_calibration = true\ncalibration_no_card = true\nstimulus_size = \"10cm\"\n"
+                                                "devices = [\"desktop\", \"tablet\"]\n",
+                                        "cm.toml", StimulusChecks::Skip);
+  EXPECT_EQ(cm.online.stimulusSize, "cm");
+  EXPECT_EQ(cm.online.stimulusCm, 10.0);
+  EXPECT_TRUE(cm.online.calibrationNoCard);
+  EXPECT_EQ(cm.online.devices, (std::vector<std::string>{"desktop", "tablet"}));
+  EXPECT_EQ(parseExperiment(kBase + "[online]\nstimulus_size = \"css\"\n", "c.toml", StimulusChecks::Skip).online.stimulusSize, "css");
+  EXPECT_EQ(errorOf(kBase + "[online]\nstimulus_size = \"10cm\"\n"),
+            "bad.toml:10: online.stimulus_size: a size in cm needs size_calibration = true (the page must know its pixels per cm)");
+  EXPECT_EQ(errorOf(kBase + "[online]\nstimulus_size = \"big\"\n"),
+            "bad.toml:10: online.stimulus_size: expected \"native\", \"css\" or a width such as \"10cm\" (up to 100 cm), got 'big'");
+  EXPECT_EQ(errorOf(kBase + "[online]\ndevices = [\"watch\"]\n"), "bad.toml:10: online.devices: expected desktop, tablet or phone, got 'watch'");
+  EXPECT_EQ(errorOf(kBase + "[online]\ndevices = []\n"), "bad.toml:10: online.devices: at least one kind of device must be allowed");
+}
+
 TEST(ExperimentFile, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf("extra = 1\n" + kBase), "bad.toml:1: extra: unknown key (known: analysis, block_tasks, breaks, consent, counterbalancing, "
-                                            "debrief, factors, goodbye, id, info, observer, online, participant_title, participants, "
-                                            "questionnaires, seed, standard_info, stimulus, tasks, title, training, welcome)");
+                                            "debrief, factors, goodbye, id, info, language, observer, online, participant_title, participants, "
+                                            "questionnaires, seed, standard_info, stimulus, tasks, text, title, training, welcome)");
   EXPECT_EQ(errorOf(kBase + "trials = 0\n"), "bad.toml:9: tasks[1].trials: must be >= 1");
   EXPECT_NE(errorOf(kBase + "when = { method = \"c\" }\n").find("bad.toml:9: tasks[1].when.method: must name a level"),
             std::string::npos);

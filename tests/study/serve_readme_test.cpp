@@ -58,9 +58,7 @@ TEST(ServeReadme, TheOnlineStepsWorkAsWritten) {
   PageClient page(server.port());
   const auto [status, token] = page.arrive(link[1], query);
   ASSERT_EQ(status, 303);
-  json shown = display();
-  shown["px_per_cm"] = 37.8;  // the size calibration the example asks for
-  const Walk w = walk(page, token, page.api(token, "display", shown).body);
+  const Walk w = walk(page, token, page.api(token, "display", display()).body);  // the size calibration comes after consent
   ASSERT_EQ(w.screens.back()["kind"], "end") << w.screens.back().dump();
   EXPECT_EQ(w.screens.back()["completion_code"], "TLABDEMO");
   std::smatch admin;  // step 4

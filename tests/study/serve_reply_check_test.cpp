@@ -14,7 +14,7 @@ namespace {
 std::vector<Screen> everyKindOfScreen(const PlannedTrial& plan, const PreparedTrial& prepared) {
   std::vector<FormField> fields(1);
   const TrialView view{plan, prepared, 30.0, 1, 1, {}};
-  return {messageScreen("T", "x"), consentScreen("T", {"Agree?"}), formScreen("T", fields), feedbackScreen(view, {true, "2", "2"}),
+  return {messageScreen("T", "x"), consentScreen("T", {"Agree?"}), formScreen("T", fields, ParticipantTexts()), feedbackScreen(view, {true, "2", "2"}),
           breakScreen({}), trialScreen(view, {})};
 }
 

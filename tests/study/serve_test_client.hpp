@@ -69,6 +69,8 @@ inline nlohmann::json continueReply(const nlohmann::json& screen) {
   const std::string kind = screen["kind"];
   nlohmann::json r{{"seq", screen["seq"]}};
   if (kind == "consent") r.update({{"type", "consent"}, {"accepted", true}});
+  else if (kind == "calibration")  // the card sized with one adjustment: 323.6 CSS px = 8.56 cm at 1x
+    r.update({{"type", "calibration"}, {"skipped", false}, {"px_per_cm", 37.8}, {"card_css_px", 323.6}, {"device_pixel_ratio", 1}, {"adjustments", 1}});
   else if (kind == "form") r.update({{"type", "form"}, {"values", nlohmann::json::array()}});
   else r["type"] = "continue";
   if (kind == "form")

@@ -1,7 +1,10 @@
 // The participant page of `tlab serve`: shows the screen the server's session flow publishes and
 // sends the participant's replies. It never sees a right answer (scoring happens on the server).
-// Stimuli are shown at their rendered size in device pixels (CSS size = pixels / devicePixelRatio),
-// never scaled by the browser; RT runs from the frame the picture was first painted to the input.
+// Stimuli are shown at the size [online] stimulus_size asks (cssPerPixel below): native (whole
+// device pixels, an integer upscale), css or a width in cm; RT runs from the frame the picture was
+// first painted to the input.
+// Every word it shows comes from the server's participant text table (in the experiment's
+// language, with the file's [text] overrides; a JSON block of the page): t('button.continue').
 // Over 300 lines: the whole page is one script, served as one file without a bundler; each screen
 // kind is one function below.
 'use strict';
@@ -12,6 +15,16 @@ let current = null;      // the screen shown
 let timers = [];         // cleared when the screen changes
 let keyHandler = null;
 let resizeHandler = null;
+let settings = { stimulus_size: { mode: 'native' } };  // GET config
+let pxPerCm = null;      // device pixels per cm, once calibrated
+// key -> text: the experiment's participant text table, which the server writes into the page.
+const texts = JSON.parse(document.getElementById('texts').textContent);
+
+// The text of `key` with each {name} replaced by values[name]; the key itself if the table has none.
+function t(key, values) {
+  const text = Object.prototype.hasOwnProperty.call(texts, key) ? texts[key] : key;
+  return text.replace(/\{([a-z_]+)\}/g, (whole, name) => (values && name in values ? String(values[name]) : whole));
+}
 
 // This browser's key, a cookie made once: the server binds a session to the browser that started
 // it, so that knowing a participant id is not enough to take the session over from elsewhere.
@@ -46,13 +59,12 @@ async function request(method, path, body) {
   try {
     r = await fetch(api(path), { method, headers: body ? { 'Content-Type': 'application/json' } : {}, body: body ? JSON.stringify(body) : undefined, cache: 'no-store' });
   } catch (e) {
-    return { status: 0, body: { error: 'The connection to the study server was lost.' } };
+    return { status: 0, body: { error: t('page.connection_lost') } };
   }
   let json = {};
-  try { json = await r.json(); } catch (e) { json = { error: 'The server sent an unreadable reply.' }; }
+  try { json = await r.json(); } catch (e) { json = { error: t('page.unreadable') }; }
   if (r.status === 403) {  // the session belongs to another browser: nothing here can go on
-    problem('This session is open in another browser or on another device. Please continue there. If you closed it, ' +
-      'this page can take the session over once it has been idle for the time-out.', () => location.reload());
+    problem(t('page.other_browser'), () => location.reload());
     return new Promise(() => {});
   }
   return { status: r.status, body: json };
@@ -65,32 +77,33 @@ async function reply(body) {
   if (body.type === 'onset' || body.type === 'view') return r;
   if (r.status === 200) show(r.body);
   else if (r.status === 409) show(r.body.screen);
-  else if (r.status === 400) showInlineError(r.body.error || 'This answer was not accepted.');
+  else if (r.status === 400) showInlineError(r.body.error || '', body.type === 'answer');
   else {  // resolves with the reply to the retry: the caller learns how the answer finally fared
-    return new Promise((resolve) => problem('Your answer could not be saved (' + (r.body.error || 'server error') + '). Please check your connection and try again.',
+    return new Promise((resolve) => problem(t('page.not_saved', { error: r.body.error || t('page.server_error') }),
       () => resolve(reply(body))));
   }
   return r;
 }
 
-// A refused answer, said on the page; a form field's ("field 'age': ...") below that field, in
-// words without the field's id.
-function showInlineError(text) {
+// A refused answer, said on the page; a form field's ("field 'age': ..." in the participants'
+// language) below that field, in words without the field's id. A refused trial answer is said in
+// the page's words; the server's reason (the task's, in English) stays in the element's title.
+function showInlineError(text, answer) {
   main.querySelectorAll('.error').forEach((e) => e.remove());
   const m = /^field '([^']+)': (.*)$/.exec(text);
   const field = m && main.querySelector('.field[data-field="' + CSS.escape(m[1]) + '"]');
   if (field) {
-    field.append(el('p', { class: 'error' }, 'Please check this answer: ' + m[2] + '.'));
+    field.append(el('p', { class: 'error' }, t('form.check', { error: m[2] })));
     field.scrollIntoView({ block: 'nearest' });
   } else {
-    main.append(el('p', { class: 'error' }, text));
+    main.append(el('p', { class: 'error', title: text }, answer || !text ? t('trial.refused') : text));
   }
 }
 
 async function poll() {
   const r = await request('GET', 'screen');
   if (r.status === 200) show(r.body);
-  else problem('The study server cannot be reached. Please check your connection.', poll);
+  else problem(t('page.unreachable'), poll);
 }
 
 function clear() {
@@ -115,19 +128,19 @@ function show(screen) {
   main.dataset.seq = screen.seq;
   if (screen.kind === 'trial') main.dataset.answerKind = screen.answer_kind; else delete main.dataset.answerKind;
   delete main.dataset.onset;
-  const views = { message, consent, form, trial, feedback, break: pause, end, error: failed, wait };
+  const views = { message, consent, form, trial, feedback, break: pause, end, error: failed, wait, calibration };
   (views[screen.kind] || wait)(screen);
 }
 
 function wait() {
-  main.append(el('p', { class: 'muted' }, 'Please wait…'));
+  main.append(el('p', { class: 'muted' }, t('page.wait')));
   timers.push(setTimeout(poll, 250));
 }
 
 function paragraphs(text) { return el('p', { class: 'text' }, text); }
 
 function message(s) {
-  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue');
+  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, t('button.continue'));
   main.append(el('h1', {}, s.title), paragraphs(s.text), go);
   onKey((e) => { if (e.key === ' ' || e.key === 'Enter') { e.preventDefault(); go.click(); } });
 }
@@ -158,25 +171,57 @@ function form(s) {
   s.fields.forEach((f, i) => {
     const [input, get] = fieldInput(f, i);
     getters.push(get);
-    main.append(el('div', { class: 'field', 'data-field': f.id }, el('p', {}, f.text + (f.required ? '' : ' (optional)')), input));
+    main.append(el('div', { class: 'field', 'data-field': f.id }, el('p', {}, f.required ? f.text : t('form.optional', { text: f.text })), input));
   });
   const go = el('button', { type: 'button', id: 'submit', onclick: () => {
     go.disabled = true;  // one submission in flight; a refused one gives the form back
     reply({ type: 'form', values: getters.map((g) => g()) }).then((r) => { if (current === s) go.disabled = false; });
-  } }, 'Continue');
+  } }, t('button.continue'));
   main.append(go);
 }
 
-// The picture at its rendered size in device pixels; a warning when the window is too small for
+// How many CSS px one image pixel takes ([online] stimulus_size): native: k = ceil(devicePixelRatio)
+// whole device pixels, so a picture is never smaller than its size in CSS px; css: 1; cm: the
+// calibrated width (css without a calibration).
+function cssPerPixel(image) {
+  const size = settings.stimulus_size;
+  if (size.mode === 'css') return 1;
+  if (size.mode === 'cm' && pxPerCm) return size.cm * pxPerCm / devicePixelRatio / image.width;
+  if (size.mode === 'cm') return 1;
+  return Math.max(1, Math.ceil(devicePixelRatio - 1e-6)) / devicePixelRatio;
+}
+
+// The shown size of a picture, sent with its onset and stored with it: device and CSS pixels, cm.
+function shownSize(image) {
+  const scale = cssPerPixel(image), css = [image.width * scale, image.height * scale];
+  const shown = { mode: settings.stimulus_size.mode, css_width: css[0], css_height: css[1],
+    device_width: css[0] * devicePixelRatio, device_height: css[1] * devicePixelRatio, device_pixel_ratio: devicePixelRatio };
+  if (pxPerCm) Object.assign(shown, { cm_width: css[0] * devicePixelRatio / pxPerCm, cm_height: css[1] * devicePixelRatio / pxPerCm });
+  return shown;
+}
+
+// The session's stimulus size, stored with its display (a size in cm is known only after the
+// calibration: each onset stores it).
+function sessionSize(size) {
+  const out = { stimulus_size: size.mode === 'cm' ? size.cm + 'cm' : size.mode };
+  if (size.mode === 'cm') return out;
+  const shown = shownSize({ width: size.width, height: size.height });
+  return Object.assign(out, { stimulus_css_width: shown.css_width, stimulus_css_height: shown.css_height,
+    stimulus_device_width: shown.device_width, stimulus_device_height: shown.device_height });
+}
+
+// The picture at the size stimulus_size asks; a warning when the window is too small for
 // it (and for what stands beside it: besideWidth device pixels, the floor plan).
 function picture(image, src, besideWidth = 0) {
-  const img = el('img', { src, alt: 'stimulus', draggable: 'false' });
-  img.style.width = image.width / devicePixelRatio + 'px';
-  img.style.height = image.height / devicePixelRatio + 'px';
+  const img = el('img', { src, alt: t('trial.stimulus'), draggable: 'false' });
+  const scale = cssPerPixel(image);
+  img.style.width = image.width * scale + 'px';
+  img.style.height = image.height * scale + 'px';
+  if (Number.isInteger(scale * devicePixelRatio)) img.classList.add('native');  // whole device pixels: no smoothing
   const fits = () => {
-    const width = (image.width + besideWidth) / devicePixelRatio + (besideWidth ? 64 : 40), height = image.height / devicePixelRatio + 160;
+    const width = (image.width + besideWidth) * scale + (besideWidth ? 64 : 40), height = image.height * scale + 160;
     const small = innerWidth < width || innerHeight < height;
-    document.getElementById('needed').textContent = Math.ceil(width) + ' × ' + Math.ceil(height);
+    document.getElementById('toosmall-text').textContent = t('page.too_small', { size: Math.ceil(width) + ' × ' + Math.ceil(height) });
     document.getElementById('toosmall').hidden = !small;
   };
   fits();
@@ -197,9 +242,9 @@ function answerControls(s, stage, submit) {
   const w = s.widget;
   if (w.kind === 'number') {
     const input = el('input', { type: 'number', id: 'answer', min: String(w.min), step: '1' });
-    const send = (e) => { if (/^\d+$/.test(input.value.trim())) submit(parseInt(input.value, 10), e); else showInlineError('Please type a whole number.'); };
+    const send = (e) => { if (/^\d+$/.test(input.value.trim())) submit(parseInt(input.value, 10), e); else showInlineError(t('trial.whole_number')); };
     input.addEventListener('keydown', (e) => { if (e.key === 'Enter') send(e); });
-    box.append(input, el('button', { type: 'button', id: 'submit', onclick: send }, 'Submit'));
+    box.append(input, el('button', { type: 'button', id: 'submit', onclick: send }, t('button.submit')));
     setTimeout(() => input.focus(), 0);
   } else if (w.kind === 'pick-label' || w.kind === 'pick-labels') {
     const chosen = new Set();
@@ -207,8 +252,8 @@ function answerControls(s, stage, submit) {
       const hit = el('button', { type: 'button', class: 'hit', 'data-label': l.label, title: l.label });
       // A round hit box centred on the mark, at most 22 CSS px wide and never reaching past the
       // middle to the next mark: every mark is clickable where it is drawn, the nearest one wins.
-      const x = l.x / devicePixelRatio, y = l.y / devicePixelRatio;
-      const gap = Math.min(...s.labels.filter((o) => o !== l).map((o) => Math.hypot(o.x / devicePixelRatio - x, o.y / devicePixelRatio - y)));
+      const k = cssPerPixel(s.image), x = l.x * k, y = l.y * k;
+      const gap = Math.min(...s.labels.filter((o) => o !== l).map((o) => Math.hypot(o.x * k - x, o.y * k - y)));
       const size = Math.max(8, Math.min(22, gap - 1));
       Object.assign(hit.style, { left: x - size / 2 + 'px', top: y - size / 2 + 'px', width: size + 'px', height: size + 'px' });
       const button = el('button', { type: 'button', class: 'label', 'data-label': l.label }, l.label);
@@ -223,13 +268,13 @@ function answerControls(s, stage, submit) {
       stage.append(hit);
       box.append(button);
     });
-    if (w.kind === 'pick-labels') box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(Array.from(chosen), e) }, 'Done'));
+    if (w.kind === 'pick-labels') box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(Array.from(chosen), e) }, t('button.done')));
   } else if (w.kind === 'buttons') {
     w.buttons.forEach((l) => box.append(el('button', { type: 'button', class: 'letter', 'data-letter': l, onclick: (e) => submit(l, e) }, l)));
     onKey((e) => { const k = e.key.toUpperCase(); if (w.buttons.includes(k)) submit(k, e); });
   } else if (w.kind === 'gauge') {
     const g = gauge(s, stage);
-    box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(g.setting(), e) }, 'Done'));
+    box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(g.setting(), e) }, t('button.done')));
     onKey((e) => { if (e.key === 'Enter') submit(g.setting(), e); else g.key(e); });
   }
   return box;
@@ -296,9 +341,9 @@ function gauge(s, stage) {
 }
 
 function floorPlan(s, submit) {
-  const img = el('img', { src: api('image/' + s.floor_plan.sha256 + '.png'), alt: 'floor plan', id: 'floor-plan', draggable: 'false' });
-  img.style.width = s.floor_plan.width / devicePixelRatio + 'px';
-  img.style.height = s.floor_plan.height / devicePixelRatio + 'px';
+  const img = el('img', { src: api('image/' + s.floor_plan.sha256 + '.png'), alt: t('trial.floor_plan'), id: 'floor-plan', draggable: 'false' });
+  img.style.width = s.floor_plan.width * cssPerPixel(s.floor_plan) + 'px';
+  img.style.height = s.floor_plan.height * cssPerPixel(s.floor_plan) + 'px';
   img.addEventListener('click', (e) => {
     // offsetX/Y: from the picture's own top-left corner, inside its border (the box's size would
     // include the border and shift and stretch the click).
@@ -330,8 +375,11 @@ function turntable(s, stage, img) {
   return src(a, e);
 }
 
-// How to answer, in the words of the question's answer form (sent by the server).
-function hint(s) { return s.hint; }
+// How to answer with the mouse or keys: the text of answer.<answer kind> (answer.typed for a kind
+// the table does not know).
+function hint(s) {
+  return t(('answer.' + s.answer_kind) in texts ? 'answer.' + s.answer_kind : 'answer.typed');
+}
 
 // After a refused answer the trial takes answers again: the number box is focused with its text
 // selected, so the corrected answer is simply typed over it.
@@ -345,13 +393,14 @@ function timeUp() {
   main.querySelectorAll('input, button').forEach((e) => { e.disabled = true; });
   main.querySelectorAll('.error').forEach((e) => e.remove());
   const hint = document.getElementById('hint');
-  const note = el('p', { class: 'time-up', id: 'time-up', role: 'alert' }, 'Time is up');
+  const note = el('p', { class: 'time-up', id: 'time-up', role: 'alert' }, t('trial.time_up'));
   if (hint) hint.replaceWith(note); else main.append(note);
   timers.push(setTimeout(() => reply({ type: 'timeout' }), 1500));
 }
 
 function trial(s) {
   let onset = null, done = false;
+  if (typeof s.px_per_cm === 'number') pxPerCm = s.px_per_cm;  // the participant's calibration, kept by the server
   // One answer in flight at a time; a refused one (400) gives the trial back to the participant.
   const submit = (answer, ev) => {
     if (done || onset === null) return;
@@ -367,8 +416,9 @@ function trial(s) {
   const img = picture(s.image, api('image/' + s.image.sha256 + '.png'), s.floor_plan ? s.floor_plan.width : 0);
   if (s.turntable) img.src = turntable(s, stage, img);
   stage.append(img);
-  const clock = el('span', { class: 'countdown', id: 'countdown', title: 'time left' }, '');
-  main.append(el('div', { class: 'top' }, el('span', { class: 'muted progress' }, (s.phase === 'training' ? 'Training ' : 'Trial ') + s.index + ' of ' + s.total), clock),
+  const clock = el('span', { class: 'countdown', id: 'countdown', title: t('trial.time_left') }, '');
+  const progress = t(s.phase === 'training' ? 'trial.progress_practice' : 'trial.progress_test', { index: s.index, total: s.total });
+  main.append(el('div', { class: 'top' }, el('span', { class: 'muted progress' }, progress), clock),
     el('h1', { class: 'question' }, s.question));
   const row = el('div', { class: 'row' }, stage);
   if (s.floor_plan) row.append(floorPlan(s, submit));
@@ -376,7 +426,7 @@ function trial(s) {
   painted(img).then((t) => {
     if (current !== s) return;
     onset = t;
-    reply({ type: 'onset', painted_ms: t }).then(() => { if (current === s) main.dataset.onset = 'reported'; });
+    reply({ type: 'onset', painted_ms: t, shown: shownSize(s.image) }).then(() => { if (current === s) main.dataset.onset = 'reported'; });
     // The time limit runs from the first showing (as on the server): after a reload of the page
     // the countdown goes on where it was, it does not start again.
     const key = 'tlab-shown-' + token + '-' + s.seq;
@@ -394,38 +444,39 @@ function trial(s) {
 }
 
 function feedback(s) {
-  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, 'Continue');
-  const given = s.given === null || s.given === undefined ? 'none (the time was up)' : s.given;
-  main.append(el('h1', {}, s.correct ? 'Correct' : 'Not quite'),
-    el('p', { class: 'text', id: 'given' }, 'Your answer: ' + given), el('p', { class: 'text', id: 'right' }, 'The right answer: ' + s.right_answer),
+  const go = el('button', { type: 'button', id: 'continue', onclick: () => reply({ type: 'continue' }) }, t('button.continue'));
+  const given = s.given === null || s.given === undefined ? t('feedback.none') : s.given;
+  main.append(el('h1', {}, t(s.correct ? 'feedback.correct' : 'feedback.wrong')),
+    el('p', { class: 'text', id: 'given' }, t('feedback.given', { answer: given })),
+    el('p', { class: 'text', id: 'right' }, t('feedback.right', { answer: s.right_answer })),
     picture(s.image, api('image/' + s.image.sha256 + '.png')), el('p', {}, go));
   onKey((e) => { if (e.key === 'Enter' || e.key === ' ') { e.preventDefault(); go.click(); } });
 }
 
 function pause(s) {
-  const go = el('button', { type: 'button', id: 'continue', disabled: 'disabled', onclick: () => reply({ type: 'continue' }) }, 'Continue');
+  const go = el('button', { type: 'button', id: 'continue', disabled: 'disabled', onclick: () => reply({ type: 'continue' }) }, t('button.continue'));
   const left = el('span', { class: 'muted' }, '');
   const until = performance.now() + s.min_seconds * 1000;
   const tick = () => {
     const rest = Math.ceil((until - performance.now()) / 1000);
-    left.textContent = rest > 0 ? ' (in ' + rest + ' s)' : '';
+    left.textContent = rest > 0 ? ' ' + t('break.wait', { n: rest }) : '';
     if (rest <= 0) go.removeAttribute('disabled');
   };
   tick();
   timers.push(setInterval(tick, 250));
-  main.append(el('h1', {}, 'Break'), paragraphs(s.text), go, left);
+  main.append(el('h1', {}, t('break.title')), paragraphs(s.text), go, left);
   onKey((e) => { if (e.key === 'Enter' && !go.disabled) { e.preventDefault(); go.click(); } });
 }
 
 function end(s) {
   main.append(el('h1', {}, s.title), paragraphs(s.text));
-  if (s.completion_code) main.append(el('p', {}, 'Your completion code: ', el('strong', { id: 'completion-code' }, s.completion_code)));
-  if (s.completion_url) main.append(el('p', {}, el('a', { href: s.completion_url, id: 'completion-link' }, 'Return to the study platform to confirm completion')));
+  if (s.completion_code) main.append(el('p', {}, t('end.completion_code') + ' ', el('strong', { id: 'completion-code' }, s.completion_code)));
+  if (s.completion_url) main.append(el('p', {}, el('a', { href: s.completion_url, id: 'completion-link' }, t('end.return_link'))));
 }
 
 function failed(s) {
-  main.append(el('h1', {}, 'A problem on the server'), paragraphs(s.text));
-  if (s.retry) main.append(el('button', { type: 'button', id: 'retry', onclick: () => start() }, 'Try again'));
+  main.append(el('h1', {}, t('end.problem_title')), paragraphs(s.text));
+  if (s.retry) main.append(el('button', { type: 'button', id: 'retry', onclick: () => start() }, t('button.try_again')));
 }
 
 // The refresh rate, estimated from the median interval of 30 animation frames.
@@ -440,38 +491,58 @@ function refreshRate() {
   });
 }
 
-// The credit-card method ("virtual chinrest"): a card is 8.56 cm wide.
-function calibrate() {
-  const stored = sessionStorage.getItem('tlab-px-per-cm');
-  if (stored) return Promise.resolve(parseFloat(stored));
-  return new Promise((resolve) => {
-    clear();
-    const card = el('div', { class: 'card', id: 'card' });
-    const slider = el('input', { type: 'range', min: '150', max: '900', value: '320', id: 'card-size' });
-    const size = () => { card.style.width = slider.value + 'px'; card.style.height = slider.value * 53.98 / 85.6 + 'px'; };
-    slider.addEventListener('input', size);
-    size();
-    main.append(el('h1', {}, 'Screen size'), paragraphs('Hold a credit card (or any card of that size) against the screen and move the slider until the rectangle is exactly as wide as the card.'),
-      slider, card, el('p', {}, el('button', { type: 'button', id: 'calibrated', onclick: () => {
-        const v = parseFloat(slider.value) * devicePixelRatio / 8.56;  // device pixels per cm
-        sessionStorage.setItem('tlab-px-per-cm', String(v));
-        resolve(v);
-      } }, 'Done')));
+// desktop, tablet or phone ([online] devices): touch-only when the primary pointer is coarse and
+// cannot hover; a phone when its screen is also under 600 CSS px on its short side.
+function deviceKind() {
+  if (!matchMedia('(pointer: coarse)').matches || matchMedia('(hover: hover)').matches) return 'desktop';
+  return Math.min(screen.width, screen.height) < 600 ? 'phone' : 'tablet';
+}
+
+// The credit-card method ("virtual chinrest"), after consent: a card is 8.56 cm wide. The rectangle
+// is sized by a slider as wide as the page, by the − and + buttons and by the arrow keys (0.25 CSS
+// px a step); "Done" needs at least one adjustment. The server keeps the value for the participant.
+function calibration(s) {
+  let adjustments = 0;
+  const card = el('div', { class: 'card', id: 'card' });
+  const slider = el('input', { type: 'range', min: '150', max: '900', step: '0.25', value: '320', id: 'card-size', 'aria-label': t('calibration.slider') });
+  const size = () => { card.style.width = slider.value + 'px'; card.style.height = slider.value * 53.98 / 85.6 + 'px'; };
+  const adjust = (step) => { slider.value = String(Number(slider.value) + step); adjustments += 1; size(); };
+  slider.addEventListener('input', () => { adjustments += 1; size(); });
+  size();
+  const done = el('button', { type: 'button', id: 'calibrated', onclick: () => {
+    if (adjustments === 0) return showInlineError(t('calibration.not_moved'));
+    const width = Number(slider.value);
+    reply({ type: 'calibration', skipped: false, px_per_cm: width * devicePixelRatio / 8.56, card_css_px: width, device_pixel_ratio: devicePixelRatio, adjustments });
+  } }, t('calibration.done'));
+  main.append(el('h1', {}, t('calibration.title')), paragraphs(t('calibration.text')), el('p', { class: 'muted' }, t('calibration.how')),
+    el('div', { class: 'calibration' },
+      el('button', { type: 'button', id: 'card-smaller', title: t('calibration.smaller'), 'aria-label': t('calibration.smaller'), onclick: () => adjust(-0.25) }, '−'),
+      slider,
+      el('button', { type: 'button', id: 'card-larger', title: t('calibration.larger'), 'aria-label': t('calibration.larger'), onclick: () => adjust(0.25) }, '+')),
+    card, el('p', {}, done));
+  if (s.no_card) main.append(el('p', {}, el('button', { type: 'button', id: 'no-card', onclick: () => reply({ type: 'calibration', skipped: true, adjustments }) }, t('calibration.no_card'))));
+  onKey((e) => {  // the arrow keys and + / - move the edge wherever the focus is (the slider's own keys too)
+    const step = { ArrowLeft: -0.25, ArrowDown: -0.25, '-': -0.25, ArrowRight: 0.25, ArrowUp: 0.25, '+': 0.25 }[e.key];
+    if (step === undefined) return;
+    e.preventDefault();
+    adjust(step);
   });
 }
 
 async function start() {
   current = null;
   const config = await request('GET', 'config');
-  if (config.status !== 200) return problem('This session link is not valid or the server cannot be reached.', start);
+  if (config.status !== 200) return problem(t('page.invalid_link'), start);
   document.title = config.body.title;
+  settings = config.body;
   const display = {
+    device: deviceKind(), max_touch_points: navigator.maxTouchPoints || 0,
+    ...sessionSize(settings.stimulus_size),
     screen_width: screen.width, screen_height: screen.height, window_width: innerWidth, window_height: innerHeight,
     device_pixel_ratio: devicePixelRatio, user_agent: navigator.userAgent.slice(0, 300), refresh_hz: await refreshRate(),
   };
-  if (config.body.calibrate) display.px_per_cm = await calibrate();
   const r = await request('POST', 'display', display);
-  if (r.status === 200) show(r.body); else problem(r.body.error || 'The study could not start.', start);
+  if (r.status === 200) show(r.body); else problem(r.body.error || t('page.could_not_start'), start);
 }
 
 setInterval(() => request('GET', 'screen').then((r) => { if (r.status === 200 && current && r.body.seq > current.seq) show(r.body); }), 30000);

@@ -1,8 +1,12 @@
 #!/usr/bin/env python3
 """The edges of an online session in headless Chromium (tests/study/data/online_edges.toml):
 
-* the credit-card size calibration ("virtual chinrest"): the slider is moved until the card is
-  as wide as it should be, and the session's display JSON stores the pixels per centimetre;
+* the credit-card size calibration ("virtual chinrest") after consent: "Done" before any change
+  is refused on the page; the rectangle is then sized by the arrow keys and the − and + buttons,
+  the calibration event stores the pixels per centimetre and the number of adjustments, a new tab
+  of the same participant is not asked again (the server keeps the value), and the trial's picture
+  is 5 cm wide by that calibration ([online] stimulus_size = "5cm"); another participant says "I
+  have no card" (stored as skipped);
 * a participant who declines consent: the page says so and only the decision is stored;
 * a trial whose time limit runs out in the browser: the countdown reaches 0, the page says "Time is
   up", the next screen comes by itself, and the trial is stored as missing ("time limit reached in the browser").
@@ -17,58 +21,85 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 import serve_browser_test as base  # noqa: E402
-from serve_browser_test import By, check  # noqa: E402
+from serve_browser_test import ActionChains, By, Keys, check  # noqa: E402
 
 base.EXPERIMENT_ID = "online-edges"
-CARD_CSS_PX = 400  # where the test puts the slider: 400 CSS px for 8.56 cm
+CARD_START = 320  # the rectangle's width in CSS px before any adjustment
+ADJUSTED = CARD_START + 4 * 0.25 + 2 * 0.25 - 0.25  # four arrow keys, + twice, − once
+CM = 5  # [online] stimulus_size of online_edges.toml
 
 
 def calibrate(p, name):
-    slider = p.until(lambda: p.finds("#card-size"), "the size calibration screen")[0]
-    p.driver.execute_script(f"arguments[0].value = '{CARD_CSS_PX}'; arguments[0].dispatchEvent(new Event('input'));", slider)
-    width = p.driver.execute_script("return document.getElementById('card').getBoundingClientRect().width;")
-    check(abs(width - CARD_CSS_PX) < 0.5, f"the card is {width} px wide after the slider moved to {CARD_CSS_PX}")
-    p.screenshot(name)
+    """Sizes the card with real key presses and clicks after a refused "Done"; returns the page's width."""
+    p.until(lambda: p.state()["kind"] == "calibration", "the size calibration screen after consent")
+    slider = p.find("#card-size")
+    check(slider.size["width"] >= 600, f"the slider is {slider.size['width']} CSS px wide")
     p.find("#calibrated").click()
+    error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refusal of an unadjusted card")[0]
+    check("not been changed" in error.text, f"Done without any change says: {error.text!r}")
+    p.screenshot(name + "-not-moved")
+    for _ in range(4):
+        ActionChains(p.driver).send_keys(Keys.ARROW_RIGHT).perform()
+    p.find("#card-larger").click()
+    p.find("#card-larger").click()
+    p.find("#card-smaller").click()
+    p.until(lambda: abs(float(slider.get_attribute("value")) - ADJUSTED) < 1e-9, f"the card at {ADJUSTED} CSS px")
+    width = p.driver.execute_script("return document.getElementById('card').getBoundingClientRect().width;")
+    check(abs(width - ADJUSTED) < 0.01, f"the card is {width} px wide, the slider says {ADJUSTED}")
+    p.screenshot(name)
+    seq = p.state()["seq"]
+    p.find("#calibrated").click()
+    return p.next_screen(seq)
 
 
 def arrive(p, server, participant):
-    p.driver.get(server.base + "/")
-    p.driver.execute_script("sessionStorage.clear();")  # a new participant calibrates anew
     p.driver.get(server.link(participant))
 
 
-def decline(p, server):
-    arrive(p, server, "decliner")
-    calibrate(p, "calibration")
-    s = p.next_screen(0)
+def to_consent(p, server, participant):
+    arrive(p, server, participant)
+    s = p.next_screen(-1)
     check(s["kind"] == "message", f"welcome expected, got {s}")
     p.find("#continue").click()
     s = p.next_screen(s["seq"])
     check(s["kind"] == "consent", f"consent expected, got {s}")
+    return s
+
+
+def decline(p, server):
+    to_consent(p, server, "decliner")
     p.screenshot("consent")
+    seq = p.state()["seq"]
     p.find("#decline").click()
-    s = p.next_screen(s["seq"])
+    s = p.next_screen(seq)
     if s["kind"] == "message":  # "You chose not to take part ..."
         p.find("#continue").click()
         s = p.next_screen(s["seq"])
-    check(s["kind"] == "end", f"the end page expected after declining, got {s}")
+    check(s["kind"] == "end", f"the end page expected after declining (no calibration), got {s}")
     body = p.driver.find_element(By.TAG_NAME, "body").text
     check("not to take part" in body, f"the end page after declining says: {body!r}")
     p.screenshot("declined")
 
 
 def time_out_then_answer(p, server):
+    s = to_consent(p, server, "slow")
+    p.find("#accept").click()
+    s = calibrate(p, "calibration")
+    check(s["kind"] == "message", f"the instructions expected after the calibration, got {s}")
+    # The same participant in a new tab: the server knows the calibration, nothing is asked again.
+    p.driver.switch_to.new_window("tab")
     arrive(p, server, "slow")
-    calibrate(p, "calibration-2")
-    seq = 0
-    while True:
-        s = p.next_screen(seq)
-        seq = s["seq"]
-        if s["kind"] == "trial":
-            break
-        p.find("#accept" if s["kind"] == "consent" else "#continue").click()
+    s = p.next_screen(-1)
+    check(s["kind"] == "message", f"a new tab of a calibrated participant shows {s}, not the instructions")
+    p.find("#continue").click()
+    s = p.next_screen(s["seq"])
+    seq = s["seq"]
+    check(s["kind"] == "trial", f"the trial expected, got {s}")
     p.trial_ready()
+    shown = p.driver.execute_script(
+        "const r = document.querySelector('#stage img').getBoundingClientRect(); return {w: r.width, dpr: devicePixelRatio};")
+    expected = CM * ADJUSTED / 8.56  # CSS px: 5 cm by the card's CSS px per 8.56 cm
+    check(abs(shown["w"] - expected) < 0.01, f"the picture is {shown['w']} CSS px wide, {CM} cm are {expected:.3f}")
     p.screenshot("trial-before-time-out")
     # Nobody answers: the countdown runs out, the page says "Time is up" on the trial, and sends the
     # time-out itself. What the page showed is recorded as it changes (no sampling that could miss it).
@@ -87,29 +118,45 @@ def time_out_then_answer(p, server):
     check(s["kind"] == "end", f"the end page expected, got {s}")
 
 
+def no_card(p, server):
+    s = to_consent(p, server, "nocard")
+    p.find("#accept").click()
+    p.until(lambda: p.state()["kind"] == "calibration", "the size calibration screen")
+    p.screenshot("calibration-no-card-offered")
+    p.find("#no-card").click()
+    s = p.next_screen(p.state()["seq"])
+    check(s["kind"] == "message", f"the instructions expected after 'I have no card', got {s}")
+
+
 def check_database(tlab, db, folder):
     import subprocess
     result = subprocess.run([tlab, "export", db, "--csv", str(folder)], capture_output=True, text=True, timeout=120)
     check(result.returncode == 0, f"tlab export failed: {result.stderr}")
     consent = {r["participant"]: r["decision"] for r in base.read_csv(folder, "consent.csv")}
-    check(consent == {"decliner": "declined", "slow": "accepted"}, f"consent decisions: {consent}")
-    participants = [r["participant"] for r in base.read_csv(folder, "participants.csv")]
-    check(participants == ["slow"], f"only the participant who agreed has a slot: {participants}")
+    check(consent == {"decliner": "declined", "slow": "accepted", "nocard": "accepted"}, f"consent decisions: {consent}")
+    participants = sorted(r["participant"] for r in base.read_csv(folder, "participants.csv"))
+    check(participants == ["nocard", "slow"], f"only the participants who agreed have a slot: {participants}")
     trials = [t for t in base.read_csv(folder, "trials.csv") if t["participant"] == "slow"]
     check(len(trials) == 2, f"{len(trials)} trials of the slow participant")
     first, second = trials
     check(first["responded"] == "1" and first["answered"] == "0" and first["raw_answer"] == "", f"the timed-out trial: {first}")
     check("time limit" in first["note"], f"the timed-out trial's note: {first['note']!r}")
     check(second["answered"] == "1" and second["raw_answer"] == "1", f"the answered trial: {second}")
-    sessions = [s for s in base.read_csv(folder, "sessions.csv") if s["participant"] == "slow"]
-    browser = json.loads(sessions[0]["display"])["browser"]
-    expected = CARD_CSS_PX * browser["device_pixel_ratio"] / 8.56
-    check(abs(browser["px_per_cm"] - expected) < 0.01, f"px_per_cm {browser.get('px_per_cm')} (expected {expected:.3f})")
+    events = base.read_csv(folder, "events.csv")
+    calibrations = {e["participant"]: json.loads(e["detail"]) for e in events if e["kind"] == "calibration"}
+    check(set(calibrations) == {"slow", "nocard"}, f"calibration events: {calibrations}")
+    slow = calibrations["slow"]
+    check(slow["skipped"] is False and slow["adjustments"] == 7 and abs(slow["card_css_px"] - ADJUSTED) < 1e-9
+          and abs(slow["px_per_cm"] - ADJUSTED * slow["device_pixel_ratio"] / 8.56) < 1e-9, f"the calibration stored: {slow}")
+    check(calibrations["nocard"] == {"skipped": True, "px_per_cm": None, "adjustments": 0}, f"'I have no card' stored: {calibrations['nocard']}")
+    onsets = [json.loads(e["detail"]) for e in events if e["kind"] == "onset" and e["participant"] == "slow"]
+    check(onsets and all(o["shown"]["mode"] == "cm" and abs(o["shown"]["cm_width"] - CM) < 1e-6 for o in onsets), f"the onsets' shown sizes: {onsets}")
 
 
 def edges(tlab, p, server, db, work):
     decline(p, server)
     time_out_then_answer(p, server)
+    no_card(p, server)
     server.stop()
     check_database(tlab, db, work / "csv")
 
