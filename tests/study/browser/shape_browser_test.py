@@ -67,7 +67,8 @@ def walk(p, server):
                 base.corrupt_next_answer(p, {"slant": 120, "tilt": 0})  # a slant no gauge has: refused
                 p.find("#submit").click()
                 error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused gauge answer's message")[0]
-                check("slant" in error.text, f"the refusal says: {error.text!r}")
+                reason = error.get_attribute("title") or ""
+                check(error.text and "slant" in reason, f"the refusal says {error.text!r}, its reason {reason!r}")
                 check(p.state()["seq"] == seq, "the gauge trial was left after a refused answer")
                 shown["gauge"] = turn_gauge(p)
                 p.find("#submit").click()
