@@ -57,7 +57,7 @@ std::string floorPointText(const std::optional<FloorPlan>& floorPlan, const json
   if (!(x >= 0 && y >= 0 && x < plan.width && y < plan.height)) throw std::invalid_argument("the click is outside the floor plan");
   const glm::dvec2 world = plan.worldAt({x, y});
   char text[96];
-  std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);  // as the window writes a click (study/run/trial_screen.cpp)
+  std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);  // as the window writes a click (study/window/trial_screen.cpp)
   return text;
 }
 

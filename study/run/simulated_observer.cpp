@@ -1,4 +1,4 @@
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,7 @@
 #include <thread>
 
 #include "core/seeded_random.hpp"
-#include "study/simulate/image_contrast.hpp"
+#include "study/run/image_contrast.hpp"
 #include "study/design/order_permutations.hpp"
 
 namespace tlab::study {

@@ -1,10 +1,10 @@
-#include "study/run/trial_screen.hpp"
+#include "study/window/trial_screen.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 
-#include "study/run/window_style.hpp"
+#include "study/window/window_style.hpp"
 #include "tasks/letter_patterns.hpp"
 
 namespace tlab::study {
