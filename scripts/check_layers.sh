@@ -6,11 +6,11 @@
 #               → {scene, gpu}   (renderer/CMakeLists.txt says what each floor holds); the
 #               shaders' #include "floor/piece.glsl" (resolved inside renderer/) follow it too
 #   study/:     {window, serve, simulate} → analyze → run → store → design
-#               (study/CMakeLists.txt says what each floor holds)
+#               (study/CMakeLists.txt says what each floor holds); only window/ includes GLFW
 # A file may include its own folder and any folder below it; siblings ({tasks, stimuli},
 # {buffer, kbuffer, peel}, {scene, gpu}, {window, serve, simulate}) do not include each other.
 # `check_layers.sh --self-test` proves the check can fail: it copies the sources to a temporary
-# folder, checks the copy passes, then plants upward includes (folders, renderer/ C++ and shader
+# folder, checks the copy passes, then plants wrong includes (folders, renderer/ C++ and shader
 # includes, study/) and expects exactly those to fail (the ctest check_layers_self_test). app/ may include
 # bench/measure (tlab bench). Outside the floors: bench/ and fuzz/ may include anything below
 # app/; tests/X/ may include X/, what X/ may include, and tests/support/ (which may include
@@ -33,6 +33,7 @@ if [[ ${1:-} == --self-test ]]; then
     'renderer/kbuffer/kbuffer_insert.frag|#include "peel/planted.glsl"|renderer/kbuffer/ may include only floors below'
     'study/store/store.hpp|#include "study/run/responder.hpp"|study/store/ may include only floors below'
     'study/window/trial_screen.hpp|#include "study/serve/trial_page.hpp"|study/window/ may include only floors below'
+    'study/run/trial_runner.cpp|#include <GLFW/glfw3.h>|only study/window/ may'
   )
   for plant in "${plants[@]}"; do
     IFS='|' read -r file line rule <<<"$plant"
@@ -48,12 +49,13 @@ if [[ ${1:-} == --self-test ]]; then
     target=${line#*\"}
     target=${target%\"}
     [[ $file == *.@(glsl|comp|frag|vert) ]] && target=renderer/$target  # a shader names a file of renderer/
+    [[ $line == *'<GLFW/'* ]] && target=GLFW
     [[ $out == *"$file includes $target: $rule"* ]] ||
       { echo "self-test: $file with $line: expected '$rule' in: $out" >&2; exit 1; }
   done
-  [[ $out == *"check_layers: ${#plants[@]} include(s) point up a floor"* ]] ||
+  [[ $out == *"check_layers: ${#plants[@]} include(s) point up a floor or out of their floor"* ]] ||
     { echo "self-test: more than the planted includes failed: $out" >&2; exit 1; }
-  echo "check_layers --self-test: ${#plants[@]} planted upward includes caught"
+  echo "check_layers --self-test: ${#plants[@]} planted wrong includes caught"
   exit 0
 fi
 cd "${1:-$(dirname "$0")/..}"
@@ -130,8 +132,14 @@ done < <(
     '^[[:space:]]*#include "[^"]+"' renderer | sed -E 's/:[0-9]+:[[:space:]]*#include "/::renderer\//; s/"$//'
 )
 
+# Inside study/, only the window front end talks to GLFW (the session flow below it is the same for
+# every front end).
+while IFS=: read -r file _; do
+  [[ $file == study/window/* ]] || fail "$file includes GLFW: only study/window/ may (check_layers.sh)"
+done < <(grep -rnE --include='*.cpp' --include='*.hpp' '^#include <GLFW/' study || true)
+
 if ((failures > 0)); then
-  echo "check_layers: $failures include(s) point up a floor" >&2
+  echo "check_layers: $failures include(s) point up a floor or out of their floor" >&2
   exit 1
 fi
 echo "check_layers: every include points down"
