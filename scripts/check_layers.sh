@@ -9,12 +9,12 @@
 #               (study/CMakeLists.txt says what each floor holds); only window/ includes GLFW
 # A file may include its own folder and any folder below it; siblings ({tasks, stimuli},
 # {buffer, kbuffer, peel}, {scene, gpu}, {window, serve, simulate}) do not include each other.
+# app/ may include bench/measure (tlab bench). Outside the floors: bench/ and fuzz/ may include
+# anything below app/; tests/X/ may include X/, what X/ may include, and tests/support/ (which may
+# include anything below app/); the few tests that need a sibling floor are listed in `crossing`.
 # `check_layers.sh --self-test` proves the check can fail: it copies the sources to a temporary
-# folder, checks the copy passes, then plants wrong includes (folders, renderer/ C++ and shader
-# includes, study/) and expects exactly those to fail (the ctest check_layers_self_test). app/ may include
-# bench/measure (tlab bench). Outside the floors: bench/ and fuzz/ may include anything below
-# app/; tests/X/ may include X/, what X/ may include, and tests/support/ (which may include
-# anything below app/); the few tests that need a sibling floor are listed in `crossing`.
+# folder, checks the copy passes, then plants wrong includes (folders, renderer/ C++ and shaders,
+# study/, GLFW) and expects exactly those to fail (the ctest check_layers_self_test).
 set -euo pipefail
 
 if [[ ${1:-} == --self-test ]]; then
