@@ -14,6 +14,7 @@
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
+#include "renderer/styles/style_file.hpp"
 
 namespace tlab::app {
 
@@ -33,6 +34,8 @@ nlohmann::json rowJson(const BenchRow& r) {
     j["error"] = r.error;
     return j;
   }
+  if (render::isStyleFilePath(r.style))  // a style file: its identity, as in --stats-json
+    if (const auto sha = render::findStyle(r.style).fileSha256()) j["style_sha256"] = *sha;
   j.update({{"fragments", r.timing.fragments}, {"frame_ms", r.timing.frameMs},
             {"fps", r.timing.frameMs > 0 ? 1000.0 / r.timing.frameMs : 0.0}, {"pass_ms", passes},
             {"ratio_to_reference", r.ratio}, {"operations", r.timing.operations}});

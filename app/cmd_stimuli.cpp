@@ -15,6 +15,7 @@
 #include "stimuli/sets/probe_source.hpp"
 #include "stimuli/sets/stimulus_set_file.hpp"
 #include "stimuli/sets/stimulus_set_renderer.hpp"
+#include "tasks/answer_form.hpp"
 #include "tasks/question_json.hpp"
 #include "tasks/task_registry.hpp"
 
@@ -69,7 +70,9 @@ class TaskProbeSource final : public stimuli::ProbeSource {
     for (const auto& q : task->probe(request)) {
       stimuli::ProbeQuestion p;
       p.text = q.text;
-      p.answerFormat = tasks::answerFormat(q.answerKind);
+      const auto field = tasks::answerForm(q).bookletField();
+      p.answerFormat = field ? *field : std::string(tasks::answerFormat(q.answerKind)) + "; answer it in the window or the browser";
+      p.printable = field.has_value();
       p.groundTruth = tasks::toJson(q);
       for (const auto& point : q.points) p.marks.push_back({point.label, point.role, point.world, point.pixel});
       out.push_back(std::move(p));

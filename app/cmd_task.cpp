@@ -123,7 +123,7 @@ void runList() {
 
 void addCommonOptions(CLI::App& cmd, TaskOptions& o) {
   cmd.add_option("scene", o.scene, "a glTF file (.gltf/.glb) or builtin:NAME[?param=value&...]")->required();
-  cmd.add_option("--task", o.task, "layer-index, follow-boundary, nearest-point, counting, target-discovery or pattern")->required();
+  cmd.add_option("--task", o.task, "layer-index, follow-boundary, nearest-point, counting, target-discovery, pattern, gauge-figure or relative-depth")->required();
   cmd.add_option("--seed", o.seed, "random seed of the probe selection")->capture_default_str();
   cmd.add_option("--size", o.size, "image size WxH of the stimulus")->capture_default_str();
   cmd.add_option("--camera", o.camera, "\"eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG [near=N far=F]\"");

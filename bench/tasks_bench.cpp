@@ -7,7 +7,7 @@
 #include <string>
 
 #include "renderer/scene/scene_source.hpp"
-#include "tasks/geodesic_distances.hpp"
+#include "tasks/nearest_point/geodesic_distances.hpp"
 #include "tasks/task_registry.hpp"
 #include "tasks/welded_mesh.hpp"
 

@@ -7,6 +7,8 @@
 
 #include "study/serve/flow_pages.hpp"
 #include "study/serve/trial_page.hpp"
+#include "tasks/answer_form.hpp"
+#include "tasks/gauge_frame.hpp"
 
 namespace tlab::fuzz {
 
@@ -21,21 +23,24 @@ inline const ServeScreens& serveScreens() {
     ServeScreens s;
     s.plan.stimulus.width = s.plan.stimulus.height = 64;
     const std::string sha(64, 'a');
-    for (int kind = 0; kind < 7; ++kind) {  // the six answer kinds, then a label trial with a turntable
+    constexpr int kKinds = 7;
+    for (int kind = 0; kind <= kKinds; ++kind) {  // the seven answer kinds, then a layer-number trial with a turntable
       auto p = std::make_unique<study::PreparedTrial>();
-      p->question.answerKind = static_cast<tasks::AnswerKind>(kind % 6);
+      p->question.answerKind = static_cast<tasks::AnswerKind>(kind % kKinds);
+      p->question.measurements = {{"layer", 1}, {"gauge-radius-px", 8}, {"start-slant", 10}, {"start-tilt", 20}};
+      tasks::keepGaugeFrame(p->question, tasks::GaugeFrame{});
       p->question.points = {{"A", "probe", {}, {10, 10}, 0}, {"B", "candidate", {}, {20, 20}, 1}, {"C", "candidate", {}, {30, 30}, 2},
                             {"D", "mark", {}, {40, 40}, 3},  {"E", "mark", {}, {50, 50}, 4}};
       p->stimulusSha256 = sha;
       study::TrialImages images;
-      if (p->question.answerKind == tasks::AnswerKind::FloorPoint) {
+      if (tasks::answerForm(p->question).widget(p->question).kind == tasks::WidgetKind::FloorPlanPoint) {
         p->floorPlan = study::FloorPlan{};
         p->floorPlan->camera.eye = {0.0f, 5.0f, 0.01f};
         p->floorPlan->width = 48;
         p->floorPlan->height = 32;
         images.floorPlanSha256 = std::string(64, 'b');
       }
-      if (kind == 6) {
+      if (kind == kKinds) {
         study::Turntable t{3, 2, 1, 0, {}};
         for (int v = 0; v < 6; ++v) t.views.push_back({v % 3, v / 3, 30.0 * v, 10.0, std::string(63, 'c') + char('0' + v), "view " + std::to_string(v)});
         images.turntable = t;

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "tasks/answer_form.hpp"
 #include "tasks/letter_patterns.hpp"
 
 namespace tlab::tasks {
@@ -49,7 +50,7 @@ std::string findLabel(const std::string& token, const std::vector<std::string>& 
   throw AnswerFormatError("answer: '" + token + "' in '" + text + "' is not one of the labels (" + joined(allowed) + ")");
 }
 
-double parseReal(const std::string& s, const std::string& text) {
+double parseNumber(const std::string& s, const std::string& text, const std::string& expected) {
   std::size_t used = 0;
   double v = 0.0;
   try {
@@ -57,9 +58,11 @@ double parseReal(const std::string& s, const std::string& text) {
   } catch (const std::exception&) {
     used = 0;
   }
-  if (used == 0 || used != s.size() || !std::isfinite(v)) fail("a floor-plan point 'X,Z' in world units", text);
+  if (used == 0 || used != s.size() || !std::isfinite(v)) fail(expected, text);
   return v;
 }
+
+double parseReal(const std::string& s, const std::string& text) { return parseNumber(s, text, "a floor-plan point 'X,Z' in world units"); }
 
 }  // namespace
 
@@ -104,21 +107,22 @@ std::string parseLetter(const std::string& text) {
   fail("one of the letters C, K, R, X, Y", text);
 }
 
-GroundTruth parseAnswer(const Question& question, const std::string& text) {
-  switch (question.answerKind) {
-    case AnswerKind::LayerNumber: return parseLayerNumber(text);
-    case AnswerKind::Count: return parseCount(text);
-    case AnswerKind::LabelSet: return parseLabelSet(text, question.labels());
-    case AnswerKind::Label: {
-      std::vector<std::string> candidates;
-      for (const auto& p : question.points)
-        if (p.role == "candidate") candidates.push_back(p.label);
-      return parseLabel(text, candidates);
-    }
-    case AnswerKind::FloorPoint: return parseFloorPoint(text);
-    case AnswerKind::Letter: return parseLetter(text);
-  }
-  throw AnswerFormatError("answer: unknown answer kind");
+glm::dvec3 parseDirection(const std::string& text) {
+  const char* expected = "a direction 'x,y,z' (three numbers, not all 0)";
+  std::string t = trim(text);
+  std::replace(t.begin(), t.end(), ',', ' ');
+  std::istringstream in(t);
+  std::vector<std::string> parts;
+  std::string part;
+  while (in >> part) parts.push_back(part);
+  if (parts.size() != 3) fail(expected, text);
+  glm::dvec3 d;
+  for (int i = 0; i < 3; ++i) d[i] = parseNumber(parts[std::size_t(i)], text, expected);
+  const double length = glm::length(d);
+  if (!(length > 1e-12) || !std::isfinite(length)) fail(expected, text);
+  return d / length;
 }
+
+GroundTruth parseAnswer(const Question& question, const std::string& text) { return answerForm(question).parse(question, text); }
 
 }  // namespace tlab::tasks

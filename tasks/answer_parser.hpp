@@ -26,8 +26,10 @@ std::set<std::string> parseLabelSet(const std::string& text, const std::vector<s
 std::string parseLabel(const std::string& text, const std::vector<std::string>& allowed);
 glm::dvec2 parseFloorPoint(const std::string& text);       // "X,Z"
 std::string parseLetter(const std::string& text);          // C, K, R, X or Y (either case)
+glm::dvec3 parseDirection(const std::string& text);        // "x,y,z", not all 0; normalized
 
-// Parses `text` as the question's answer kind into the same alternative as its ground truth.
+// Parses `text` as the question's answer kind into the same alternative as its ground truth
+// (its answer form's parser).
 GroundTruth parseAnswer(const Question& question, const std::string& text);
 
 }  // namespace tlab::tasks

@@ -21,13 +21,15 @@ enum class AnswerKind {
   Count,        // std::int64_t >= 0 (Elmqvist T1, T4)
   FloorPoint,   // glm::dvec2 = world (x, z) on the floor plan (Elmqvist T3)
   Letter,       // std::string, one of C K R X Y (Elmqvist T2)
+  Direction,    // glm::dvec3, a unit direction in world coordinates (the gauge figure's normal)
 };
+// Each kind's parser, text form, widget and simulated answer: tasks/answer_form.hpp.
 
 const char* answerKindName(AnswerKind kind);
 // How to type an answer of this kind, for messages and --help.
 const char* answerFormat(AnswerKind kind);
 
-using GroundTruth = std::variant<std::int64_t, std::string, std::set<std::string>, glm::dvec2>;
+using GroundTruth = std::variant<std::int64_t, std::string, std::set<std::string>, glm::dvec2, glm::dvec3>;
 
 // A marked point. `pixel` is continuous: pixel (x, y) covers [x, x+1) × [y, y+1), row 0 = top,
 // so the pixel containing the point is floor(pixel).
@@ -54,9 +56,10 @@ struct Question {
   std::vector<ProbePoint> points;
   GroundTruth truth;
   double timeLimitSeconds = 120.0;  // Carnecky Sec. 8: strictly limited time
-  double correctWithin = 0.0;       // FloorPoint only: error distance counted as correct
+  double correctWithin = 0.0;       // FloorPoint, Direction: the error counted as correct (distance, degrees)
   std::vector<UniquenessCheck> checks;
   std::vector<std::pair<std::string, double>> measurements;  // distances etc., for reports
+  std::vector<std::pair<std::string, glm::dvec3>> directions;  // gauge figure: the view frame at the probe
 
   std::vector<std::string> labels() const;  // labels of the points, in order
 };

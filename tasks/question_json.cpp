@@ -7,6 +7,7 @@ nlohmann::json groundTruthJson(const GroundTruth& truth) {
       [](const auto& v) -> nlohmann::json {
         using T = std::decay_t<decltype(v)>;
         if constexpr (std::is_same_v<T, glm::dvec2>) return nlohmann::json::array({v.x, v.y});
+        else if constexpr (std::is_same_v<T, glm::dvec3>) return nlohmann::json::array({v.x, v.y, v.z});
         else return nlohmann::json(v);
       },
       truth);
@@ -32,7 +33,12 @@ nlohmann::json toJson(const Question& q) {
                       {"truth", groundTruthJson(q.truth)},
                       {"checks", checks},
                       {"measurements", measurements}};
-  if (q.answerKind == AnswerKind::FloorPoint) j["correct_within"] = q.correctWithin;
+  if (q.correctWithin > 0.0) j["correct_within"] = q.correctWithin;
+  if (!q.directions.empty()) {
+    nlohmann::json directions = nlohmann::json::object();
+    for (const auto& [k, d] : q.directions) directions[k] = {d.x, d.y, d.z};
+    j["directions"] = directions;
+  }
   return j;
 }
 
@@ -40,6 +46,7 @@ nlohmann::json toJson(const Score& s) {
   nlohmann::json j = {{"answered", s.answered}, {"correct", s.correct}, {"score", s.value}, {"raw_answer", s.rawAnswer}};
   j["partial_credit"] = s.partialCredit ? nlohmann::json(*s.partialCredit) : nlohmann::json();
   j["error"] = s.error ? nlohmann::json(*s.error) : nlohmann::json();
+  for (const auto& [k, v] : s.measures) j[k] = v;
   if (!s.note.empty()) j["note"] = s.note;
   return j;
 }

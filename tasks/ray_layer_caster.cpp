@@ -25,17 +25,20 @@ glm::dvec3 toVec(const Point& p) { return {p.x(), p.y(), p.z()}; }
 struct RayLayerCaster::Tree {
   std::vector<Triangle> triangles;
   std::vector<int> objectOf;
+  std::vector<int> triangleOf;  // index into the object's mesh triangles (degenerate ones are left out)
   AabbTree tree;
 };
 
 RayLayerCaster::RayLayerCaster(const render::Scene& scene) : tree_(std::make_unique<Tree>()) {
   for (std::size_t o = 0; o < scene.objects.size(); ++o) {
     const auto& mesh = scene.objects[o].mesh;
-    for (const auto& t : mesh.triangles) {
+    for (std::size_t i = 0; i < mesh.triangles.size(); ++i) {
+      const auto& t = mesh.triangles[i];
       const Triangle tri(toPoint(mesh.positions[t[0]]), toPoint(mesh.positions[t[1]]), toPoint(mesh.positions[t[2]]));
       if (tri.is_degenerate()) continue;
       tree_->triangles.push_back(tri);
       tree_->objectOf.push_back(int(o));
+      tree_->triangleOf.push_back(int(i));
     }
   }
   tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
@@ -54,7 +57,8 @@ std::vector<RayHit> RayLayerCaster::hits(const Ray& ray, double mergeDistance) c
   tree_->tree.all_intersections(query, std::back_inserter(found));
   std::vector<RayHit> all;
   for (const auto& [where, id] : found) {
-    const int object = tree_->objectOf[std::size_t(id - tree_->triangles.cbegin())];
+    const std::size_t index = std::size_t(id - tree_->triangles.cbegin());
+    const int object = tree_->objectOf[index];
     double distance = 0.0;
     if (const Point* p = boost::get<Point>(&where)) {
       distance = glm::dot(toVec(*p) - ray.origin, ray.direction);
@@ -64,7 +68,7 @@ std::vector<RayHit> RayLayerCaster::hits(const Ray& ray, double mergeDistance) c
     } else {
       continue;
     }
-    if (distance > 0.0) all.push_back({distance, object});
+    if (distance > 0.0) all.push_back({distance, object, tree_->triangleOf[index]});
   }
   std::sort(all.begin(), all.end(), [](const RayHit& a, const RayHit& b) { return a.distance < b.distance; });
   std::vector<RayHit> merged;

@@ -13,6 +13,7 @@ namespace tlab::tasks {
 struct RayHit {
   double distance = 0.0;  // along the (unit) ray direction
   int object = -1;
+  int triangle = -1;      // index into the object's mesh triangles
 };
 
 class RayLayerCaster {

@@ -4,6 +4,8 @@
 // has one, a partial-credit measure reported separately, and the raw answer.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace tlab::tasks {
 
@@ -13,6 +15,7 @@ struct Score {
   double value = 0.0;                   // 1 correct, 0 wrong or missing
   std::optional<double> partialCredit;  // follow-boundary: Jaccard index of the label sets
   std::optional<double> error;          // counting: relative error; target-discovery: error distance
+  std::vector<std::pair<std::string, double>> measures;  // gauge figure: slant_error, tilt_error (degrees)
   std::string rawAnswer;                // the text as given ("" when missing)
   std::string note;                     // why an answer did not count ("missing", "over the time limit")
 };

@@ -4,7 +4,7 @@
 #include <cstdlib>
 #include <stdexcept>
 
-#include "tasks/answer_parser.hpp"
+#include "tasks/answer_form.hpp"
 
 namespace tlab::tasks {
 
@@ -50,14 +50,11 @@ bool withinTimeLimit(const Answer& answer, double timeLimitSeconds) {
 
 namespace {
 
-// A missing count is scored as if the participant had counted nothing, so that the totals over
-// trials stay defined (every missed target is an error).
 Score missing(const Question& q, const Answer& a, const char* note) {
   Score s;
   s.rawAnswer = a.text.value_or("");
   s.note = note;
-  if (q.answerKind == AnswerKind::Count) s.error = relativeError(0, std::get<std::int64_t>(q.truth));
-  if (q.answerKind == AnswerKind::LabelSet) s.partialCredit = 0.0;
+  answerForm(q).scoreMissing(q, s);
   return s;
 }
 
@@ -66,29 +63,12 @@ Score missing(const Question& q, const Answer& a, const char* note) {
 Score scoreAnswer(const Question& q, const Answer& a) {
   if (!a.text) return missing(q, a, "missing");
   if (!withinTimeLimit(a, q.timeLimitSeconds)) return missing(q, a, "over the time limit");
-  const GroundTruth given = parseAnswer(q, *a.text);
+  const AnswerForm& form = answerForm(q);
+  const GroundTruth given = form.parse(q, *a.text);
   Score s;
   s.answered = true;
   s.rawAnswer = *a.text;
-  switch (q.answerKind) {
-    case AnswerKind::LabelSet:
-      s.correct = given == q.truth;
-      s.partialCredit = jaccardIndex(std::get<std::set<std::string>>(given), std::get<std::set<std::string>>(q.truth));
-      break;
-    case AnswerKind::Count:
-      s.correct = given == q.truth;
-      s.error = relativeError(std::get<std::int64_t>(given), std::get<std::int64_t>(q.truth));
-      break;
-    case AnswerKind::FloorPoint:
-      s.error = errorDistance(std::get<glm::dvec2>(given), std::get<glm::dvec2>(q.truth));
-      s.correct = *s.error <= q.correctWithin;
-      break;
-    case AnswerKind::LayerNumber:
-    case AnswerKind::Label:
-    case AnswerKind::Letter:
-      s.correct = given == q.truth;
-      break;
-  }
+  form.score(q, given, s);
   s.value = s.correct ? 1.0 : 0.0;
   return s;
 }

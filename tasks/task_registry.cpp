@@ -2,17 +2,19 @@
 
 #include <stdexcept>
 
-#include "tasks/counting_task.hpp"
-#include "tasks/follow_boundary_task.hpp"
-#include "tasks/layer_index_task.hpp"
-#include "tasks/nearest_point_task.hpp"
-#include "tasks/pattern_task.hpp"
-#include "tasks/target_discovery_task.hpp"
+#include "tasks/counting/counting_task.hpp"
+#include "tasks/follow_boundary/follow_boundary_task.hpp"
+#include "tasks/gauge_figure/gauge_figure_task.hpp"
+#include "tasks/layer_index/layer_index_task.hpp"
+#include "tasks/nearest_point/nearest_point_task.hpp"
+#include "tasks/pattern/pattern_task.hpp"
+#include "tasks/relative_depth/relative_depth_task.hpp"
+#include "tasks/target_discovery/target_discovery_task.hpp"
 
 namespace tlab::tasks {
 
 std::vector<std::string> taskNames() {
-  return {"layer-index", "follow-boundary", "nearest-point", "counting", "target-discovery", "pattern"};
+  return {"layer-index", "follow-boundary", "nearest-point", "counting", "target-discovery", "pattern", "gauge-figure", "relative-depth"};
 }
 
 std::unique_ptr<Task> makeTask(const std::string& name) {
@@ -22,6 +24,8 @@ std::unique_ptr<Task> makeTask(const std::string& name) {
   if (name == "counting") return std::make_unique<CountingTask>();
   if (name == "target-discovery") return std::make_unique<TargetDiscoveryTask>();
   if (name == "pattern") return std::make_unique<PatternTask>();
+  if (name == "gauge-figure") return std::make_unique<GaugeFigureTask>();
+  if (name == "relative-depth") return std::make_unique<RelativeDepthTask>();
   std::string known;
   for (const auto& n : taskNames()) known += (known.empty() ? "" : ", ") + n;
   throw std::invalid_argument("unknown task '" + name + "' (known: " + known + ")");

@@ -11,6 +11,7 @@ ViewGeometry::ViewGeometry(const render::Camera& camera, int width, int height)
     : width_(width), height_(height), eye_(camera.eye) {
   if (width < 1 || height < 1) throw std::invalid_argument("image size must be at least 1x1");
   forward_ = glm::normalize(glm::dvec3(camera.target) - eye_);
+  right_ = glm::normalize(glm::cross(forward_, glm::dvec3(camera.up)));
   const glm::dmat4 view = glm::lookAt(eye_, glm::dvec3(camera.target), glm::dvec3(camera.up));
   const double fovy = glm::radians(double(camera.fovyDegrees));
   const glm::dmat4 projection =

@@ -21,6 +21,8 @@ class ViewGeometry {
   int height() const { return height_; }
   glm::dvec3 eye() const { return eye_; }
   glm::dvec3 forward() const { return forward_; }
+  // The image's right in world coordinates (unit; perpendicular to forward()).
+  glm::dvec3 right() const { return right_; }
 
   // The eye ray through a continuous pixel position (use (x + 0.5, y + 0.5) for pixel centres).
   Ray rayThrough(glm::dvec2 pixelPosition) const;
@@ -36,7 +38,7 @@ class ViewGeometry {
 
  private:
   int width_, height_;
-  glm::dvec3 eye_, forward_;
+  glm::dvec3 eye_, forward_, right_;
   glm::dmat4 viewProjection_, inverseViewProjection_;
   double tanHalfFovy_;
 };

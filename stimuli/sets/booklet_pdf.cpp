@@ -92,7 +92,9 @@ void answerBoxes(cairo_t* cr, double y, const RenderedStimulus& s) {
     y += 44;
   }
   box(cr, kMargin, y, w, 40);
-  text(cr, kMargin + 6, y + 14, s.probes.answerFormat.empty() ? "answer:" : "answer (" + s.probes.answerFormat + "):", 9);
+  const std::string field = !s.probes.printable ? "this question cannot be answered on paper (" + s.probes.answerFormat + ")"
+                            : s.probes.answerFormat.empty() ? "answer:" : "answer (" + s.probes.answerFormat + "):";
+  text(cr, kMargin + 6, y + 14, field, 9);
   box(cr, kMargin, y + 50, 120, 26);
   text(cr, kMargin + 6, y + 66, "confidence 1-5:", 9);
 }

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/png_file.hpp"
+
 namespace tlab::stimuli {
 
 namespace {
@@ -134,6 +136,43 @@ AlignmentResult compareCoverage(const CoverageMask& tlab, const CoverageMask& th
   r.aligned = r.iou >= kMinimumAlignmentIoU;
   if (!r.aligned) r.likelyCause = likelyCause(tlab, theirs, r.iou);
   return r;
+}
+
+core::Image readExternalImage(const std::string& path, int width, int height) {
+  auto image = core::readPngFile(path);
+  if (!image) throw std::runtime_error(path + ": cannot read the image (a PNG is expected)");
+  if (image->width != width || image->height != height)
+    throw std::runtime_error(path + ": the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
+                             " but the stimulus is " + std::to_string(width) + "x" + std::to_string(height));
+  return *image;
+}
+
+core::Image opaque(core::Image image) {
+  for (auto& p : image.pixels) p.a = 1.0f;
+  return image;
+}
+
+AlignmentResult alignWithView(render::Renderer& renderer, const render::Camera& camera, const core::Image& image) {
+  render::RenderRequest request;  // tlab's coverage: the pixels with at least one fragment
+  request.width = image.width;
+  request.height = image.height;
+  request.style = "constant";
+  request.camera = camera;
+  request.timePasses = false;
+  renderer.render(request);
+  return compareCoverage(coverageFromCounts(renderer.layerCounts(), image.width, image.height), imageCoverage(image));
+}
+
+std::string iouText(double iou) {
+  std::ostringstream s;
+  s.precision(4);
+  s << iou;
+  return s.str();
+}
+
+std::string misalignmentMessage(const std::string& image, const std::string& what, const AlignmentResult& result) {
+  return image + ": IoU " + iouText(result.iou) + " with tlab's coverage of " + what +
+         " (below 0.98): the image does not show tlab's view; likely cause: " + result.likelyCause;
 }
 
 }  // namespace tlab::stimuli

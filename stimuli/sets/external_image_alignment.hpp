@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "renderer/pipeline/renderer.hpp"
 
 namespace tlab::stimuli {
 
@@ -38,5 +39,19 @@ struct AlignmentResult {
 
 // Compares tlab's coverage with the image's; both must have the same size.
 AlignmentResult compareCoverage(const CoverageMask& tlab, const CoverageMask& theirs);
+
+// An image from another renderer for a stimulus of width×height, as read (its alpha kept for the
+// coverage); throws std::runtime_error naming the file when it is no PNG or has another size.
+core::Image readExternalImage(const std::string& path, int width, int height);
+// The image as shown: over nothing, so opaque.
+core::Image opaque(core::Image image);
+// tlab's coverage of the renderer's scene from `camera` at the image's size (a GL context must be
+// current) compared with the image's.
+AlignmentResult alignWithView(render::Renderer& renderer, const render::Camera& camera, const core::Image& image);
+// "IMAGE: IoU 0.7112 with tlab's coverage of WHAT (below 0.98): the image does not show tlab's
+// view; likely cause: ..." — the one line that refuses a misaligned image.
+std::string misalignmentMessage(const std::string& image, const std::string& what, const AlignmentResult& result);
+// The IoU as the messages print it (4 significant digits).
+std::string iouText(double iou);
 
 }  // namespace tlab::stimuli

@@ -44,6 +44,7 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
   for (std::size_t i = 0; i < spec.styles.size(); ++i) {
     styles.push_back({{"index", i + 1}, {"name", spec.styles[i].name}, {"settings", spec.styles[i].settings}});
     if (!spec.styles[i].fileSha256.empty()) styles.back()["style_sha256"] = spec.styles[i].fileSha256;
+    if (!spec.styles[i].images.empty()) styles.back()["images"] = spec.styles[i].images;
   }
   nlohmann::json sceneList = nlohmann::json::array();
   for (std::size_t i = 0; i < spec.scenes.size(); ++i) {
@@ -67,6 +68,8 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
                            {"style", s.style + 1},
                            {"view", {{"index", s.view + 1}, {"azimuth", view.azimuthDegrees}, {"elevation", view.elevationDegrees},
                                      {"camera_text", view.camera}, {"camera", cameraJson(s.camera)}}}};
+    if (!s.source.path.empty())  // the raw image from another renderer, before the marks
+      item["source_image"] = {{"path", s.source.path}, {"sha256", s.source.sha256}, {"iou", s.source.iou}};
     if (s.probeSet >= 0) {
       item["probe_set"] = s.probeSet + 1;
       item["question"] = {{"number", s.question + 1},

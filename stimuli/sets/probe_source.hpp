@@ -35,6 +35,7 @@ struct ProbeQuestion {
   std::string text;
   std::vector<ProbeMark> marks;
   std::string answerFormat;           // how to answer, for the booklet
+  bool printable = true;              // false: the answer cannot be given on paper (the booklet says so)
   nlohmann::json groundTruth;         // null when the source has none
 };
 

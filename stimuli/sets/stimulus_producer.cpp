@@ -7,7 +7,7 @@ namespace tlab::stimuli {
 std::vector<ProbeMark> visibleMarks(const std::vector<ProbeMark>& marks) {
   std::vector<ProbeMark> shown;
   for (const auto& m : marks)
-    if (m.role != "target") shown.push_back(m);
+    if (m.role != "target" && m.role != "gauge") shown.push_back(m);  // a gauge is drawn live over the picture
   return shown;
 }
 

@@ -105,6 +105,21 @@ std::map<std::string, std::string> parseSettings(const TableReader& r, const std
   return out;
 }
 
+// { name = "theirs", images = "renders/{scene}-{view}.png" }: a PNG path template whose
+// placeholders are {scene} and {view} only.
+void readImages(const TableReader& r, const toml::node& node, StyleEntry& style) {
+  const auto images = r.text("images");
+  if (!images) return;
+  const toml::node* where = node.as_table()->get("images");
+  if (node.as_table()->get("set")) r.fail(node.as_table()->get("set"), "set", "an images entry shows another renderer's pictures: it has no settings");
+  if (images->size() < 5 || images->substr(images->size() - 4) != ".png")
+    r.fail(where, "images", "expected a PNG path template such as \"renders/{scene}-{view}.png\"");
+  static const std::regex placeholder(R"(\{([^{}]*)\})");
+  for (auto it = std::sregex_iterator(images->begin(), images->end(), placeholder); it != std::sregex_iterator(); ++it)
+    if ((*it)[1] != "scene" && (*it)[1] != "view") r.fail(where, "images", "unknown placeholder " + (*it)[0].str() + " (known: {scene}, {view})");
+  style.images = *images;
+}
+
 StyleEntry parseStyle(const TableReader& set, const toml::node& node, std::size_t index) {
   const std::string key = "styles[" + std::to_string(index) + "]";
   StyleEntry style;
@@ -113,13 +128,15 @@ StyleEntry parseStyle(const TableReader& set, const toml::node& node, std::size_
     style.name = node.as_string()->get();
   } else if (node.is_table()) {
     const TableReader r(*node.as_table(), set.file(), set.field(key));
-    r.allowOnly({"name", "set"});
+    r.allowOnly({"name", "set", "images"});
     const auto name = r.text("name");
-    if (!name) r.fail(&node, "name", "missing");
+    if (!name || name->empty()) r.fail(&node, "name", "missing");
     style.name = *name;
+    readImages(r, node, style);
+    if (!style.images.empty()) return style;  // a name for the level, no style
     style.settings = parseSettings(r, "set", node.as_table()->get("set"));
   } else {
-    set.fail(&node, key, "expected a style name or { name = ..., set = [...] }");
+    set.fail(&node, key, "expected a style name, { name = ..., set = [...] } or { name = ..., images = \"renders/{scene}.png\" }");
   }
   if (render::isStyleFilePath(style.name))  // relative to the set file
     style.name = std::filesystem::absolute(std::filesystem::path(set.file()).parent_path() / style.name).lexically_normal().string();
@@ -137,8 +154,9 @@ ViewEntry parseView(const TableReader& scene, const toml::node& node, std::size_
   const std::string key = "views[" + std::to_string(index) + "]";
   if (!node.is_table()) scene.fail(&node, key, "expected { azimuth = DEG, elevation = DEG } or { camera = \"eye=...\" }");
   const TableReader r(*node.as_table(), scene.file(), scene.field(key));
-  r.allowOnly({"azimuth", "elevation", "camera"});
+  r.allowOnly({"name", "azimuth", "elevation", "camera"});
   ViewEntry view;
+  view.name = r.text("name").value_or("");
   view.place = {scene.file(), int(node.source().begin.line), scene.field(key)};
   view.azimuthDegrees = r.number("azimuth").value_or(0.0);
   view.elevationDegrees = r.number("elevation").value_or(0.0);
@@ -167,15 +185,16 @@ SceneEntry parseScene(const TableReader& root, const toml::node& node, std::size
   const std::string key = "scene[" + std::to_string(index) + "]";
   if (!node.is_table()) root.fail(&node, key, "expected a table ([[scene]])");
   const TableReader r(*node.as_table(), root.file(), key);
-  r.allowOnly({"source", "views", "probes"});
+  r.allowOnly({"source", "name", "views", "probes"});
   SceneEntry scene;
   scene.place = r.place("source");
+  scene.name = r.text("name").value_or("");
   const auto source = r.text("source");
   if (!source) r.fail(&node, "source", "missing (builtin:NAME?... or a glTF file)");
   scene.source = *source;
   if (const auto* views = r.array("views"))
     for (std::size_t i = 0; i < views->size(); ++i) scene.views.push_back(parseView(r, *views->get(i), i));
-  if (scene.views.empty()) scene.views.push_back(ViewEntry{0.0, 0.0, "", scene.place});
+  if (scene.views.empty()) scene.views.push_back(ViewEntry{"", 0.0, 0.0, "", scene.place});
   if (const auto* probes = r.array("probes"))
     for (std::size_t i = 0; i < probes->size(); ++i) scene.probeSets.push_back(parseProbeSet(r, *probes->get(i), i, setSeed));
   return scene;

@@ -1,3 +1,5 @@
+// Over 300 lines: one SetJob holds the phases of a set (align images from another renderer,
+// probe, render, label, save) over shared per-unit slots, so the output never depends on --jobs.
 #include "stimuli/sets/stimulus_set_renderer.hpp"
 
 #include <algorithm>
@@ -7,15 +9,19 @@
 #include <mutex>
 #include <optional>
 
+#include "core/file_text.hpp"
+#include "core/sha256.hpp"
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/walkthrough_scene.hpp"
 #include "stimuli/sets/parallel_for.hpp"
 #include "stimuli/sets/booklet_pdf.hpp"
+#include "stimuli/sets/external_image_alignment.hpp"
 #include "stimuli/sets/label_painter.hpp"
 #include "stimuli/sets/manifest.hpp"
 #include "stimuli/sets/progress_bar.hpp"
+#include "stimuli/sets/stimulus_set_names.hpp"
 #include "stimuli/sets/stimulus_producer.hpp"
 
 namespace tlab::stimuli {
@@ -36,14 +42,6 @@ render::Camera viewCamera(const render::Scene& scene, const ViewEntry& view, int
 }
 
 namespace {
-
-// "pretzel" from "builtin:pretzel?seed=2", the file stem for glTF files; safe for file names.
-std::string shortName(const std::string& source) {
-  std::string name = source.rfind("builtin:", 0) == 0 ? source.substr(8, source.find('?') - 8) : fs::path(source).stem().string();
-  for (char& c : name)
-    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '-') c = '-';
-  return name;
-}
 
 std::string twoDigits(std::size_t i) {
   char buffer[24];
@@ -92,6 +90,7 @@ class SetJob {
       }
     }
     rendered_.resize(renderUnits_.size());
+    external_.resize(renderUnits_.size());
     // Probing cost grows with the mesh (exact ground truth): start the largest scenes first so the
     // longest unit does not come last. Results go to fixed slots, so the order never shows.
     std::stable_sort(probeUnits_.begin(), probeUnits_.end(), [&](const Unit& a, const Unit& b) {
@@ -111,8 +110,9 @@ class SetJob {
 
   void run(int jobs, ProgressBar& progress) {
     progress_ = &progress;
+    parallelFor(renderUnits_.size(), jobs, makeRenderWorker, [this](std::size_t i, RenderWorker& w) { align(i, w); });
     parallelFor(probeUnits_.size(), jobs, [] { return 0; }, [this](std::size_t i, int&) { probe(probeUnits_[i]); });
-    parallelFor(renderUnits_.size(), jobs, makeRenderWorker, [this](std::size_t i, RenderWorker& w) { rendered_[i] = renderUnit(renderUnits_[i], w); });
+    parallelFor(renderUnits_.size(), jobs, makeRenderWorker, [this](std::size_t i, RenderWorker& w) { rendered_[i] = renderUnit(i, w); });
   }
 
   std::vector<RenderedStimulus> results() const {
@@ -145,21 +145,55 @@ class SetJob {
     }
   }
 
-  std::vector<RenderedStimulus> renderUnit(const Unit& u, RenderWorker& worker) {
-    if (worker.rendererScene != u.scene) {
-      worker.renderer.reset();
-      worker.renderer.emplace(scenes_[u.scene]);
-      worker.rendererScene = u.scene;
+  static void useScene(RenderWorker& worker, const render::Scene& scene, std::size_t index) {
+    if (worker.rendererScene == index) return;
+    worker.renderer.reset();
+    worker.renderer.emplace(scene);
+    worker.rendererScene = index;
+  }
+
+  // Images from another renderer (an images entry of `styles`): read and compared with tlab's
+  // coverage of the same view before any question is asked or picture made; else one line.
+  void align(std::size_t i, RenderWorker& worker) {
+    const Unit& u = renderUnits_[i];
+    const StyleEntry& style = spec_.styles[u.index];
+    if (style.images.empty()) return;
+    const SceneEntry& scene = spec_.scenes[u.scene];
+    ExternalImage& e = external_[i];
+    e.path = imagesPathFor(style.images, scene, u.view);
+    const std::string file = (fs::path(spec_.file).parent_path() / e.path).lexically_normal().string();
+    try {
+      const core::Image image = readExternalImage(file, spec_.width, spec_.height);
+      useScene(worker, scenes_[u.scene], u.scene);
+      const AlignmentResult result = alignWithView(*worker.renderer, cameras_[u.scene][u.view], image);
+      recordGpu(*worker.context);
+      if (!result.aligned) throw std::runtime_error(misalignmentMessage(file, scene.source + " view " + viewName(scene, u.view), result));
+      e.iou = result.iou;
+      e.sha256 = core::sha256Hex(core::readFileText(file).value_or(""));
+      e.picture = opaque(image);
+    } catch (const std::exception& error) {
+      throw std::runtime_error(style.place.describe() + ".images: " + error.what());
     }
+  }
+
+  std::vector<RenderedStimulus> renderUnit(std::size_t i, RenderWorker& worker) {
+    const Unit& u = renderUnits_[i];
     const SceneEntry& sceneEntry = spec_.scenes[u.scene];
     const StyleEntry& style = spec_.styles[u.index];
     const StimulusView view{spec_.width, spec_.height, style.name, style.settings, cameras_[u.scene][u.view]};
-    const core::Image image = StimulusProducer::picture(*worker.renderer, view);
-    recordGpu(*worker.context);
+    core::Image image;
+    if (style.images.empty()) {
+      useScene(worker, scenes_[u.scene], u.scene);
+      image = StimulusProducer::picture(*worker.renderer, view);
+      recordGpu(*worker.context);
+    } else {
+      image = external_[i].picture;
+    }
     const StimulusProducer producer(*worker.painter);
     const std::string stem = stimulusStem(u, sceneEntry, style);
     RenderedStimulus base;
     base.scene = u.scene, base.view = u.view, base.style = u.index, base.camera = view.camera;
+    if (!style.images.empty()) base.source = {external_[i].path, external_[i].sha256, external_[i].iou};
     std::vector<RenderedStimulus> out;
     const auto& probeSets = questions_[u.scene][u.view];
     if (probeSets.empty()) {
@@ -208,6 +242,13 @@ class SetJob {
   std::vector<std::vector<std::vector<std::vector<ProbeQuestion>>>> questions_;  // [scene][view][probe set]
   std::vector<Unit> probeUnits_, renderUnits_;
   std::vector<std::vector<RenderedStimulus>> rendered_;                      // per render unit
+  struct ExternalImage {
+    core::Image picture;  // as shown (opaque)
+    std::string path;     // relative to the set file, as its images path names it
+    std::string sha256;   // of the PNG file
+    double iou = 0.0;
+  };
+  std::vector<ExternalImage> external_;                                      // per render unit (images entries)
 };
 
 void validateTasks(const StimulusSetSpec& spec, const ProbeSource& probes) {

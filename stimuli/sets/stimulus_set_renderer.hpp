@@ -22,6 +22,14 @@ struct StimulusSetOptions {
   bool progress = true;   // a progress bar on stderr when it is a terminal
 };
 
+// An image from another renderer as it entered the set: its path relative to the set file, the
+// SHA-256 of the PNG file as given, and its overlap with tlab's coverage of the view.
+struct SourceImage {
+  std::string path;
+  std::string sha256;
+  double iou = 0.0;
+};
+
 // One image of the set.
 struct RenderedStimulus {
   std::string id;          // s01-pretzel_v1_st1-constant_p1_q1
@@ -31,6 +39,7 @@ struct RenderedStimulus {
   int probeSet = -1, question = -1;  // -1: unlabelled
   render::Camera camera;
   ProbeQuestion probes;    // marks, text, ground truth (empty marks when unlabelled)
+  SourceImage source;      // the image from another renderer it shows (images entries; else empty)
 };
 
 struct StimulusSetResult {

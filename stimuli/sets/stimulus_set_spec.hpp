@@ -24,11 +24,16 @@ struct StyleEntry {
   std::string name;  // a built-in style, or a style file's absolute path (written relative to the set file)
   std::map<std::string, std::string> settings;  // key → value (--set)
   std::string fileSha256;  // a style file's SHA-256 (empty for built-in styles)
+  // Images from another renderer instead of tlab's picture ({ name = "theirs", images = "renders/
+  // {scene}-{view}.png" }): the PNG path template as written (relative to the set file), with
+  // {scene} and {view} standing for the scene's and the view's name; empty for a style.
+  std::string images;
   SourcePlace place;
 };
 
 // A view: the scene's own camera orbited by azimuth/elevation, or a camera string on top of it.
 struct ViewEntry {
+  std::string name;                   // for {view} in an images path; "" → "v1", "v2", ... (viewName)
   double azimuthDegrees = 0.0;
   double elevationDegrees = 0.0;
   std::string camera;                 // "eye=... target=..." (optional)
@@ -42,6 +47,7 @@ struct ProbeSetEntry {
 
 struct SceneEntry {
   std::string source;                 // builtin:NAME?... or a glTF path (relative to the set file)
+  std::string name;                   // for {scene} in an images path; "" → the source's short name (sceneName)
   std::vector<ViewEntry> views;       // at least one
   std::vector<ProbeSetEntry> probeSets;  // may be empty: unlabelled stimuli
   SourcePlace place;

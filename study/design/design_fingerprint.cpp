@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/sha256.hpp"
+#include "study/design/image_files.hpp"
 #include "study/design/style_files.hpp"
 
 namespace tlab::study {
@@ -54,6 +55,7 @@ std::string designFingerprint(const Experiment& e) {
   d["consent"] = e.consent.has_value();
   d["breaks"] = {e.breaks.every, e.breaks.blocks, e.breaks.minSeconds};
   d["training_feedback"] = e.trainingFeedback;
+  for (const auto& image : recordedImageFiles(e.text)) d["images"].push_back({image.written, image.sha256});  // absent without images
   return core::sha256Hex(d.dump());
 }
 

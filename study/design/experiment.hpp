@@ -157,6 +157,8 @@ struct ObserverParams {
   double slowSeconds = 12.0;         // added median time at zero visibility
   double rtSigma = 0.35;             // lognormal sd of response times
   double giveUpShare = 0.02;         // probability of no answer (missing)
+  double gaugeDegrees = 8.0;         // gauge figure: angular sd (degrees) of a seen normal at full visibility
+  double gaugeGrowth = 3.0;          // gauge figure: the sd grows by this factor times (1 − visibility)
 };
 
 struct Stimulus {

@@ -19,6 +19,7 @@
 #include "study/design/field_reader.hpp"
 #include "study/design/session_flow_file.hpp"
 #include "study/design/stimulus_checks.hpp"
+#include "study/design/image_files.hpp"
 #include "study/design/style_files.hpp"
 #include "tasks/task_registry.hpp"
 
@@ -216,7 +217,7 @@ ObserverParams readObserver(const FieldReader& r, const toml::table& root) {
   const toml::table* t = r.table(root, "observer", "");
   if (!t) return p;
   r.checkKeys(*t, "observer", {"contrast_reference", "sensitivity", "threshold", "skill_spread", "lapse", "layer_penalty",
-                               "base_seconds", "slow_seconds", "rt_sigma", "give_up_share"});
+                               "base_seconds", "slow_seconds", "rt_sigma", "give_up_share", "gauge_degrees", "gauge_growth"});
   p.contrastReference = r.number(*t, "contrast_reference", "observer", p.contrastReference, 1e-4, 1.0);
   p.sensitivity = r.number(*t, "sensitivity", "observer", p.sensitivity, 0.0, 100.0);
   p.threshold = r.number(*t, "threshold", "observer", p.threshold, 0.0, 1.0);
@@ -227,6 +228,8 @@ ObserverParams readObserver(const FieldReader& r, const toml::table& root) {
   p.slowSeconds = r.number(*t, "slow_seconds", "observer", p.slowSeconds, 0.0, 3600.0);
   p.rtSigma = r.number(*t, "rt_sigma", "observer", p.rtSigma, 0.0, 3.0);
   p.giveUpShare = r.number(*t, "give_up_share", "observer", p.giveUpShare, 0.0, 1.0);
+  p.gaugeDegrees = r.number(*t, "gauge_degrees", "observer", p.gaugeDegrees, 0.0, 90.0);
+  p.gaugeGrowth = r.number(*t, "gauge_growth", "observer", p.gaugeGrowth, 0.0, 100.0);
   return p;
 }
 
@@ -291,6 +294,8 @@ Experiment parseExperiment(const std::string& text, const std::string& path, Sti
   e.observer = readObserver(r, root);
   resolveStyleFiles(r, root, e, checks == StimulusChecks::Run);
   checkDesign(r, root, e);
+  if (checks == StimulusChecks::Run) refuseLiveViewsOfImages(e);
+  recordImageFiles(e, checks == StimulusChecks::Run);
   if (checks == StimulusChecks::Run) checkStimuli(r, root, e);
   return e;
 }

@@ -1,5 +1,7 @@
 #include "study/run/plan_checks.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <map>
 
@@ -14,13 +16,22 @@ std::string TrainingShownInTest::message() const {
          std::to_string(test->sequence) + ": give training other scenes ({trial} in the scene) or more questions";
 }
 
+namespace {
+// What a trial shows: its picture, and the question's points, which a front end may draw over it
+// (a gauge figure on an unmarked picture: the same picture with the gauge elsewhere is another question).
+std::string shown(const TrialRecord& r) {
+  const auto question = nlohmann::json::parse(r.questionJson, nullptr, false);
+  return r.stimulusSha256 + (question.is_object() && question.contains("points") ? question["points"].dump() : "");
+}
+}  // namespace
+
 std::optional<TrainingShownInTest> trainingShownInTest(const std::vector<TrialRecord>& records) {
   std::map<std::string, const TrialRecord*> test;
   for (const auto& r : records)
-    if (r.phase == "test") test.emplace(r.stimulusSha256, &r);
+    if (r.phase == "test") test.emplace(shown(r), &r);
   for (const auto& r : records)
     if (r.phase == "training")
-      if (const auto found = test.find(r.stimulusSha256); found != test.end()) return TrainingShownInTest{&r, found->second};
+      if (const auto found = test.find(shown(r)); found != test.end()) return TrainingShownInTest{&r, found->second};
   return std::nullopt;
 }
 

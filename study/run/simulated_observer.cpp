@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "core/seeded_random.hpp"
+#include "tasks/answer_form.hpp"
 #include "study/run/image_contrast.hpp"
 #include "study/design/order_permutations.hpp"
 
@@ -14,84 +15,8 @@ namespace tlab::study {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// Standard normal deviate (Box-Muller) from the portable uniform source.
-double normal(core::SeededRandom& random) {
-  const double u1 = (double(random.uniform()) + 0x1p-25);
-  const double u2 = double(random.uniform());
-  return std::sqrt(-2.0 * std::log(u1)) * std::cos(2.0 * kPi * u2);
-}
-
-std::string formatNumber(double v) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.4f", v);
-  return buf;
-}
-
-std::vector<std::string> labelsWithRole(const tasks::Question& q, const std::string& role) {
-  std::vector<std::string> out;
-  for (const auto& p : q.points)
-    if (p.role == role) out.push_back(p.label);
-  return out;
-}
-
-std::string guess(const tasks::Question& q, core::SeededRandom& random) {
-  using tasks::AnswerKind;
-  switch (q.answerKind) {
-    case AnswerKind::LayerNumber: {
-      const auto truth = std::get<std::int64_t>(q.truth);
-      return std::to_string(1 + random.below(std::uint32_t(std::max<std::int64_t>(truth + 1, 3))));
-    }
-    case AnswerKind::Label: {
-      auto labels = labelsWithRole(q, "candidate");
-      if (labels.empty()) labels = q.labels();
-      return labels[random.below(std::uint32_t(labels.size()))];
-    }
-    case AnswerKind::LabelSet: {
-      std::string text;
-      for (const auto& l : labelsWithRole(q, "mark"))
-        if (random.below(2)) text += (text.empty() ? "" : ",") + l;
-      return text.empty() ? "none" : text;
-    }
-    case AnswerKind::Count: {
-      const double truth = double(std::get<std::int64_t>(q.truth));
-      const double estimate = truth + normal(random) * std::max(1.0, 0.3 * truth);
-      return std::to_string(std::max<std::int64_t>(0, std::llround(estimate)));
-    }
-    case AnswerKind::Letter: {
-      static const char* letters[] = {"C", "K", "R", "X", "Y"};
-      return letters[random.below(5)];
-    }
-    case AnswerKind::FloorPoint: {
-      const glm::dvec2 truth = std::get<glm::dvec2>(q.truth);
-      const double spread = std::max(1.0, 4.0 * q.correctWithin);
-      return formatNumber(truth.x + normal(random) * spread) + "," + formatNumber(truth.y + normal(random) * spread);
-    }
-  }
-  return "";
-}
-
-std::string trueAnswer(const tasks::Question& q, core::SeededRandom& random) {
-  using tasks::AnswerKind;
-  switch (q.answerKind) {
-    case AnswerKind::LayerNumber:
-    case AnswerKind::Count: return std::to_string(std::get<std::int64_t>(q.truth));
-    case AnswerKind::Label:
-    case AnswerKind::Letter: return std::get<std::string>(q.truth);
-    case AnswerKind::LabelSet: {
-      std::string text;
-      for (const auto& l : std::get<std::set<std::string>>(q.truth)) text += (text.empty() ? "" : ",") + l;
-      return text.empty() ? "none" : text;
-    }
-    case AnswerKind::FloorPoint: {
-      const glm::dvec2 truth = std::get<glm::dvec2>(q.truth);
-      const double spread = 0.25 * q.correctWithin;
-      return formatNumber(truth.x + normal(random) * spread) + "," + formatNumber(truth.y + normal(random) * spread);
-    }
-  }
-  return "";
-}
+double normal(core::SeededRandom& random) { return tasks::standardNormal(random); }
+std::string formatNumber(double v) { return tasks::answerNumber(v); }
 
 }  // namespace
 
@@ -104,10 +29,11 @@ std::string describeSimulatedObserver(const ObserverParams& p) {
   return "A simulated observer does not look at the picture as a person does. For each question it "
          "measures the local RMS luminance contrast c in a 9x9-pixel window at the question's marked probe "
          "points of the rendered stimulus, takes the visibility v = min(1, c / " + g(p.contrastReference) +
-         ") (layer-index questions: times 1 - " + g(p.layerPenalty) + " per layer behind the first), and "
+         ") (questions about a layer behind the first: times 1 - " + g(p.layerPenalty) + " per layer in front), and "
          "knows the answer with probability 1 / (1 + exp(-" + g(p.sensitivity) + " (s v - " + g(p.threshold) +
          "))), where s is the participant's skill (log-normal, sd of log " + g(p.skillSpread) +
-         "). An observer who knows answers the ground truth; otherwise, and in a share " + g(p.lapse) +
+         "). An observer who knows answers the ground truth (a gauge figure's normal tilted by a random angle of sd " +
+         g(p.gaugeDegrees) + " (1 + " + g(p.gaugeGrowth) + " (1 - v)) degrees); otherwise, and in a share " + g(p.lapse) +
          " of questions (lapses), it guesses uniformly among the possible answers; in a share " +
          g(p.giveUpShare) + " it gives no answer. Its response time is (" + g(p.baseSeconds) + " + " +
          g(p.slowSeconds) + " (1 - v)) / sqrt(s) seconds times a log-normal factor (sd " + g(p.rtSigma) +
@@ -132,8 +58,7 @@ double SimulatedObserver::visibility(const PreparedTrial& prepared) const {
     ++n;
   }
   double v = n ? std::min(1.0, sum / n / params_.contrastReference) : 0.0;
-  if (q.answerKind == tasks::AnswerKind::LayerNumber)
-    v *= std::max(0.0, 1.0 - params_.layerPenalty * double(std::get<std::int64_t>(q.truth) - 1));
+  v *= std::max(0.0, 1.0 - params_.layerPenalty * double(tasks::answerForm(q).layersInFront(q)));
   return v;
 }
 
@@ -147,7 +72,9 @@ ObserverDecision SimulatedObserver::decide(const TrialView& view) const {
   d.knows = !lapse && random.uniform() < d.pKnow;
   const double median = (params_.baseSeconds + params_.slowSeconds * (1.0 - d.visibility)) / std::sqrt(skill_);
   d.seconds = median * std::exp(params_.rtSigma * normal(random));
-  const std::string answer = d.knows ? trueAnswer(view.prepared.question, random) : guess(view.prepared.question, random);
+  const tasks::Question& q = view.prepared.question;
+  const tasks::AnswerForm& form = tasks::answerForm(q);
+  const std::string answer = d.knows ? form.known(q, random, d.visibility, {params_.gaugeDegrees, params_.gaugeGrowth}) : form.guess(q, random);
   d.typed = answer;
   if (!d.gaveUp && d.seconds <= view.limitSeconds) d.answer = answer;
   return d;

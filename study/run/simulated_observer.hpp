@@ -5,12 +5,16 @@
 // Per question (parameters in ObserverParams, [observer] in the experiment file):
 //   c   = mean local RMS luminance contrast at the marked points (targets for search tasks), over
 //         a 9×9 window of the unmarked rendering (study/run/image_contrast.hpp)
-//   v   = min(1, c / contrast_reference) · (1 − layer_penalty·(layer − 1))₊   (layer-index only)
+//   v   = min(1, c / contrast_reference) · (1 − layer_penalty·(layers in front))₊
+//         (layers in front: the answer form's layersInFront — layer-index, gauge figure on layer k)
 //   s   = participant skill, exp(skill_spread · z_participant), fixed per participant
 //   p_k = 1 / (1 + exp(−sensitivity · (s·v − threshold)))  — the observer *knows* the answer
 //   with probability give_up_share: no answer (missing); else with probability lapse or 1 − p_k:
-//   a guess (uniform over the answer's alternatives; counts and floor points: noisy estimates),
-//   otherwise the true answer.
+//   a guess (uniform over the answer's alternatives; counts and floor points: noisy estimates;
+//   gauge figure: a direction uniform over the hemisphere facing the viewer), otherwise the true
+//   answer (floor points within a quarter of the correct distance; a gauge figure's normal tilted
+//   by a Gaussian angle of sd gauge_degrees · (1 + gauge_growth · (1 − v))). The answer's form
+//   (tasks/answer_form.hpp: guess, known) does this per answer kind.
 //   RT  = (base_seconds + slow_seconds · (1 − v)) / √s · exp(rt_sigma · z); past the question's
 //         limit the answer is missing (Carnecky Sec. 8: missing = wrong).
 // All randomness comes from SeededRandom streams seeded by (experiment seed, participant, trial

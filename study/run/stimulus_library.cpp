@@ -1,14 +1,15 @@
 #include "study/run/stimulus_library.hpp"
 
 #include "study/store/fault_point.hpp"
+#include "tasks/answer_form.hpp"
 
 #include <filesystem>
 #include <sstream>
 
-#include "core/png_file.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
+#include "stimuli/sets/external_image_alignment.hpp"
 #include "stimuli/sets/stimulus_producer.hpp"
 #include "tasks/task_registry.hpp"
 
@@ -34,18 +35,12 @@ render::Camera resolveCamera(const render::Scene& scene, const StimulusKey& key)
 }  // namespace
 
 core::Image readExternalImage(const StimulusKey& key) {
-  auto image = core::readPngFile(key.images);
-  if (!image) throw std::runtime_error(key.images + ": cannot read the image (a PNG is expected)");
-  if (image->width != key.width || image->height != key.height)
-    throw std::runtime_error(key.images + ": the image is " + std::to_string(image->width) + "x" + std::to_string(image->height) +
-                             " but the stimulus is " + std::to_string(key.width) + "x" + std::to_string(key.height) + " (stimulus.size)");
-  for (auto& p : image->pixels) p.a = 1.0f;  // shown over nothing: opaque
-  return *image;
+  return stimuli::opaque(stimuli::readExternalImage(key.images, key.width, key.height));
 }
 
 render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key) { return resolveCamera(scene, key); }
 
-bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target"; }
+bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target" && p.role != "gauge"; }
 
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter) {
   return drawOutlinedMarks(picture, stimuli::visibleMarks(probeMarks(question)), painter);
@@ -160,7 +155,7 @@ PreparedTrial StimulusLibrary::prepare(const PlannedTrial& trial) {
   p.stimulusSha256 = found->second.first;
   p.stimulus = found->second.second;
   p.stimulusPath = (std::filesystem::path(directory_) / (p.stimulusSha256 + ".png")).string();
-  if (p.question.answerKind == tasks::AnswerKind::FloorPoint) {
+  if (tasks::answerForm(p.question).widget(p.question).kind == tasks::WidgetKind::FloorPlanPoint) {
     const auto& [plan, image] = floorPlan(trial.stimulus);
     p.floorPlan = plan;
     p.floorPlanImage = image;

@@ -20,19 +20,22 @@ json labelSubset(const json& labels, std::mt19937_64& rng) {
   return chosen;
 }
 
+// A valid answer for the page's widget (the load tester answers widgets as a page would).
 std::optional<json> answerFor(const json& page, std::mt19937_64& rng) {
-  const std::string kind = page.value("answer_kind", "");
+  const json widget = page.value("widget", json::object());
+  const std::string kind = widget.value("kind", "");
   const json labels = page.value("labels", json::array());
-  if (kind == "layer-number" || kind == "count") return uniform(rng, 1, 5);
-  if (kind == "label" && !labels.empty()) return labels.at(std::size_t(uniform(rng, 0, int(labels.size()) - 1))).at("label");
-  if (kind == "label-set") return labels.empty() ? json::array() : labelSubset(labels, rng);  // [] is "none"
-  if (kind == "letter" && page.contains("letters") && !page["letters"].empty())
-    return page["letters"].at(std::size_t(uniform(rng, 0, int(page["letters"].size()) - 1)));
-  if (kind == "floor-point" && page.contains("floor_plan")) {
+  if (kind == "number") return uniform(rng, std::max(1, widget.value("min", 1)), 5);
+  if (kind == "pick-label" && !labels.empty()) return labels.at(std::size_t(uniform(rng, 0, int(labels.size()) - 1))).at("label");
+  if (kind == "pick-labels") return labels.empty() ? json::array() : labelSubset(labels, rng);  // [] is "none"
+  if (kind == "buttons" && !widget.value("buttons", json::array()).empty())
+    return widget["buttons"].at(std::size_t(uniform(rng, 0, int(widget["buttons"].size()) - 1)));
+  if (kind == "floor-plan" && page.contains("floor_plan")) {
     const json& plan = page["floor_plan"];
     // Pixel centres: strictly inside the plan however the page scales it.
     return json{{"x", uniform(rng, 0, plan.value("width", 1) - 1) + 0.5}, {"y", uniform(rng, 0, plan.value("height", 1) - 1) + 0.5}};
   }
+  if (kind == "gauge") return json{{"slant", uniform(rng, 0, 80)}, {"tilt", uniform(rng, 0, 359)}};
   return std::nullopt;
 }
 

@@ -4,78 +4,80 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "tasks/answer_form.hpp"
 #include "tasks/answer_parser.hpp"
-#include "tasks/letter_patterns.hpp"
 
 namespace tlab::study {
 
 namespace {
 
 using nlohmann::json;
-using tasks::AnswerKind;
 
-// The labels a participant can click: candidates (Label), marks (LabelSet); none otherwise.
-std::vector<const tasks::ProbePoint*> clickable(const tasks::Question& q) {
-  std::vector<const tasks::ProbePoint*> out;
-  for (const auto& p : q.points) {
-    if (!isMarkedPoint(p)) continue;
-    if (q.answerKind == AnswerKind::Label && p.role == "candidate") out.push_back(&p);
-    if (q.answerKind == AnswerKind::LabelSet && p.role == "mark") out.push_back(&p);
-  }
-  return out;
-}
+using tasks::WidgetKind;
 
-bool offered(const tasks::Question& q, const std::string& label) {
-  for (const auto* p : clickable(q))
-    if (p->label == label) return true;
+bool offered(const tasks::Widget& widget, const std::string& label) {
+  for (const auto& p : widget.marks)
+    if (p.label == label) return true;
+  for (const auto& b : widget.buttons)
+    if (b == label) return true;
   return false;
 }
 
-std::int64_t wholeNumber(const json& v, std::int64_t minimum) {
+std::int64_t wholeNumber(const tasks::Widget& widget, const json& v) {
   if (!v.is_number_integer()) throw std::invalid_argument("expected a whole number");
   const std::int64_t n = v.get<std::int64_t>();
-  if (n < minimum || n > 1000000) throw std::invalid_argument("expected a whole number from " + std::to_string(minimum) + " to 1000000");
+  if (n < widget.minimum || n > widget.maximum)
+    throw std::invalid_argument("expected a whole number from " + std::to_string(widget.minimum) + " to " + std::to_string(widget.maximum));
   return n;
 }
 
-std::string labelSetText(const tasks::Question& q, const json& v) {
+tasks::PickedLabels pickedLabels(const tasks::Widget& widget, const json& v) {
   if (!v.is_array() || v.size() > 64) throw std::invalid_argument("expected a list of labels");
-  std::string text;
+  tasks::PickedLabels picked;
   for (const auto& item : v) {
-    if (!item.is_string() || !offered(q, item.get<std::string>())) throw std::invalid_argument("a label that is not on the picture");
-    text += (text.empty() ? "" : ",") + item.get<std::string>();
+    if (!item.is_string() || !offered(widget, item.get<std::string>())) throw std::invalid_argument("a label that is not on the picture");
+    picked.labels.push_back(item.get<std::string>());
   }
-  return text.empty() ? "none" : text;
+  return picked;
 }
 
-std::string floorPointText(const std::optional<FloorPlan>& floorPlan, const json& v) {
+tasks::PlanPoint planPoint(const std::optional<FloorPlan>& floorPlan, const json& v) {
   if (!floorPlan) throw std::invalid_argument("this trial has no floor plan");
   const FloorPlan& plan = *floorPlan;
   if (!v.is_object() || !v.contains("x") || !v.contains("y") || !v["x"].is_number() || !v["y"].is_number())
     throw std::invalid_argument("expected {\"x\": pixel, \"y\": pixel} on the floor plan");
   const double x = v["x"].get<double>(), y = v["y"].get<double>();
   if (!(x >= 0 && y >= 0 && x < plan.width && y < plan.height)) throw std::invalid_argument("the click is outside the floor plan");
-  const glm::dvec2 world = plan.worldAt({x, y});
-  char text[96];
-  std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);  // as the window writes a click (study/window/trial_screen.cpp)
-  return text;
+  return {plan.worldAt({x, y})};
 }
 
-std::string kindText(const tasks::Question& q, const std::optional<FloorPlan>& floorPlan, const json& v) {
-  switch (q.answerKind) {
-    case AnswerKind::LayerNumber: return std::to_string(wholeNumber(v, 1));
-    case AnswerKind::Count: return std::to_string(wholeNumber(v, 0));
-    case AnswerKind::Label:
-      if (!v.is_string() || !offered(q, v.get<std::string>())) throw std::invalid_argument("expected one of the labels on the picture");
-      return v.get<std::string>();
-    case AnswerKind::LabelSet: return labelSetText(q, v);
-    case AnswerKind::Letter:
-      if (!v.is_string() || v.get<std::string>().size() != 1 || tasks::patternLetters().find(v.get<std::string>()) == std::string::npos)
-        throw std::invalid_argument("expected one of the letters " + tasks::patternLetters());
-      return v.get<std::string>();
-    case AnswerKind::FloorPoint: return floorPointText(floorPlan, v);
+tasks::GaugeSetting gaugeSetting(const json& v) {
+  if (!v.is_object() || !v.contains("slant") || !v.contains("tilt") || !v["slant"].is_number() || !v["tilt"].is_number())
+    throw std::invalid_argument("expected {\"slant\": degrees, \"tilt\": degrees}");
+  return {v["slant"].get<double>(), v["tilt"].get<double>()};
+}
+
+// The page's reply for the question's widget, as the input it stands for.
+tasks::WidgetInput widgetInput(const tasks::Widget& widget, const std::optional<FloorPlan>& floorPlan, const json& v) {
+  switch (widget.kind) {
+    case WidgetKind::Number: return tasks::TypedText{std::to_string(wholeNumber(widget, v))};
+    case WidgetKind::PickLabel:
+    case WidgetKind::Buttons:
+      if (!v.is_string() || !offered(widget, v.get<std::string>())) throw std::invalid_argument("expected one of the labels on the picture");
+      return tasks::PickedLabels{{v.get<std::string>()}};
+    case WidgetKind::PickLabels: return pickedLabels(widget, v);
+    case WidgetKind::FloorPlanPoint: return planPoint(floorPlan, v);
+    case WidgetKind::Gauge: return gaugeSetting(v);
   }
-  throw std::invalid_argument("unknown answer kind");
+  throw std::invalid_argument("unknown widget");
+}
+
+json widgetJson(const tasks::Widget& w) {
+  json j{{"kind", tasks::widgetName(w.kind)}};
+  if (w.kind == WidgetKind::Number) j["min"] = w.minimum, j["max"] = w.maximum;
+  if (!w.buttons.empty()) j["buttons"] = w.buttons;
+  if (w.kind == WidgetKind::Gauge) j["gauge"] = {{"x", w.at.x}, {"y", w.at.y}, {"radius", w.radiusPixels}, {"start", {w.startSlant, w.startTilt}}};
+  return j;
 }
 
 double milliseconds(const json& body, const char* key) {
@@ -94,23 +96,22 @@ json turntableJson(const Turntable& t) {
 
 json pageOf(const TrialView& view, const TrialImages& images) {
   const tasks::Question& q = view.prepared.question;
+  const tasks::AnswerForm& form = tasks::answerForm(q);
+  const tasks::Widget widget = form.widget(q);
   json labels = json::array();
-  for (const auto* p : clickable(q)) labels.push_back({{"label", p->label}, {"x", p->pixel.x}, {"y", p->pixel.y}});
+  for (const auto& p : widget.marks) labels.push_back({{"label", p.label}, {"x", p.pixel.x}, {"y", p.pixel.y}});
   json page{{"kind", "trial"},
             {"phase", phaseName(view.plan.phase)},
             {"index", view.index},
             {"total", view.total},
             {"question", q.text},
-            {"answer_kind", tasks::answerKindName(q.answerKind)},
-            {"format", tasks::answerFormat(q.answerKind)},
+            {"answer_kind", form.name()},
+            {"format", form.format()},
+            {"hint", form.hint()},
+            {"widget", widgetJson(widget)},
             {"limit_s", view.limitSeconds},
             {"image", {{"sha256", view.prepared.stimulusSha256}, {"width", view.plan.stimulus.width}, {"height", view.plan.stimulus.height}}},
             {"labels", labels}};
-  if (q.answerKind == AnswerKind::Letter) {
-    json letters = json::array();
-    for (const char l : tasks::patternLetters()) letters.push_back(std::string(1, l));
-    page["letters"] = letters;
-  }
   if (view.prepared.floorPlan && !images.floorPlanSha256.empty())
     page["floor_plan"] = {{"sha256", images.floorPlanSha256}, {"width", view.prepared.floorPlan->width}, {"height", view.prepared.floorPlan->height}};
   if (images.turntable) page["turntable"] = turntableJson(*images.turntable);
@@ -146,13 +147,13 @@ Checked checkTrialReply(const AnswerContext& context, const std::optional<Turnta
 }  // namespace
 
 std::string answerText(const AnswerContext& context, const nlohmann::json& answer) {
-  const std::string text = kindText(context.question, context.floorPlan, answer);
-  try {
-    tasks::parseAnswer(context.question, text);  // the task's own parser agrees
-  } catch (const tasks::AnswerFormatError& e) {
-    throw std::invalid_argument(e.what());
+  const tasks::AnswerForm& form = tasks::answerForm(context.question);
+  try {  // the form writes the text and its own parser agrees
+    return form.fromInput(context.question, widgetInput(form.widget(context.question), context.floorPlan, answer));
+  } catch (const tasks::AnswerFormatError& e) {  // said once: the reply's type prefixes it
+    const std::string message = e.what();
+    throw std::invalid_argument(message.rfind("answer: ", 0) == 0 ? message.substr(8) : message);
   }
-  return text;
 }
 
 Screen trialScreen(const TrialView& view, const TrialImages& images) {

@@ -5,25 +5,13 @@
 #include <cstdio>
 
 #include "study/window/window_style.hpp"
-#include "tasks/letter_patterns.hpp"
+#include "study/window/gauge_drawing.hpp"
 
 namespace tlab::study {
 
 namespace {
 
-using tasks::AnswerKind;
-
-std::string hint(AnswerKind kind) {
-  switch (kind) {
-    case AnswerKind::LayerNumber: return "Type the layer number (1 = front) and press Enter.";
-    case AnswerKind::Count: return "Type the number and press Enter.";
-    case AnswerKind::Label: return "Click the label (or type it and press Enter).";
-    case AnswerKind::LabelSet: return "Click labels to select them, then press Enter (Enter with none selected: none).";
-    case AnswerKind::Letter: return "Click the letter (or press its key).";
-    case AnswerKind::FloorPoint: return "Click the place on the floor plan (right), or type x,z and press Enter.";
-  }
-  return "";
-}
+using tasks::WidgetKind;
 
 std::string formatCountdown(double seconds) {
   const int s = std::max(0, int(std::ceil(seconds)));
@@ -32,17 +20,30 @@ std::string formatCountdown(double seconds) {
   return buf;
 }
 
-bool hasFloorPlan(const TrialView& view) {
-  return view.prepared.question.answerKind == AnswerKind::FloorPoint && view.prepared.floorPlan.has_value();
+bool hasFloorPlan(const TrialView& view, const tasks::Widget& widget) {
+  return widget.kind == WidgetKind::FloorPlanPoint && view.prepared.floorPlan.has_value();
+}
+
+// The window also takes typed answers where the page has buttons or marks only.
+std::string windowHint(const tasks::AnswerForm& form, const tasks::Widget& widget) {
+  switch (widget.kind) {
+    case WidgetKind::PickLabel:
+    case WidgetKind::FloorPlanPoint: return form.hint() + " (Or type it and press Enter.)";
+    case WidgetKind::Gauge: return "Drag on the picture (or use the arrow keys) to turn the gauge; Enter when it lies flat.";
+    default: return form.hint();
+  }
 }
 
 }  // namespace
 
-TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter) : view_(view), painter_(painter), base_(std::move(blank)) {
+TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& painter)
+    : view_(view), form_(tasks::answerForm(view.prepared.question)), widget_(form_.widget(view.prepared.question)), painter_(painter),
+      base_(std::move(blank)) {
   const tasks::Question& q = view.prepared.question;
   const Canvas& stimulus = *view.prepared.stimulus;
-  layout_ = hasFloorPlan(view) ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height())
-                               : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height());
+  const bool plan = hasFloorPlan(view, widget_);
+  layout_ = plan ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height())
+                 : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height());
   // Interactive trials render the scene live in the stimulus area (Elmqvist: orbit / walk).
   if (view.plan.navigation != Navigation::None && view.prepared.scene)
     live_.emplace(view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera);
@@ -51,31 +52,31 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
   base_.drawCanvas(stimulus, layout_.stimulus);
   layoutJson_ = {{"stimulus", {layout_.stimulus.x, layout_.stimulus.y, layout_.stimulus.width, layout_.stimulus.height}},
                  {"canvas", {base_.width(), base_.height()}}};
-  if (hasFloorPlan(view)) {
+  if (plan) {
     base_.drawCanvas(*view.prepared.floorPlanImage, *layout_.plan);
     base_.strokeRect(*layout_.plan, kInk, 1);
     layoutJson_["plan"] = {layout_.plan->x, layout_.plan->y, layout_.plan->width, layout_.plan->height};
   }
   painter_.drawLine(base_, q.text, 16, 12, 22.0f, kInk);
-  painter_.drawLine(base_, hint(q.answerKind), 16, layout_.answer.y + 8, 18.0f, kMuted);
+  painter_.drawLine(base_, windowHint(form_, widget_), 16, layout_.answer.y + 8, 18.0f, kMuted);
   char counter[64];  // training and test trials are counted apart
   std::snprintf(counter, sizeof counter, "%s %d/%d", view.plan.phase == Phase::Training ? "training" : "trial", view.index, view.total);
   painter_.drawLine(base_, counter, base_.width() - 260, 12, 18.0f, kMuted);
-  for (const auto& p : q.points) {
-    if (!isMarkedPoint(p)) continue;
-    if (q.answerKind == AnswerKind::Label && p.role != "candidate") continue;
-    if (q.answerKind == AnswerKind::LabelSet && p.role != "mark") continue;
+  for (const auto& p : widget_.marks) {
     labels_.push_back(p.label);
     screenPoints_.push_back(layout_.toScreen(p.pixel));
     layoutJson_["labels"][p.label] = {screenPoints_.back().x, screenPoints_.back().y};
   }
-  if (q.answerKind == AnswerKind::Letter) {
-    std::vector<std::string> letters;
-    for (const char l : tasks::patternLetters()) letters.push_back(std::string(1, l));
-    buttons_ = buttonRow(layout_.answer, letters);
-  }
+  if (!widget_.buttons.empty()) buttons_ = buttonRow(layout_.answer, widget_.buttons);
   for (const auto& b : buttons_) layoutJson_["buttons"][b.label] = {b.rect.x + b.rect.width / 2, b.rect.y + b.rect.height / 2};
+  if (widget_.kind == WidgetKind::Gauge) {
+    gauge_ = {widget_.startSlant, widget_.startTilt};
+    const glm::dvec2 centre = layout_.toScreen(widget_.at);
+    layoutJson_["gauge"] = {{"centre", {centre.x, centre.y}}, {"radius", gaugeRadius()}, {"start", {gauge_.x, gauge_.y}}};
+  }
 }
+
+double TrialScreen::gaugeRadius() const { return widget_.radiusPixels * layout_.stimulus.width / double(layout_.stimulusWidth); }
 
 std::string TrialScreen::selectedText() const {
   std::string s;
@@ -90,7 +91,8 @@ Canvas TrialScreen::frame(double secondsLeft) {
   for (std::size_t i = 0; i < labels_.size(); ++i)
     if (selected_.count(labels_[i])) c.strokeCircle(screenPoints_[i].x, screenPoints_[i].y, 10.0, 3.0, kAccent);
   for (const auto& b : buttons_) drawButton(c, painter_, b, false);
-  const bool showSelection = view_.prepared.question.answerKind == AnswerKind::LabelSet && typed_.empty();
+  if (widget_.kind == WidgetKind::Gauge) drawGauge(c, layout_.toScreen(widget_.at), gaugeRadius(), gauge_.x, gauge_.y);
+  const bool showSelection = widget_.kind == WidgetKind::PickLabels && typed_.empty();
   const std::string shown = showSelection ? "selected: " + (selected_.empty() ? std::string("none") : selectedText()) : "answer: " + typed_ + "_";
   painter_.drawLine(c, shown, 16, layout_.answer.y + 40, 22.0f, kInk);
   if (!error_.empty()) painter_.drawLine(c, error_, 16, layout_.answer.y + 70, 16.0f, kWarn);
@@ -99,19 +101,20 @@ Canvas TrialScreen::frame(double secondsLeft) {
 }
 
 std::optional<std::string> TrialScreen::typedChar(const std::string& ch) {
-  // A pattern letter is answered by its key alone; everything else is typed and sent with Enter.
-  if (view_.prepared.question.answerKind == AnswerKind::Letter && ch.size() == 1 &&
-      tasks::patternLetters().find(char(std::toupper(ch[0]))) != std::string::npos)
-    return std::string(1, char(std::toupper(ch[0])));
+  // A button's one-letter label is answered by its key alone; everything else is typed and sent with Enter.
+  if (ch.size() == 1)
+    for (const auto& b : widget_.buttons)
+      if (b.size() == 1 && b[0] == char(std::toupper(ch[0]))) return b;
   if (typed_.size() < 256) typed_ += ch, dirty_ = true;
   return std::nullopt;
 }
 
 std::optional<std::string> TrialScreen::enter() {
   std::string text = typed_;
-  if (view_.prepared.question.answerKind == AnswerKind::LabelSet && text.empty()) text = selected_.empty() ? "none" : selectedText();
-  if (text.empty()) return std::nullopt;
-  return text;
+  if (!text.empty()) return text;
+  if (widget_.kind == WidgetKind::PickLabels) return selected_.empty() ? "none" : selectedText();
+  if (widget_.kind == WidgetKind::Gauge) return form_.fromInput(view_.prepared.question, tasks::GaugeSetting{gauge_.x, gauge_.y});
+  return std::nullopt;
 }
 
 void TrialScreen::backspace() {
@@ -123,8 +126,8 @@ std::optional<std::string> TrialScreen::clickLabel(double x, double y) {
   const int hit = hitPoint(screenPoints_, {x, y});
   if (hit < 0) return std::nullopt;
   const std::string& label = labels_[std::size_t(hit)];
-  if (view_.prepared.question.answerKind == AnswerKind::Label) return label;
-  if (view_.prepared.question.answerKind == AnswerKind::LabelSet) {  // clicks toggle, Enter submits
+  if (widget_.kind == WidgetKind::PickLabel) return label;
+  if (widget_.kind == WidgetKind::PickLabels) {  // clicks toggle, Enter submits
     if (!selected_.erase(label)) selected_.insert(label);
     dirty_ = true;
   }
@@ -132,30 +135,47 @@ std::optional<std::string> TrialScreen::clickLabel(double x, double y) {
 }
 
 std::optional<std::string> TrialScreen::clickFloorPlan(double x, double y) const {
-  if (!hasFloorPlan(view_) || !layout_.plan->contains(x, y)) return std::nullopt;
+  if (!hasFloorPlan(view_, widget_) || !layout_.plan->contains(x, y)) return std::nullopt;
   const FloorPlan& plan = *view_.prepared.floorPlan;
   const glm::dvec2 planPixel((x - layout_.plan->x) * plan.width / double(layout_.plan->width),
                              (y - layout_.plan->y) * plan.height / double(layout_.plan->height));
-  const glm::dvec2 world = plan.worldAt(planPixel);
-  char text[96];
-  std::snprintf(text, sizeof text, "%.4f,%.4f", world.x, world.y);
-  return std::string(text);
+  return form_.fromInput(view_.prepared.question, tasks::PlanPoint{plan.worldAt(planPixel)});
 }
 
 std::optional<std::string> TrialScreen::click(double x, double y) {
   for (const auto& b : buttons_)
     if (b.rect.contains(x, y)) return b.label;
   if (auto floor = clickFloorPlan(x, y)) return floor;
+  if (widget_.kind == WidgetKind::Gauge && layout_.stimulus.contains(x, y)) {  // the stick follows the pointer
+    gaugePointer_ = {x, y};
+    gauge_ = gaugeToward(layout_.toScreen(widget_.at), gaugeRadius(), gaugePointer_);
+    dirty_ = true;
+    return std::nullopt;
+  }
   return clickLabel(x, y);
 }
 
+bool TrialScreen::takesArrows() const { return live_.has_value() || widget_.kind == WidgetKind::Gauge; }
+
 void TrialScreen::arrow(int forward, int right) {
+  if (widget_.kind == WidgetKind::Gauge) {  // up/down: slant ± 2°, left/right: tilt ± 5°
+    gauge_.x = std::clamp(gauge_.x + 2.0 * forward, 0.0, 85.0);
+    gauge_.y = std::fmod(gauge_.y - 5.0 * right + 360.0, 360.0);
+    dirty_ = true;
+    return;
+  }
   if (!live_) return;
   live_->navigator().move(forward, right);
   dirty_ = true;
 }
 
 void TrialScreen::drag(double dx, double dy) {
+  if (widget_.kind == WidgetKind::Gauge) {
+    gaugePointer_ += glm::dvec2(dx, dy);
+    gauge_ = gaugeToward(layout_.toScreen(widget_.at), gaugeRadius(), gaugePointer_);
+    dirty_ = true;
+    return;
+  }
   if (!live_) return;
   live_->navigator().drag(dx, dy);
   dirty_ = true;
@@ -173,6 +193,13 @@ void TrialScreen::rejected(const std::string& error) {
   dirty_ = true;
 }
 
-std::string TrialScreen::cameraText() const { return live_ ? live_->navigator().describe() : ""; }
+std::string TrialScreen::cameraText() const {
+  if (widget_.kind == WidgetKind::Gauge) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "gauge slant=%.2f tilt=%.2f", gauge_.x, gauge_.y);
+    return buf;
+  }
+  return live_ ? live_->navigator().describe() : "";
+}
 
 }  // namespace tlab::study

@@ -2,8 +2,9 @@
 // TrialScreen: what a trial looks like in the participant's window and what each input means —
 // the layout (question, counter, stimulus at a whole-number scale, the floor plan beside it for
 // floor-point answers, the answer band with letter buttons), the marks that can be clicked, the
-// typed text, the selected labels, the live view of interactive trials, and one handler per kind
-// of input that returns the answer it gives, if any. No clock, no GL, no database: the window
+// typed text, the selected labels, the gauge figure, the live view of interactive trials, and one
+// handler per kind of input that returns the answer it gives, if any. What is drawn follows the
+// question's widget (tasks/answer_form.hpp): the window draws widget primitives, not tasks. No clock, no GL, no database: the window
 // responder owns timing, pausing and submitting.
 #include <optional>
 #include <set>
@@ -17,6 +18,7 @@
 #include "study/run/responder.hpp"
 #include "study/window/screen_layout.hpp"
 #include "study/run/text_painter.hpp"
+#include "tasks/answer_form.hpp"
 
 namespace tlab::study {
 
@@ -29,28 +31,33 @@ class TrialScreen {
   // Where everything is (stimulus, canvas, labels, buttons, plan), stored with the onset event.
   const nlohmann::json& layoutJson() const { return layoutJson_; }
   bool live() const { return live_.has_value(); }
+  // Arrow keys and drags turn something: the live view's camera, or the gauge figure.
+  bool takesArrows() const;
 
   // Inputs; each returns the answer text it submits, if any, and marks the screen for redrawing.
   std::optional<std::string> typedChar(const std::string& utf8Char);
   std::optional<std::string> enter();  // typed text, or the selected labels ("none" when none)
   void backspace();
   std::optional<std::string> click(double x, double y);
-  void arrow(int forward, int right);      // live trials: walk or zoom
-  void drag(double dx, double dy);         // live trials: orbit or look around
+  void arrow(int forward, int right);      // live trials: walk or zoom; gauge: slant and tilt
+  void drag(double dx, double dy);         // live trials: orbit or look around; gauge: the stick follows
   void moveTo(double x, double y);         // live trials: the dynamic lens follows the cursor
   // An answer that does not parse: shown in red, the typed text cleared.
   void rejected(const std::string& error);
 
   bool dirty() const { return dirty_; }
-  // The camera of a live trial after a move, for the event log.
+  // The camera of a live trial (or the gauge's orientation) after a move, for the event log.
   std::string cameraText() const;
 
  private:
   std::optional<std::string> clickLabel(double x, double y);
   std::optional<std::string> clickFloorPlan(double x, double y) const;
   std::string selectedText() const;
+  double gaugeRadius() const;  // in screen pixels
 
   const TrialView& view_;
+  const tasks::AnswerForm& form_;
+  tasks::Widget widget_;
   TextPainter& painter_;
   ScreenLayout layout_;
   Canvas base_;
@@ -61,6 +68,8 @@ class TrialScreen {
   nlohmann::json layoutJson_;
   std::string typed_, error_;
   std::set<std::string> selected_;
+  glm::dvec2 gauge_{0.0};         // (slant, tilt) in degrees
+  glm::dvec2 gaugePointer_{0.0};  // where the drag is, in screen pixels
   bool dirty_ = true;
 };
 

@@ -12,6 +12,7 @@
 #include "study/window/window_responder.hpp"
 #include "study/window/window_style.hpp"
 #include "study/run/simulated_observer.hpp"
+#include "tasks/answer_form.hpp"
 #include "tasks/answer_parser.hpp"
 
 namespace tlab::study {
@@ -28,7 +29,7 @@ WindowResponder::TrialInput WindowResponder::trialInput(TrialScreen& screen, con
       r.closed = true;
       break;
     case Input::Kind::Key:
-      if (arrow && screen.live()) {
+      if (arrow && screen.takesArrows()) {
         screen.arrow(in.key == GLFW_KEY_UP ? 1 : in.key == GLFW_KEY_DOWN ? -1 : 0, in.key == GLFW_KEY_RIGHT ? 1 : in.key == GLFW_KEY_LEFT ? -1 : 0);
         event(in.tNs, "camera", screen.cameraText());
       } else if (in.key == GLFW_KEY_ESCAPE) {
@@ -45,7 +46,7 @@ WindowResponder::TrialInput WindowResponder::trialInput(TrialScreen& screen, con
     case Input::Kind::Click: r.answer = screen.click(in.x, in.y); break;
     case Input::Kind::Move: screen.moveTo(in.x, in.y); break;
     case Input::Kind::Drag:
-      if (screen.live()) {
+      if (screen.takesArrows()) {
         screen.drag(in.x, in.y);
         event(in.tNs, "camera", screen.cameraText());
       }
@@ -85,7 +86,7 @@ void WindowResponder::showOnset(const TrialView& view, TrialScreen& screen, cons
   lastPresentOnsetMs_ = (clock.onsetNs - before) / 1e6;
   if (autopilot_) {
     const ObserverDecision d = autopilot_->decide(view);
-    scriptText(d.typed, q.answerKind != tasks::AnswerKind::Letter, std::min(d.seconds * autopilotPace_, view.limitSeconds / 2));
+    scriptText(d.typed, tasks::answerForm(q).widget(q).buttons.empty(), std::min(d.seconds * autopilotPace_, view.limitSeconds / 2));
   }
   ++onsets_;
   onsetSumMs_ += lastPresentOnsetMs_;

@@ -25,7 +25,7 @@ namespace fs = std::filesystem;
 
 // The README sections whose commands run here.
 const std::vector<std::string> kSections = {"## What the main job does", "## A researcher's guide", "## A tour",
-                                            "## Running a study: the commands"};
+                                            "## Tasks with exact ground truth", "## Running a study: the commands"};
 
 std::string section(const std::string& readme, const std::string& heading) {
   const auto begin = readme.find("\n" + heading);
@@ -112,6 +112,10 @@ const std::map<std::string, Mapping>& mappings() {
       {"tlab task probe builtin:open-cylinders --task layer-index --count 5 --seed 1 --json", {"tour", ""}},
       {"tlab stimuli examples/stimulus-sets/carnecky-flow-surfaces.toml -o out/stimuli --jobs 2", {"tour", ""}},
       {"tlab stats anova data.csv --dv score --within method --subject participant --json", {"tour", ""}},
+      // Tasks with exact ground truth: the shape tasks.
+      {"tlab task probe 'builtin:nested-spheres?n=3' --task gauge-figure --count 3 --json", {"tasks", ""}},
+      {"tlab simulate examples/shape-depiction.toml --participants 8 --db shape.db", {"tasks", ""}},
+      {"tlab analyze shape.db", {"tasks", ""}},
       // Running a study: the commands.
       {"tlab design examples/carnecky2013.toml", {"study", ""}},
       {"tlab run EXPERIMENT.toml --participant P01 --db study.db [--fullscreen] [--resume]",
@@ -204,6 +208,8 @@ TEST(Readme, TheTourRunsAsWritten) {
            {"tlab simulate study.toml --participants 3 --db tour.db", "tlab export tour.db --csv tour-csv",
             "cp tour-csv/trials.csv data.csv"});
 }
+
+TEST(Readme, TheShapeTaskCommandsRunAsWritten) { runGroup("tasks", workFolder("tasks")); }
 
 TEST(Readme, TheStudyCommandsRunAsWritten) {
   const fs::path dir = workFolder("study");

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "stimuli/sets/stimulus_set_file.hpp"
+#include "stimuli/sets/stimulus_set_names.hpp"
 
 namespace tlab::stimuli {
 namespace {
@@ -31,6 +32,34 @@ TEST(StimulusSetFile, ReadsStylesScenesViewsAndProbeSets) {
   EXPECT_EQ(spec.scenes[0].probeSets[0].spec.count, 2);
   EXPECT_EQ(spec.scenes[1].views.size(), 1u);  // the default view
   EXPECT_EQ(spec.scenes[1].place.line, 16);
+}
+
+TEST(StimulusSetFile, AnImagesEntryNamesItsPathsByTheScenesAndViewsNames) {
+  const StimulusSetSpec spec = parseStimulusSet(R"([set]
+styles = ["constant", { name = "theirs", images = "renders/{scene}-{view}.png" }]
+[[scene]]
+source = "builtin:nested-spheres?n=2"
+views = [{}, { name = "side", azimuth = 30 }]
+[[scene]]
+source = "builtin:torus"
+name = "ring"
+)", "set.toml");
+  ASSERT_EQ(spec.styles.size(), 2u);
+  EXPECT_EQ(spec.styles[0].images, "");
+  EXPECT_EQ(spec.styles[1].name, "theirs");
+  EXPECT_EQ(spec.styles[1].images, "renders/{scene}-{view}.png");
+  EXPECT_EQ(imagesPathFor(spec.styles[1].images, spec.scenes[0], 0), "renders/nested-spheres-v1.png");
+  EXPECT_EQ(imagesPathFor(spec.styles[1].images, spec.scenes[0], 1), "renders/nested-spheres-side.png");
+  EXPECT_EQ(imagesPathFor(spec.styles[1].images, spec.scenes[1], 0), "renders/ring-v1.png");
+}
+
+TEST(StimulusSetFile, AnImagesEntryWithAnUnknownPlaceholderOrSettingsNamesItsLine) {
+  const std::string unknown = errorOf("[set]\nstyles = [\n  { name = \"t\", images = \"r/{scene}-{trial}.png\" },\n]\n[[scene]]\nsource = \"builtin:cube\"\n");
+  EXPECT_EQ(unknown, "set.toml:3: set.styles[0].images: unknown placeholder {trial} (known: {scene}, {view})");
+  const std::string settings = errorOf("[set]\nstyles = [{ name = \"t\", images = \"r/{scene}.png\", set = [\"alpha=1\"] }]\n[[scene]]\nsource = \"builtin:cube\"\n");
+  EXPECT_NE(settings.find("set.toml:2: set.styles[0].set: an images entry shows another renderer's pictures: it has no settings"), std::string::npos) << settings;
+  const std::string notPng = errorOf("[set]\nstyles = [{ name = \"t\", images = \"r/{scene}.jpg\" }]\n[[scene]]\nsource = \"builtin:cube\"\n");
+  EXPECT_NE(notPng.find("set.toml:2: set.styles[0].images: expected a PNG path template"), std::string::npos) << notPng;
 }
 
 TEST(StimulusSetFile, AnUnknownStyleNamesItsLine) {

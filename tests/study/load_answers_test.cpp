@@ -9,22 +9,31 @@
 using nlohmann::json;
 using namespace tlab::study;
 
-TEST(LoadAnswers, EveryAnswerKindIsChosenFromWhatThePageOffers) {
+// A trial page as the server sends it: its widget (tasks/answer_form.hpp) and the marks to click.
+json page(const json& widget, const json& extra = json::object()) {
+  json p{{"widget", widget}};
+  p.update(extra);
+  return p;
+}
+
+TEST(LoadAnswers, EveryWidgetIsAnsweredFromWhatThePageOffers) {
   std::mt19937_64 rng(1);
   const json labels = json::array({{{"label", "A"}, {"x", 1}, {"y", 2}}, {{"label", "B"}, {"x", 3}, {"y", 4}}});
   for (int i = 0; i < 50; ++i) {
-    const int n = loadAnswer({{"answer_kind", "layer-number"}}, 5.0, rng)["answer"].get<int>();
+    const int n = loadAnswer(page({{"kind", "number"}, {"min", 1}}), 5.0, rng)["answer"].get<int>();
     EXPECT_TRUE(n >= 1 && n <= 5);
-    const std::string l = loadAnswer({{"answer_kind", "label"}, {"labels", labels}}, 5.0, rng)["answer"].get<std::string>();
+    const std::string l = loadAnswer(page({{"kind", "pick-label"}}, {{"labels", labels}}), 5.0, rng)["answer"].get<std::string>();
     EXPECT_TRUE(l == "A" || l == "B");
-    const json set = loadAnswer({{"answer_kind", "label-set"}, {"labels", labels}}, 5.0, rng)["answer"];
+    const json set = loadAnswer(page({{"kind", "pick-labels"}}, {{"labels", labels}}), 5.0, rng)["answer"];
     EXPECT_TRUE(set.is_array() && !set.empty() && set.size() <= 2);
-    EXPECT_EQ(loadAnswer({{"answer_kind", "letter"}, {"letters", {"K"}}}, 5.0, rng)["answer"], "K");
-    const json p = loadAnswer({{"answer_kind", "floor-point"}, {"floor_plan", {{"width", 3}, {"height", 2}}}}, 5.0, rng)["answer"];
+    EXPECT_EQ(loadAnswer(page({{"kind", "buttons"}, {"buttons", {"K"}}}), 5.0, rng)["answer"], "K");
+    const json p = loadAnswer(page({{"kind", "floor-plan"}}, {{"floor_plan", {{"width", 3}, {"height", 2}}}}), 5.0, rng)["answer"];
     EXPECT_TRUE(p["x"].get<double>() > 0 && p["x"].get<double>() < 3 && p["y"].get<double>() > 0 && p["y"].get<double>() < 2);
+    const json g = loadAnswer(page({{"kind", "gauge"}}), 5.0, rng)["answer"];
+    EXPECT_TRUE(g["slant"].get<double>() >= 0 && g["slant"].get<double>() <= 80 && g["tilt"].get<double>() >= 0 && g["tilt"].get<double>() < 360);
   }
-  EXPECT_EQ(loadAnswer({{"answer_kind", "label"}, {"labels", json::array()}}, 5.0, rng), json({{"type", "timeout"}}));
-  EXPECT_EQ(loadAnswer({{"answer_kind", "count"}}, 7.5, rng)["rt_ms"], 7.5);
+  EXPECT_EQ(loadAnswer(page({{"kind", "pick-label"}}, {{"labels", json::array()}}), 5.0, rng), json({{"type", "timeout"}}));
+  EXPECT_EQ(loadAnswer(page({{"kind", "number"}, {"min", 0}}), 7.5, rng)["rt_ms"], 7.5);
 }
 
 TEST(LoadAnswers, FormValuesPassTheServersFieldCheck) {

@@ -83,6 +83,11 @@ TEST(OwnTechniqueCli, AStyleFileRunsInAnExperimentWithItsIdentityRecorded) {
   ASSERT_EQ(second.exitCode, 0) << second.err;
   EXPECT_EQ(runCommand("sqlite3 " + quoted(db) + " 'SELECT count(*) FROM experiments'").out, "2\n");
   expectOneLineError(runCommand(kTlab + " analyze " + db), "versions whose designs differ");
+  expectOneLineError(runCommand(kTlab + " export " + db + " --csv " + (dir / "csv").string()), "versions whose designs differ");
+  const auto pooled = runCommand(kTlab + " export " + db + " --csv " + (dir / "csv").string() + " --pool-versions");  // only when asked
+  ASSERT_EQ(pooled.exitCode, 0) << pooled.err;
+  const auto rows = parseCsv(readText((dir / "csv" / "trials.csv").string()));
+  EXPECT_EQ(rows.size(), 1u + 4u + 6u);  // the header, both versions' trials
 }
 
 TEST(OwnTechniqueCli, ABrokenStyleFileIsRefusedAtDesignTime) {

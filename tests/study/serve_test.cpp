@@ -86,7 +86,7 @@ TEST_F(Serve, ThePageNeverGetsTheGroundTruth) {
   PageClient page(server.port());
   const std::string token = arrive(page, "p1");
   const Walk w = walk(page, token, page.api(token, "display", display()).body);
-  const std::set<std::string> trialKeys = {"kind", "seq", "phase", "index", "total", "question", "answer_kind", "format", "limit_s", "image", "labels"};
+  const std::set<std::string> trialKeys = {"kind", "seq", "phase", "index", "total", "question", "answer_kind", "format", "hint", "widget", "limit_s", "image", "labels"};
   int trials = 0;
   for (const auto& s : w.screens) {
     if (s["kind"] != "trial") continue;

@@ -254,3 +254,61 @@ TEST(WindowRun, ParticipantOrbitsALiveSceneUnderXvfb) {
   EXPECT_NE(seen.front(), seen.back());
   EXPECT_EQ(seen.front().rfind("eye=", 0), 0u) << seen.front();
 }
+
+// The gauge figure in the window: a drag from its centre points the stick at the pointer, the arrow
+// keys turn it, Enter is Done; the stored direction is the one the last logged orientation gives.
+TEST(WindowRun, ParticipantTurnsAGaugeByDragAndArrowKeysUnderXvfb) {
+  if (!haveTool("Xvfb") || !haveTool("xdotool")) GTEST_SKIP() << "needs Xvfb and xdotool (scripts/setup.sh installs both)";
+  WindowSession session("window_gauge", 500, "gauge_window.toml", "G1");
+  const auto xdo = [&](const std::string& args) { return session.xdo(args); };
+  ASSERT_FALSE(session.window.empty()) << session.err();
+  const auto trials = waitForTrials(session.db);
+  ASSERT_EQ(trials.size(), 1u) << session.err();
+  const nlohmann::json& q = trials[0].question;
+  const tlab::study::ScreenLayout layout = tlab::study::makeScreenLayout(640, 480, 160, 160);
+  const glm::dvec2 centre = layout.toScreen({q["points"][0]["pixel"][0].get<double>(), q["points"][0]["pixel"][1].get<double>()});
+  pause(500);
+  xdo("key --window " + session.window + " space");  // welcome
+  pause(400);
+  xdo("key --window " + session.window + " space");  // task instructions
+  pause(600);
+  const std::string w = " --window " + session.window + " ";
+  xdo("mousemove" + w + std::to_string(int(centre.x) - 1) + " " + std::to_string(int(centre.y)));
+  xdo("mousedown" + w + "1");
+  for (int i = 1; i <= 4; ++i) {
+    xdo("mousemove" + w + std::to_string(int(centre.x) + 6 * i) + " " + std::to_string(int(centre.y) - 6 * i));
+    pause(150);
+  }
+  xdo("mouseup" + w + "1");
+  pause(300);
+  xdo("key" + w + "Up");
+  pause(300);
+  xdo("key" + w + "Return");
+  pause(500);
+  xdo("key" + w + "space");  // goodbye
+  ASSERT_EQ(session.finish(), 0) << session.out() << session.err();
+
+  Database d(session.db, false);
+  auto gauges = d.prepare("SELECT detail FROM events WHERE kind = 'camera' ORDER BY id");
+  std::string last;
+  int turns = 0;
+  while (gauges.step()) last = gauges.text(0), ++turns;
+  ASSERT_GE(turns, 2) << "drags and an arrow key";
+  double slant = 0, tilt = 0;
+  ASSERT_EQ(std::sscanf(last.c_str(), "gauge slant=%lf tilt=%lf", &slant, &tilt), 2) << last;
+  EXPECT_GT(slant, 10.0);  // dragged away from the centre, then 2° more
+  EXPECT_GT(tilt, 0.0);
+  EXPECT_LT(tilt, 90.0);  // up and to the right
+  auto response = d.prepare("SELECT raw_answer, error FROM responses");
+  ASSERT_TRUE(response.step());
+  double n[3];
+  ASSERT_EQ(std::sscanf(response.text(0).c_str(), "%lf,%lf,%lf", &n[0], &n[1], &n[2]), 3) << response.text(0);
+  const auto& f = q["directions"];
+  const double s = slant * M_PI / 180.0, t = tilt * M_PI / 180.0;
+  for (int i = 0; i < 3; ++i) {
+    const double expected = std::sin(s) * std::cos(t) * f["right"][i].get<double>() + std::sin(s) * std::sin(t) * f["up"][i].get<double>() +
+                            std::cos(s) * f["toward-eye"][i].get<double>();
+    EXPECT_NEAR(n[i], expected, 1e-4) << "component " << i << " of " << response.text(0);  // the log has 2 decimals of a degree
+  }
+  EXPECT_GE(response.real(1), 0.0);
+}

@@ -1,4 +1,4 @@
-#include "tasks/follow_boundary_task.hpp"
+#include "tasks/follow_boundary/follow_boundary_task.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_source.hpp"
-#include "tasks/boundary_arc.hpp"
-#include "tasks/boundary_loops.hpp"
+#include "tasks/follow_boundary/boundary_arc.hpp"
+#include "tasks/follow_boundary/boundary_loops.hpp"
 #include "tasks/welded_mesh.hpp"
 
 namespace tlab::tasks {

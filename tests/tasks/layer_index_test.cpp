@@ -1,13 +1,13 @@
-#include "tasks/layer_index_task.hpp"
+#include "tasks/layer_index/layer_index_task.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "renderer/scene/scene_source.hpp"
-#include "tasks/layer_ground_truth.hpp"
+#include "tasks/layer_index/layer_ground_truth.hpp"
 #include "tasks/ray_layer_caster.hpp"
-#include "tasks/silhouette_edges.hpp"
+#include "tasks/layer_index/silhouette_edges.hpp"
 #include "tasks/probe_helpers.hpp"
 
 namespace tlab::tasks {

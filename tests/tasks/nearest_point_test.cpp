@@ -1,4 +1,4 @@
-#include "tasks/nearest_point_task.hpp"
+#include "tasks/nearest_point/nearest_point_task.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include "renderer/scene/builtin_scenes.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "task_test_scenes.hpp"
-#include "tasks/geodesic_distances.hpp"
+#include "tasks/nearest_point/geodesic_distances.hpp"
 #include "tasks/welded_mesh.hpp"
 
 namespace tlab::tasks {

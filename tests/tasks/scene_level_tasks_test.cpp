@@ -1,12 +1,12 @@
 #include <gtest/gtest.h>
 
 #include "task_test_scenes.hpp"
-#include "tasks/counting_task.hpp"
+#include "tasks/counting/counting_task.hpp"
 #include "tasks/letter_patterns.hpp"
-#include "tasks/pattern_task.hpp"
+#include "tasks/pattern/pattern_task.hpp"
 #include "tasks/scene_targets.hpp"
 #include "tasks/scoring.hpp"
-#include "tasks/target_discovery_task.hpp"
+#include "tasks/target_discovery/target_discovery_task.hpp"
 
 namespace tlab::tasks {
 namespace {

@@ -2,7 +2,10 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -82,4 +85,102 @@ TEST(TaskCli, BadAnswerAndUnknownTaskAreOneLineErrors) {
   EXPECT_NE(list.output.find("euclidean-trap-share"), std::string::npos);
 }
 
+
+namespace shape {
+
+// "eye=X,Y,Z target=X,Y,Z ...": the named vector of the camera text `tlab task probe` prints.
+std::array<double, 3> cameraVector(const std::string& camera, const std::string& name) {
+  std::array<double, 3> v{};
+  const auto at = camera.find(name + "=");
+  EXPECT_NE(at, std::string::npos) << camera;
+  std::sscanf(camera.c_str() + at + name.size() + 1, "%lf,%lf,%lf", &v[0], &v[1], &v[2]);
+  return v;
+}
+
+double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+std::array<double, 3> minus(const std::array<double, 3>& a, const std::array<double, 3>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+std::array<double, 3> vec(const nlohmann::json& j) { return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()}; }
+
+TEST(TaskCli, GaugeFigureNormalsAreRadialToOneInAMillionAndFaceTheViewer) {
+  const CommandResult probe = run("task probe 'builtin:nested-spheres?n=3' --task gauge-figure --count 5 --json");
+  ASSERT_EQ(probe.exitCode, 0) << probe.output;
+  const auto j = nlohmann::json::parse(probe.output);
+  const auto eye = cameraVector(j["camera"], "eye");
+  ASSERT_EQ(j["questions"].size(), 5u);
+  for (const auto& q : j["questions"]) {
+    EXPECT_EQ(q["answer_kind"], "direction");
+    const auto p = vec(q["points"][0]["world"]), n = vec(q["truth"]);
+    const double r = std::sqrt(dot(p, p));
+    const double facing = dot(n, minus(eye, p));
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(std::abs(n[std::size_t(i)]), std::abs(p[std::size_t(i)] / r), 1e-6);
+    EXPECT_NEAR(std::abs(dot(n, p) / r), 1.0, 1e-6);
+    EXPECT_GT(facing, 0.0);
+    EXPECT_TRUE(q["measurements"].contains("slant") && q["measurements"].contains("tilt"));
+  }
+  // The truth typed back scores 0°; a typed direction 90° away scores 90° (and is wrong).
+  const auto& q1 = j["questions"][0];
+  const auto n = vec(q1["truth"]);
+  char typed[160];
+  std::snprintf(typed, sizeof typed, "%.9f,%.9f,%.9f", n[0], n[1], n[2]);
+  const CommandResult right = run("task check 'builtin:nested-spheres?n=3' --task gauge-figure --question 1 --json --answer " + std::string(typed));
+  ASSERT_EQ(right.exitCode, 0) << right.output;
+  const auto r = nlohmann::json::parse(right.output)["score"];
+  EXPECT_TRUE(r["correct"].get<bool>());
+  EXPECT_NEAR(r["error"].get<double>(), 0.0, 1e-6);
+  const std::array<double, 3> across = std::abs(n[0]) < 0.9 ? std::array<double, 3>{0, -n[2], n[1]} : std::array<double, 3>{-n[1], n[0], 0};
+  std::snprintf(typed, sizeof typed, "%.9f,%.9f,%.9f", across[0], across[1], across[2]);
+  const auto wrong = nlohmann::json::parse(run("task check 'builtin:nested-spheres?n=3' --task gauge-figure --question 1 --json --answer " + std::string(typed)).output)["score"];
+  EXPECT_NEAR(wrong["error"].get<double>(), 90.0, 1e-6);
+  EXPECT_FALSE(wrong["correct"].get<bool>());
+  const CommandResult bad = run("task check 'builtin:nested-spheres?n=3' --task gauge-figure --question 1 --answer 1,2");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("expected a direction 'x,y,z'"), std::string::npos) << bad.output;
+}
+
+TEST(TaskCli, RelativeDepthTruthIsTheNearerPointAlongTheView) {
+  const CommandResult probe = run("task probe 'builtin:nested-spheres?n=3' --task relative-depth --count 6 --set layer-b=2 --json");
+  ASSERT_EQ(probe.exitCode, 0) << probe.output;
+  const auto j = nlohmann::json::parse(probe.output);
+  const auto eye = cameraVector(j["camera"], "eye"), target = cameraVector(j["camera"], "target");
+  const auto forward = minus(target, eye);
+  for (const auto& q : j["questions"]) {
+    const double a = dot(minus(vec(q["points"][0]["world"]), eye), forward), b = dot(minus(vec(q["points"][1]["world"]), eye), forward);
+    EXPECT_EQ(q["truth"], a < b ? "A" : "B");
+  }
+}
+
+TEST(TaskCli, ListShowsTheShapeTasksAndTheirSettings) {
+  const CommandResult list = run("task list");
+  ASSERT_EQ(list.exitCode, 0);
+  for (const char* s : {"gauge-figure:", "--set layer=1", "--set gauge-radius-px=", "relative-depth:", "--set min-depth-gap="})
+    EXPECT_NE(list.output.find(s), std::string::npos) << s;
+}
+
+TEST(TaskCli, StimulusSetsCarryTheShapeTasksWithTheirTruthAndSayAGaugeCannotBePrinted) {
+  const std::string out = "task_cli_shape_set";
+  std::system(("rm -rf " + out).c_str());
+  const CommandResult r = run("stimuli " + std::string(TLAB_SOURCE_DIR) + "/tests/tasks/data/shape-set.toml -o " + out + " --quiet");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::ifstream in(out + "/manifest.json");
+  const auto manifest = nlohmann::json::parse(in);
+  int gauges = 0, depths = 0;
+  for (const auto& s : manifest["stimuli"]) {
+    const auto& truth = s["question"]["ground_truth"];
+    if (truth["task"] == "gauge-figure") {
+      ++gauges;
+      EXPECT_EQ(truth["answer_kind"], "direction");
+      EXPECT_EQ(truth["points"][0]["role"], "gauge");
+      EXPECT_NE(s["question"]["answer_format"].get<std::string>().find("answer it in the window or the browser"), std::string::npos);
+    } else if (truth["task"] == "relative-depth") {
+      ++depths;
+      EXPECT_EQ(truth["answer_kind"], "label");
+      EXPECT_EQ(truth["points"].size(), 2u);
+    }
+  }
+  EXPECT_EQ(gauges, 2);  // two styles
+  EXPECT_EQ(depths, 2);
+  EXPECT_TRUE(std::ifstream(out + "/booklet.pdf").good());
+}
+
+}  // namespace shape
 }  // namespace

@@ -190,16 +190,18 @@ function painted(img) {
   return img.decode().catch(() => {}).then(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
 }
 
+// The answer controls of the question's widget (the server sends the widget as data: the page draws
+// the few widget primitives, never a task of its own).
 function answerControls(s, stage, submit) {
   const box = el('div', { class: 'answer' });
-  const kind = s.answer_kind;
-  if (kind === 'layer-number' || kind === 'count') {
-    const input = el('input', { type: 'number', id: 'answer', min: kind === 'count' ? '0' : '1', step: '1' });
+  const w = s.widget;
+  if (w.kind === 'number') {
+    const input = el('input', { type: 'number', id: 'answer', min: String(w.min), step: '1' });
     const send = (e) => { if (/^\d+$/.test(input.value.trim())) submit(parseInt(input.value, 10), e); else showInlineError('Please type a whole number.'); };
     input.addEventListener('keydown', (e) => { if (e.key === 'Enter') send(e); });
     box.append(input, el('button', { type: 'button', id: 'submit', onclick: send }, 'Submit'));
     setTimeout(() => input.focus(), 0);
-  } else if (kind === 'label' || kind === 'label-set') {
+  } else if (w.kind === 'pick-label' || w.kind === 'pick-labels') {
     const chosen = new Set();
     s.labels.forEach((l) => {
       const hit = el('button', { type: 'button', class: 'hit', 'data-label': l.label, title: l.label });
@@ -211,7 +213,7 @@ function answerControls(s, stage, submit) {
       Object.assign(hit.style, { left: x - size / 2 + 'px', top: y - size / 2 + 'px', width: size + 'px', height: size + 'px' });
       const button = el('button', { type: 'button', class: 'label', 'data-label': l.label }, l.label);
       const pick = (e) => {
-        if (kind === 'label') return submit(l.label, e);
+        if (w.kind === 'pick-label') return submit(l.label, e);
         if (chosen.has(l.label)) chosen.delete(l.label); else chosen.add(l.label);
         hit.classList.toggle('selected', chosen.has(l.label));
         button.classList.toggle('selected', chosen.has(l.label));
@@ -221,12 +223,76 @@ function answerControls(s, stage, submit) {
       stage.append(hit);
       box.append(button);
     });
-    if (kind === 'label-set') box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(Array.from(chosen), e) }, 'Done'));
-  } else if (kind === 'letter') {
-    s.letters.forEach((l) => box.append(el('button', { type: 'button', class: 'letter', 'data-letter': l, onclick: (e) => submit(l, e) }, l)));
-    onKey((e) => { const k = e.key.toUpperCase(); if (s.letters.includes(k)) submit(k, e); });
+    if (w.kind === 'pick-labels') box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(Array.from(chosen), e) }, 'Done'));
+  } else if (w.kind === 'buttons') {
+    w.buttons.forEach((l) => box.append(el('button', { type: 'button', class: 'letter', 'data-letter': l, onclick: (e) => submit(l, e) }, l)));
+    onKey((e) => { const k = e.key.toUpperCase(); if (w.buttons.includes(k)) submit(k, e); });
+  } else if (w.kind === 'gauge') {
+    const g = gauge(s, stage);
+    box.append(el('button', { type: 'button', id: 'submit', onclick: (e) => submit(g.setting(), e) }, 'Done'));
+    onKey((e) => { if (e.key === 'Enter') submit(g.setting(), e); else g.key(e); });
   }
   return box;
+}
+
+// The gauge figure over the picture (tasks/gauge_frame.hpp): a disk of radius R seen at slant σ and
+// tilt τ is an ellipse of axes R and R cos σ, the short one along τ, with its stick to R sin σ (cos τ,
+// −sin τ). Pressing or dragging on the picture points the stick at the pointer; the arrow keys turn
+// it (up/down: slant ± 2°, left/right: tilt ± 5°). Every change is drawn at once; the orientation
+// sent is the one shown.
+function gauge(s, stage) {
+  const w = s.widget.gauge;
+  let slant = w.start[0], tilt = w.start[1], held = false;
+  const canvas = el('canvas', { id: 'gauge', class: 'gauge' });
+  stage.append(canvas);
+  stage.classList.add('gauge-stage');
+  const img = stage.querySelector('img');
+  const scale = () => img.clientWidth / s.image.width;  // CSS px per stimulus pixel
+  const draw = () => {
+    const k = scale(), dpr = devicePixelRatio;
+    canvas.width = Math.round(img.clientWidth * dpr);
+    canvas.height = Math.round(img.clientHeight * dpr);
+    canvas.style.width = img.clientWidth + 'px';
+    canvas.style.height = img.clientHeight + 'px';
+    const c = canvas.getContext('2d');
+    c.setTransform(dpr, 0, 0, dpr, 0, 0);
+    c.clearRect(0, 0, canvas.width, canvas.height);
+    const x = w.x * k, y = w.y * k, r = w.radius * k, sr = slant * Math.PI / 180, tr = tilt * Math.PI / 180;
+    [['#fff', 3.6], ['#c81e1e', 1.8]].forEach(([color, width]) => {
+      c.strokeStyle = color;
+      c.lineWidth = width;
+      c.beginPath();
+      c.ellipse(x, y, r * Math.cos(sr) + 0.01, r, -tr, 0, 2 * Math.PI);
+      c.moveTo(x, y);
+      c.lineTo(x + r * Math.sin(sr) * Math.cos(tr), y - r * Math.sin(sr) * Math.sin(tr));
+      c.stroke();
+    });
+    stage.dataset.slant = slant.toFixed(3);
+    stage.dataset.tilt = tilt.toFixed(3);
+  };
+  const toward = (ev) => {
+    const box = img.getBoundingClientRect(), k = scale();
+    const dx = (ev.clientX - box.left - w.x * k) / (w.radius * k), dy = -(ev.clientY - box.top - w.y * k) / (w.radius * k);
+    slant = Math.asin(Math.min(Math.hypot(dx, dy), Math.sin(85 * Math.PI / 180))) * 180 / Math.PI;
+    tilt = (Math.atan2(dy, dx) * 180 / Math.PI + 360) % 360;
+    draw();
+  };
+  stage.addEventListener('pointerdown', (ev) => { held = true; stage.setPointerCapture(ev.pointerId); toward(ev); ev.preventDefault(); });
+  stage.addEventListener('pointermove', (ev) => { if (held) toward(ev); });
+  stage.addEventListener('pointerup', () => { held = false; });
+  if (img.complete) draw(); else img.addEventListener('load', draw);
+  addEventListener('resize', draw);
+  return {
+    setting: () => ({ slant, tilt }),
+    key: (e) => {
+      const turns = { ArrowUp: [2, 0], ArrowDown: [-2, 0], ArrowLeft: [0, 5], ArrowRight: [0, -5] }[e.key];
+      if (!turns) return;
+      slant = Math.min(85, Math.max(0, slant + turns[0]));
+      tilt = ((tilt + turns[1]) % 360 + 360) % 360;
+      e.preventDefault();
+      draw();
+    },
+  };
 }
 
 function floorPlan(s, submit) {
@@ -264,18 +330,8 @@ function turntable(s, stage, img) {
   return src(a, e);
 }
 
-// How to answer with the mouse or keys (the server's format text describes typed answers).
-function hint(s) {
-  switch (s.answer_kind) {
-    case 'label': return 'Click the marked point on the picture (or its button below).';
-    case 'label-set': return 'Click every marked point you choose (on the picture or below; click again to undo), then Done.';
-    case 'floor-point': return 'Click the place on the floor plan.';
-    case 'letter': return 'Click the letter (or press its key).';
-    case 'layer-number': return 'Type the layer number (1 is the front surface) and press Enter.';
-    case 'count': return 'Type the number and press Enter.';
-    default: return s.format + ' — type it and press Enter.';
-  }
-}
+// How to answer, in the words of the question's answer form (sent by the server).
+function hint(s) { return s.hint; }
 
 // After a refused answer the trial takes answers again: the number box is focused with its text
 // selected, so the corrected answer is simply typed over it.

@@ -1,4 +1,4 @@
-#include "tasks/surface_point.hpp"
+#include "tasks/nearest_point/surface_point.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "tasks/geodesic_distances.hpp"
+#include "tasks/nearest_point/geodesic_distances.hpp"
 
 #include <algorithm>
 #include <limits>

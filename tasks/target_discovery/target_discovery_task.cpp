@@ -1,8 +1,8 @@
-#include "tasks/target_discovery_task.hpp"
+#include "tasks/target_discovery/target_discovery_task.hpp"
 
 #include <stdexcept>
 
-#include "tasks/counting_task.hpp"
+#include "tasks/counting/counting_task.hpp"
 #include "tasks/probe_helpers.hpp"
 #include "tasks/scene_targets.hpp"
 

@@ -1,5 +1,5 @@
 // The choice of NearestPointTask's candidates (nearest_point_candidates.hpp).
-#include "tasks/nearest_point_candidates.hpp"
+#include "tasks/nearest_point/nearest_point_candidates.hpp"
 
 #include <algorithm>
 

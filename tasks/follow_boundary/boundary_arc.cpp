@@ -1,4 +1,4 @@
-#include "tasks/boundary_arc.hpp"
+#include "tasks/follow_boundary/boundary_arc.hpp"
 
 #include <cmath>
 

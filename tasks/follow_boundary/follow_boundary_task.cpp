@@ -1,4 +1,4 @@
-#include "tasks/follow_boundary_task.hpp"
+#include "tasks/follow_boundary/follow_boundary_task.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -7,8 +7,8 @@
 #include <stdexcept>
 
 #include "core/seeded_random.hpp"
-#include "tasks/boundary_arc.hpp"
-#include "tasks/boundary_loops.hpp"
+#include "tasks/follow_boundary/boundary_arc.hpp"
+#include "tasks/follow_boundary/boundary_loops.hpp"
 #include "tasks/probe_helpers.hpp"
 
 namespace tlab::tasks {

@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "core/seeded_random.hpp"
-#include "tasks/surface_point.hpp"
+#include "tasks/nearest_point/surface_point.hpp"
 
 namespace tlab::tasks::nearest {
 

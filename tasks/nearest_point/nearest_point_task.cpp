@@ -1,4 +1,4 @@
-#include "tasks/nearest_point_task.hpp"
+#include "tasks/nearest_point/nearest_point_task.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "core/seeded_random.hpp"
-#include "tasks/geodesic_distances.hpp"
-#include "tasks/nearest_point_candidates.hpp"
+#include "tasks/nearest_point/geodesic_distances.hpp"
+#include "tasks/nearest_point/nearest_point_candidates.hpp"
 #include "tasks/probe_helpers.hpp"
 
 namespace tlab::tasks {

@@ -1,12 +1,12 @@
-#include "tasks/layer_index_task.hpp"
+#include "tasks/layer_index/layer_index_task.hpp"
 
 #include <algorithm>
 
 #include "core/seeded_random.hpp"
-#include "tasks/layer_ground_truth.hpp"
+#include "tasks/layer_index/layer_ground_truth.hpp"
 #include "tasks/probe_helpers.hpp"
 #include "tasks/ray_layer_caster.hpp"
-#include "tasks/silhouette_edges.hpp"
+#include "tasks/layer_index/silhouette_edges.hpp"
 
 namespace tlab::tasks {
 

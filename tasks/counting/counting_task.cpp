@@ -1,4 +1,4 @@
-#include "tasks/counting_task.hpp"
+#include "tasks/counting/counting_task.hpp"
 
 #include <stdexcept>
 

@@ -15,7 +15,7 @@
 #include <optional>
 #include <vector>
 
-#include "tasks/surface_point.hpp"
+#include "tasks/nearest_point/surface_point.hpp"
 #include "tasks/welded_mesh.hpp"
 
 namespace tlab::tasks {

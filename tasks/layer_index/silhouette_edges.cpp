@@ -1,4 +1,4 @@
-#include "tasks/silhouette_edges.hpp"
+#include "tasks/layer_index/silhouette_edges.hpp"
 
 #include "renderer/scene/mesh_welding.hpp"
 

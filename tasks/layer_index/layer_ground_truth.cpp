@@ -1,4 +1,4 @@
-#include "tasks/layer_ground_truth.hpp"
+#include "tasks/layer_index/layer_ground_truth.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "tasks/boundary_loops.hpp"
+#include "tasks/follow_boundary/boundary_loops.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include "tasks/pattern_task.hpp"
+#include "tasks/pattern/pattern_task.hpp"
 
 #include <stdexcept>
 
-#include "tasks/counting_task.hpp"
+#include "tasks/counting/counting_task.hpp"
 #include "tasks/letter_patterns.hpp"
 #include "tasks/probe_helpers.hpp"
 #include "tasks/scene_targets.hpp"
