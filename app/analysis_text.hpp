@@ -2,7 +2,7 @@
 // The results of a study's planned analysis as a plain-text table (tlab analyze, tlab demo).
 #include <string>
 
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 
 namespace tlab::app {
 

@@ -15,7 +15,7 @@
 #include "analysis/text_table.hpp"
 #include "app/analysis_text.hpp"
 #include "app/commands.hpp"
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 #include "study/store/open_store.hpp"
 
 namespace tlab::app {

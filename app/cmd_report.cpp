@@ -15,9 +15,9 @@
 #include "analysis/report_html.hpp"
 #include "analysis/report_markdown.hpp"
 #include "app/commands.hpp"
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 #include "study/store/open_store.hpp"
-#include "study/store/study_record_tables.hpp"
+#include "study/analyze/study_record_tables.hpp"
 
 namespace tlab::app {
 

@@ -9,9 +9,9 @@
 #include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
 #include "study/design/experiment_file.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "study/run/trial_runner.hpp"
-#include "study/run/window_responder.hpp"
+#include "study/window/window_responder.hpp"
 #include "study/store/open_store.hpp"
 
 namespace tlab::app {

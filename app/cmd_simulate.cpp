@@ -18,7 +18,7 @@
 #include "study/design/experiment_file.hpp"
 #include "study/design/stimulus_size.hpp"
 #include "study/simulate/observer_calibration.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "study/simulate/power_analysis.hpp"
 #include "study/simulate/study_simulation.hpp"
 #include "study/store/open_store.hpp"

@@ -2,8 +2,8 @@
 // Fill as in Carnecky Alg. 1: a global fragment counter hands out pool cells, and each pixel's
 // list is linked through an atomic exchange of its head. Fragments beyond the pool's capacity
 // are counted but dropped; the host then grows the pool and re-renders (Sec. 4.2).
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) buffer ListHead { uint listHead[]; };
 layout(std430, binding = BIND_LIST_NEXT) writeonly buffer ListNext { uint listNext[]; };

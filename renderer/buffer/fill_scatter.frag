@@ -1,8 +1,8 @@
 #version 450 core
 // Fill, second half (scatter pass): each fragment takes the next slot of its pixel's contiguous
 // range [pixelHead, pixelHead + pixelCount) and stores its properties there.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) buffer PixelCursor { uint pixelCursor[]; };
 layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };

@@ -7,8 +7,8 @@
 // slots only records how many it had (overflowMax); the host then falls back to the scatter
 // pass, whose prefix sum these exact counts already give. Either way the sort pass receives
 // every fragment, so the sorted buffer is the same.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_COUNTERS) buffer Counters { uint fragCount; uint total; uint overflowMax; };
 layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };

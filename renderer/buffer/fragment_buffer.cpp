@@ -11,7 +11,7 @@ namespace tlab::render {
 
 namespace {
 
-// Binding points of buffer/fragment_layout.glsl.
+// Binding points of frame/fragment_layout.glsl.
 enum Binding : GLuint {
   kPixelCount = 0, kPixelHead = 1, kPixelCursor = 2, kListNext = 3, kCounters = 4,
   kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7,

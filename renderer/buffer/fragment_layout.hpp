@@ -42,7 +42,7 @@ struct FragmentLayout {
   std::vector<std::string> propertyNames() const;
 };
 
-// The host-side inverse of encodeNormal in buffer/fragment_layout.glsl.
+// The host-side inverse of encodeNormal in frame/fragment_layout.glsl.
 glm::vec3 decodeNormal(std::uint32_t word);
 
 }  // namespace tlab::render

@@ -2,8 +2,8 @@
 // Exclusive prefix sum of the per-pixel fragment counts → pixelHead (Carnecky Sec. 4.3: each
 // pixel's fragments occupy one contiguous block). Three phases (TLAB_PHASE 1, 2, 3): block sums,
 // a scan of the block sums, then each block's running sum.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_LIST_NEXT) buffer BlockSums { uint blockSum[]; };

@@ -4,8 +4,8 @@
 // broken by the global triangle index, so the order never depends on thread scheduling.
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
 // TLAB_SLOTS: they sit in uSlots slots (buffer/fill_slots.frag): the i-th at i * uPixels + pixel.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint listHead[]; };

@@ -3,8 +3,8 @@
 //   c ← c + T·α·c_i,  T ← T·(1 − α),  and finally c ← c + T·c_background.
 // The per-fragment opacity comes from TLAB_ALPHA_SOURCE: 0 = the uniform uAlpha (style
 // `constant`); later styles provide their own per-fragment α.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

@@ -5,7 +5,7 @@
 //                   1: c_i × 2·tf1(κ) (mean-curvature shading), α constant;
 //                   2: c_i × 2·tf1(κ), α = tf2(|κ|, depth) (mean-curvature transparency).
 #include "kbuffer/kbuffer_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_KB_Z) readonly buffer Z { uint z[]; };
 layout(std430, binding = BIND_KB_DATA) readonly buffer Data { uvec2 data[]; };
 #if TLAB_STYLIZATION > 0

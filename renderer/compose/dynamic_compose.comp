@@ -13,9 +13,9 @@
 // (R2, unlimited depth).
 // Active mode: everything above happens only inside the lens (a disc at uLens.xy with radius
 // uLens.z pixels, 1 pixel anti-aliased edge); outside it the nearest surface is drawn opaque.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
+#include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

@@ -3,9 +3,9 @@
 // target among the surfaces dynamic transparency draws (compose/dynamic_surfaces.glsl), as
 // 1 + its object id (0: none) and its eye-space depth. The host turns this into the
 // low-resolution alpha mask (ops/alpha_mask).
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
+#include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

@@ -9,7 +9,7 @@
 //  4. layer control (Sec. III.6): with uMaxLayers = L > 0 only the nearest L + 1 drawn surfaces
 //     are kept, and the deepest of them is opaque: at most L layers are uncovered.
 // The kept surfaces end up in gSurface[0 .. gSurfaceCount), back to front.
-// Needs buffer/fragment_layout.glsl, buffer/surface_shading.glsl and the sorted-list bindings.
+// Needs frame/fragment_layout.glsl, frame/surface_shading.glsl and the sorted-list bindings.
 layout(std430, binding = 12) readonly buffer DrawRank { uint drawRank[]; };
 uniform int uMaxLayers;         // 0: unlimited (R2)
 uniform int uAllAreTargets;     // 1: every object not flagged distractor or impenetrable is a target

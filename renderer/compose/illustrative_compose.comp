@@ -1,15 +1,15 @@
 #version 450 core
 // The IRIS local styles on the illustration buffer: every fragment of each pixel's sorted list is
-// shaded by styles/illustrative_shading.glsl, faded to the silhouette colour by a Sobel filter on
+// shaded by frame/illustrative_shading.glsl, faded to the silhouette colour by a Sobel filter on
 // its own layer (the same layer index in the 3x3 neighbour pixels, as depth peeling sees it,
 // IRIS Sec. 5.1), and blended front to back with float accumulation. Screen-space derivatives of
 // n_z and (s, t) (IRIS Eqs. 2-4) are the rasterizer's dFdx/dFdy stored at fill time — the one
 // definition depth peeling (peel/peel_layer.frag) uses too, so the two renderers agree.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
-#include "buffer/surface_shading.glsl"
-#include "styles/illustrative_shading.glsl"
-#include "ops/sobel_silhouette.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
+#include "frame/surface_shading.glsl"
+#include "frame/illustrative_shading.glsl"
+#include "frame/sobel_silhouette.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

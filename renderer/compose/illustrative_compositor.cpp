@@ -8,7 +8,7 @@
 namespace tlab::render {
 
 namespace {
-constexpr GLuint kBindOutput = 9;  // BIND_OUTPUT in buffer/fragment_layout.glsl
+constexpr GLuint kBindOutput = 9;  // BIND_OUTPUT in frame/fragment_layout.glsl
 }  // namespace
 
 void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settings) {

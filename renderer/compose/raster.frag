@@ -1,8 +1,8 @@
 #version 450 core
 // Styles `opaque` (z-buffered nearest surface) and `unsorted` (plain blending with uAlpha): the
 // surface colour straight into the colour target; no fragment lists.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
 in vec3 vViewPosition;
 in vec3 vViewNormal;
 in vec2 vST;

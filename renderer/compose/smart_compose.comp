@@ -3,8 +3,8 @@
 // back, after the profile modifiers of Eqs. 10-11 are applied to β and γ:
 //   α̂_i = (1 − γ_i)·(α_i + (1 − α_i)·β_i),  c ← c + T·α̂_i·c_i,  T ← T·(1 − α̂_i),
 //   and finally c ← c + T·c_background.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };

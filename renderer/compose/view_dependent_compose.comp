@@ -12,10 +12,10 @@
 // opaque surface behind F1 with the user's w = α_opaque, else the background with α_background;
 // by default both weights are divided by α_T + w where that exceeds 1 (no wash-out).
 // An opaque surface in front of every transparent one is drawn as it is.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
-#include "buffer/surface_shading.glsl"
-#include "styles/illustrative_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
+#include "frame/surface_shading.glsl"
+#include "frame/illustrative_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

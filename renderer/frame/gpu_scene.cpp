@@ -7,7 +7,7 @@
 namespace tlab::render {
 
 namespace {
-constexpr GLuint kBindObjects = 8;  // BIND_OBJECTS in buffer/fragment_layout.glsl
+constexpr GLuint kBindObjects = 8;  // BIND_OBJECTS in frame/fragment_layout.glsl
 
 struct ObjectRecord {
   glm::vec4 front, back;

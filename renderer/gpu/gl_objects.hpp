@@ -79,11 +79,11 @@ class Buffer {
   std::size_t bytes_ = 0;
 };
 
-// local_size_x of every linear compute pass (buffer/compute_index.glsl).
+// local_size_x of every linear compute pass (frame/compute_index.glsl).
 constexpr std::size_t kComputeGroupSize = 64;
 
 // Dispatches enough kComputeGroupSize-wide compute groups for `items` invocations as a 2-D grid that stays
-// under the 65535-groups-per-dimension limit; shaders index with buffer/compute_index.glsl.
+// under the 65535-groups-per-dimension limit; shaders index with frame/compute_index.glsl.
 void dispatchLinear(std::size_t items);
 
 }  // namespace tlab::gpu

@@ -6,9 +6,9 @@
 // kbuffer::bestCandidate on the CPU.
 //  default: only the shape's bucket of q is scanned (B lookup, H(b) = b mod k);
 //  TLAB_BRUTE_FORCE: every fragment of q is visited and filtered by shape (illustration buffer).
-#include "buffer/fragment_layout.glsl"
+#include "frame/fragment_layout.glsl"
 #include "kbuffer/kbuffer_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_KB_Z) readonly buffer Z { uint z[]; };
 layout(std430, binding = BIND_KB_TABLE) readonly buffer Table { uint table[]; };
 layout(std430, binding = BIND_KB_DATA) readonly buffer Data { uvec2 data[]; };

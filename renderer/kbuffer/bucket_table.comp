@@ -4,7 +4,7 @@
 // each run of one shape becomes a bucket (b, i, j) stored in the pixel's hash table B at
 // H(b) = b mod k, probing linearly past occupied slots.
 #include "kbuffer/kbuffer_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_KB_Z) buffer Z { uint z[]; };
 layout(std430, binding = BIND_KB_TABLE) writeonly buffer Table { uint table[]; };
 uniform uint uPixels;

@@ -4,8 +4,8 @@
 // search on the key and stores its shaded colour and packed normal in D at that index;
 // fragments not among the k nearest find no index and are dropped. Without TLAB_BUCKETS the
 // search spans the pixel's whole depth-ordered list (a plain dual-pass k-buffer).
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
 #include "kbuffer/kbuffer_layout.glsl"
 layout(std430, binding = BIND_KB_Z) readonly buffer Z { uint z[]; };
 layout(std430, binding = BIND_KB_TABLE) readonly buffer Table { uint table[]; };

@@ -7,8 +7,8 @@
 //     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
 //     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
 //     boundary conditions of Sec. 5.3 on β and γ with their b flags.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };

@@ -12,7 +12,7 @@
 //  TLAB_SKIP_ALPHA: α is uniform (Eq. 4) and diffusion cannot change it: only the fused spreading.
 //  TLAB_FUSED_SPREAD: the same invocation also spreads β and γ by Eq. 9 (max-propagation), so a
 //    step reads each fragment's links once (the first α dispatch of a step does this).
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
 #ifndef TLAB_SKIP_ALPHA

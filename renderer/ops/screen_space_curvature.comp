@@ -7,9 +7,9 @@
 // down, up). Lengths are measured in units of s·r (r the scene's bounding radius, s the style's
 // `scale`), so κ does not change with the image size or the scene's units; κ = tanh(κ1 + κ2)
 // ∈ (−1, 1); κ = −1 when a neighbour is missing (object boundaries and creases).
-#include "buffer/fragment_layout.glsl"
+#include "frame/fragment_layout.glsl"
 #include "kbuffer/kbuffer_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_KB_Z) readonly buffer Z { uint z[]; };
 layout(std430, binding = BIND_KB_DATA) readonly buffer Data { uvec2 data[]; };
 layout(std430, binding = BIND_KB_LINKS) readonly buffer Links { uint links[]; };

@@ -4,7 +4,7 @@
 //    the graph distance to the nearest boundary.
 //  otherwise: the explicit diffusion step of Eq. 8 with λ_u (the host sub-steps λ_u > 1/4).
 // Fragments fixed by a boundary condition (b_u = 0) keep their value.
-#include "buffer/compute_index.glsl"
+#include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
 layout(std430, binding = BIND_BETA_IN) readonly buffer FieldIn { float u[]; };

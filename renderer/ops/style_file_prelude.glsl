@@ -2,8 +2,8 @@
 // user's file, and a stage's main()). Fragments are read from the sorted illustration buffer;
 // the Fragment struct holds exactly the properties the style declared (TLAB_HAS_*), so using an
 // undeclared one is a compile error on the user's line.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/compute_index.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };

@@ -4,7 +4,7 @@
 // colouring, Phong or Gooch shading, adaptive stripe patterns (Sec. 4.1, Eqs. 3-5) and Sobel
 // silhouettes (Sec. 5.1). One set of settings drives both ways of compositing: the illustration
 // buffer (compose/illustrative_compose.comp) and depth peeling (peel/peel_layer.frag); the
-// GLSL side is styles/illustrative_shading.glsl.
+// GLSL side is frame/illustrative_shading.glsl.
 #include <cstdint>
 #include <vector>
 
@@ -56,7 +56,7 @@ struct IllustrativeSettings {
   // The `constant` style: one α, the common `lighting` choice, nothing else.
   static IllustrativeSettings constant(float alpha, Shading shading);
 
-  // Sets every uniform of styles/illustrative_shading.glsl and ops/sobel_silhouette.glsl.
+  // Sets every uniform of frame/illustrative_shading.glsl and frame/sobel_silhouette.glsl.
   void setUniforms(const gpu::ShaderProgram& program, int width, int height) const;
 };
 

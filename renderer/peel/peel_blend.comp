@@ -2,8 +2,8 @@
 // Blend stage of the depth-peeling loop (IRIS Sec. 5.1): Sobel silhouettes on this layer's
 // normal and depth images, then front-to-back ("under") blending into a float accumulator
 // (c, T): c ← c + T·α·c_i, T ← T·(1 − α).
-#include "buffer/compute_index.glsl"
-#include "ops/sobel_silhouette.glsl"
+#include "frame/compute_index.glsl"
+#include "frame/sobel_silhouette.glsl"
 layout(std430, binding = 9) buffer Accumulator { vec4 accum[]; };
 layout(binding = 0) uniform sampler2D uLayerColor;
 layout(binding = 1) uniform sampler2D uLayerNormalDepth;

@@ -1,13 +1,13 @@
 #version 450 core
 // Peel stage of the depth-peeling loop (IRIS Sec. 5.1, after Bavoil and Myers): keeps only
 // fragments behind the previous layer's depth; the depth test then selects the nearest of them.
-// The layer's fragment is fully shaded here (styles/illustrative_shading.glsl) with dFdx/dFdy for
+// The layer's fragment is fully shaded here (frame/illustrative_shading.glsl) with dFdx/dFdy for
 // the derivatives of IRIS Eqs. 2-4 (the illustration buffer stores the same dFdx/dFdy at fill
 // time); its view normal and eye depth go to a second target for the
 // Sobel silhouettes of the blend stage.
-#include "buffer/fragment_layout.glsl"
-#include "buffer/surface_shading.glsl"
-#include "styles/illustrative_shading.glsl"
+#include "frame/fragment_layout.glsl"
+#include "frame/surface_shading.glsl"
+#include "frame/illustrative_shading.glsl"
 in vec3 vViewPosition;
 in vec3 vViewNormal;
 in vec2 vST;

@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "study/design/navigation.hpp"
 #include "study/design/participant_texts.hpp"
-#include "study/run/camera_navigator.hpp"
 
 namespace tlab::study {
 
@@ -152,7 +152,7 @@ struct AnalysisSpec {
   std::string correction = "none";  // p adjustment of the pairwise tests: holm, bonferroni, hochberg, BH, BY, none
 };
 
-// The simulated observer (study/simulate/simulated_observer.hpp documents every parameter).
+// The simulated observer (study/run/simulated_observer.hpp documents every parameter).
 struct ObserverParams {
   double contrastReference = 0.15;   // local RMS contrast at which a probe counts as fully visible
   double sensitivity = 4.0;          // slope of the logistic in visibility

@@ -6,14 +6,9 @@
 #include <string>
 
 #include "renderer/scene/camera.hpp"
+#include "study/design/navigation.hpp"
 
 namespace tlab::study {
-
-enum class Navigation { None, Orbit, Walk };
-
-// "none", "orbit", "walk"; throws std::invalid_argument naming the value.
-Navigation parseNavigation(const std::string& text);
-const char* navigationName(Navigation navigation);
 
 class CameraNavigator {
  public:

@@ -1,6 +1,6 @@
 #include "study/run/stimulus_library.hpp"
 
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 #include "tasks/answer_form.hpp"
 
 #include <filesystem>

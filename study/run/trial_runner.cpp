@@ -9,7 +9,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 #include "study/run/session_wording.hpp"
 #include "study/design/form_field.hpp"
 #include "study/design/session_plan.hpp"

@@ -13,7 +13,7 @@
 #include "analysis/summary_likelihood.hpp"
 #include "study/design/counterbalancing.hpp"
 #include "study/design/session_plan.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "tasks/task_registry.hpp"
 
 namespace tlab::study {

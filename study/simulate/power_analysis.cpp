@@ -4,7 +4,7 @@
 #include <map>
 
 #include "study/design/order_permutations.hpp"
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 #include "study/simulate/study_simulation.hpp"
 #include "study/store/open_store.hpp"
 

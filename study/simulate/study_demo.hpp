@@ -11,7 +11,7 @@
 
 #include "analysis/text_table.hpp"
 #include "renderer/scene/builtin_scenes.hpp"
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 
 namespace tlab::study {
 

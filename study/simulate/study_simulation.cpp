@@ -3,7 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 
 namespace tlab::study {
 

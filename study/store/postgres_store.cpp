@@ -7,7 +7,7 @@
 #include "study/store/postgres_store.hpp"
 
 #include "core/sha256.hpp"
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 #include "study/store/postgres_connection.hpp"
 #include "study/store/postgres_schema.hpp"
 #include "study/store/store_records.hpp"

@@ -16,7 +16,7 @@
 #include <unistd.h>
 
 #include "core/sha256.hpp"
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 #include "study/store/schema_migrations.hpp"
 #include "study/store/store_records.hpp"
 #include "study/store/store_sql.hpp"

@@ -2,7 +2,7 @@
 // with a seeded random generator — at start-up, during stimulus preparation, right after a
 // stimulus onset was committed, inside a response transaction before its COMMIT, and after K
 // acknowledged responses — and resumed each time. The process stops itself at the chosen fault
-// point (TLAB_STOP_AT, study/run/fault_point.hpp) and is killed there, so every kill lands where it
+// point (TLAB_STOP_AT, study/store/fault_point.hpp) and is killed there, so every kill lands where it
 // was meant to on any machine, however fast. No acknowledged response (printed only after its transaction committed)
 // may be lost or duplicated, every trial ends with exactly one response, the responses follow the
 // planned order, and the final data equal those of an uninterrupted run with the same seeds.

@@ -4,7 +4,7 @@
 
 #include "renderer/scene/builtin_scenes.hpp"
 #include "study/run/floor_plan.hpp"
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 
 using namespace tlab::study;
 

@@ -3,8 +3,8 @@
 // its answers parse as the task's answer kind, and it is deterministic per participant and trial.
 #include <gtest/gtest.h>
 
-#include "study/simulate/image_contrast.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/image_contrast.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "tasks/answer_parser.hpp"
 
 using namespace tlab::study;

@@ -13,7 +13,7 @@
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/stimulus_scenes.hpp"
 #include "study/run/floor_plan.hpp"
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 #include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/support/run_command.hpp"

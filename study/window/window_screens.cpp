@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 
 #include "renderer/gpu/gl.hpp"
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 #include "study/design/form_field.hpp"
-#include "study/simulate/simulated_observer.hpp"
-#include "study/run/window_responder.hpp"
-#include "study/run/window_style.hpp"
+#include "study/run/simulated_observer.hpp"
+#include "study/window/window_responder.hpp"
+#include "study/window/window_style.hpp"
 
 namespace tlab::study {
 

@@ -4,7 +4,7 @@
 //
 // Per question (parameters in ObserverParams, [observer] in the experiment file):
 //   c   = mean local RMS luminance contrast at the marked points (targets for search tasks), over
-//         a 9×9 window of the unmarked rendering (study/simulate/image_contrast.hpp)
+//         a 9×9 window of the unmarked rendering (study/run/image_contrast.hpp)
 //   v   = min(1, c / contrast_reference) · (1 − layer_penalty·(layers in front))₊
 //         (layers in front: the answer form's layersInFront — layer-index, gauge figure on layer k)
 //   s   = participant skill, exp(skill_spread · z_participant), fixed per participant

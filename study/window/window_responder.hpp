@@ -20,7 +20,7 @@
 
 #include "renderer/gpu/window_context.hpp"
 #include "study/run/responder.hpp"
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 #include "study/run/text_painter.hpp"
 
 namespace tlab::study {

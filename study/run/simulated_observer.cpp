@@ -1,4 +1,4 @@
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -8,7 +8,7 @@
 
 #include "core/seeded_random.hpp"
 #include "tasks/answer_form.hpp"
-#include "study/simulate/image_contrast.hpp"
+#include "study/run/image_contrast.hpp"
 #include "study/design/order_permutations.hpp"
 
 namespace tlab::study {

@@ -1,4 +1,4 @@
-#include "study/store/study_mixed_model.hpp"
+#include "study/analyze/study_mixed_model.hpp"
 
 #include <algorithm>
 #include <set>

@@ -9,7 +9,7 @@
 //    environment map: diffuse irradiance of that gradient in closed form (hemisphere lighting),
 //    specular as the sky radiance along the reflection direction, widened toward the irradiance by
 //    the roughness, times Karis' analytic environment-BRDF fit (split sum, 2014).
-// Included by buffer/surface_shading.glsl; pure functions of (base colour, n, v).
+// Included by frame/surface_shading.glsl; pure functions of (base colour, n, v).
 const float kPbrPi = 3.14159265358979;
 const float kPbrRoughness = 0.5;
 const vec3 kPbrKeyDirection = vec3(-0.4, 0.8, 0.6);  // normalised where used

@@ -1,4 +1,4 @@
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 
 #include <algorithm>
 #include <cmath>

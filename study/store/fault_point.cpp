@@ -1,4 +1,4 @@
-#include "study/run/fault_point.hpp"
+#include "study/store/fault_point.hpp"
 
 #include <csignal>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "study/run/gauge_drawing.hpp"
+#include "study/window/gauge_drawing.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,11 +1,11 @@
-#include "study/run/trial_screen.hpp"
+#include "study/window/trial_screen.hpp"
 
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 
-#include "study/run/window_style.hpp"
-#include "study/run/gauge_drawing.hpp"
+#include "study/window/window_style.hpp"
+#include "study/window/gauge_drawing.hpp"
 
 namespace tlab::study {
 

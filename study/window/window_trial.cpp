@@ -8,10 +8,10 @@
 #include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
-#include "study/run/trial_screen.hpp"
-#include "study/run/window_responder.hpp"
-#include "study/run/window_style.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/window/trial_screen.hpp"
+#include "study/window/window_responder.hpp"
+#include "study/window/window_style.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "tasks/answer_form.hpp"
 #include "tasks/answer_parser.hpp"
 

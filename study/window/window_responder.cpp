@@ -1,11 +1,11 @@
 // WindowResponder: the window and its input callbacks, frames presented, the autopilot's
 // scripted inputs, pauses and plain messages. Trials: window_trial.cpp; forms, consent, feedback
 // and breaks: window_screens.cpp.
-#include "study/run/window_responder.hpp"
+#include "study/window/window_responder.hpp"
 
 #include "study/run/live_view.hpp"
-#include "study/run/trial_screen.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/window/trial_screen.hpp"
+#include "study/run/simulated_observer.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include <GLFW/glfw3.h>
 #include <nlohmann/json.hpp>
 
-#include "study/run/window_style.hpp"
+#include "study/window/window_style.hpp"
 #include "tasks/answer_parser.hpp"
 #include "tasks/letter_patterns.hpp"
 

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "study/run/canvas.hpp"
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 #include "study/run/text_painter.hpp"
 
 namespace tlab::study {

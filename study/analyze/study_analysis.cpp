@@ -1,4 +1,4 @@
-#include "study/store/study_analysis.hpp"
+#include "study/analyze/study_analysis.hpp"
 
 #include <algorithm>
 #include <map>
@@ -9,8 +9,8 @@
 #include "analysis/p_adjust.hpp"
 #include "analysis/pairwise_tests.hpp"
 #include "analysis/r_moments.hpp"
-#include "study/store/study_mixed_model.hpp"
-#include "study/store/study_record_tables.hpp"
+#include "study/analyze/study_mixed_model.hpp"
+#include "study/analyze/study_record_tables.hpp"
 
 namespace tlab::study {
 

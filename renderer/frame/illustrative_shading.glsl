@@ -1,7 +1,7 @@
 // The local illustrative shading of IRIS (Hummel et al. 2010, Secs. 3-5), shared by the
 // illustration-buffer compositor and the depth-peeling layer shader: each caller fills a
 // SurfaceSample (with its own screen-space derivatives: neighbour links or dFdx/dFdy) and gets the
-// fragment's (c, α). Needs buffer/surface_shading.glsl (the object table) included first.
+// fragment's (c, α). Needs frame/surface_shading.glsl (the object table) included first.
 // Objects with Role::Opaque are IRIS's context geometry (Sec. 5): shaded alike, always opaque,
 // without view-dependent opacity, stripes or window, and masked out of the silhouettes.
 const float kPi = 3.14159265358979;
@@ -125,7 +125,7 @@ Shaded shadeIllustrative(SurfaceSample s) {
   if (dot(n, v) < 0.0) n = -n;  // two-sided lighting
   Shaded r = Shaded(base, vec3(0.0), 0.0);
   if (uShading == 1) {
-    r.diffuse = base * (0.25 + 0.75 * dot(n, v));  // as buffer/surface_shading.glsl
+    r.diffuse = base * (0.25 + 0.75 * dot(n, v));  // as frame/surface_shading.glsl
   } else if (uShading == 2) {
     // Phong with a headlight (l = v): ambient + diffuse, and a separate specular term.
     r.diffuse = base * (0.2 + 0.8 * dot(n, v));
@@ -140,7 +140,7 @@ Shaded shadeIllustrative(SurfaceSample s) {
     vec3 cool = vec3(0.0, 0.0, 0.4) + 0.2 * base, warm = vec3(0.4, 0.4, 0.0) + 0.6 * base;
     r.diffuse = t * warm + (1.0 - t) * cool;
   } else if (uShading == 4) {
-    r.diffuse = shadePhysical(base, n, v);  // buffer/physical_shading.glsl
+    r.diffuse = shadePhysical(base, n, v);  // frame/physical_shading.glsl
   }
   return r;
 }

@@ -16,7 +16,7 @@
 #include "study/run/canvas.hpp"
 #include "study/run/live_view.hpp"
 #include "study/run/responder.hpp"
-#include "study/run/screen_layout.hpp"
+#include "study/window/screen_layout.hpp"
 #include "study/run/text_painter.hpp"
 #include "tasks/answer_form.hpp"
 

@@ -1,7 +1,7 @@
 // Shading of a fragment before any transparency: the object's front or back colour, lit by a
-// headlight (two-sided diffuse plus ambient), physically based (buffer/physical_shading.glsl,
+// headlight (two-sided diffuse plus ambient), physically based (frame/physical_shading.glsl,
 // lighting=pbr) or unlit (lighting=none).
-#include "buffer/physical_shading.glsl"
+#include "frame/physical_shading.glsl"
 struct ObjectRecord {
   vec4 frontColor;
   vec4 backColor;

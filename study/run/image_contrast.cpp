@@ -1,4 +1,4 @@
-#include "study/simulate/image_contrast.hpp"
+#include "study/run/image_contrast.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // What a report of a study database shows besides the tests, read through the Store: who the
 // participants were, their information and questionnaire answers (Likert items: the ordinal
 // summary; choices: counts; numbers: descriptives; free text: listed), and the stimuli shown.
-#include "study/store/study_record_tables.hpp"
+#include "study/analyze/study_record_tables.hpp"
 
 #include <filesystem>
 #include <fstream>
@@ -11,7 +11,7 @@
 #include "analysis/descriptives.hpp"
 #include "analysis/likert_summary.hpp"
 #include "analysis/number_format.hpp"
-#include "study/simulate/simulated_observer.hpp"
+#include "study/run/simulated_observer.hpp"
 #include "study/store/timing_tables.hpp"
 
 namespace tlab::study {
