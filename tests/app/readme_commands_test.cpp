@@ -116,6 +116,8 @@ const std::map<std::string, Mapping>& mappings() {
       {"tlab task probe 'builtin:nested-spheres?n=3' --task gauge-figure --count 3 --json", {"tasks", ""}},
       {"tlab simulate examples/shape-depiction.toml --participants 8 --db shape.db", {"tasks", ""}},
       {"tlab analyze shape.db", {"tasks", ""}},
+      {"tlab task probe|check|list", {"tasks", "tlab task list"}},
+      {"tlab task check --json", {"tasks", "tlab task check 'builtin:nested-spheres?n=3' --task gauge-figure --question 1 --answer 0,0,1 --json"}},
       // Running a study: the commands.
       {"tlab design examples/carnecky2013.toml", {"study", ""}},
       {"tlab run EXPERIMENT.toml --participant P01 --db study.db [--fullscreen] [--resume]",
