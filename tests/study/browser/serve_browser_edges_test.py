@@ -123,8 +123,9 @@ def no_card(p, server):
     p.find("#accept").click()
     p.until(lambda: p.state()["kind"] == "calibration", "the size calibration screen")
     p.screenshot("calibration-no-card-offered")
+    seq = p.state()["seq"]  # read before the click: the next screen may come before a later read
     p.find("#no-card").click()
-    s = p.next_screen(p.state()["seq"])
+    s = p.next_screen(seq)
     check(s["kind"] == "message", f"the instructions expected after 'I have no card', got {s}")
 
 
