@@ -15,6 +15,12 @@ ProbePoint probePoint(const ViewGeometry& view, std::string label, std::string r
   return {std::move(label), std::move(role), world, view.project(world), object};
 }
 
+glm::dvec2 randomPixel(core::SeededRandom& random, int width, int height, double margin) {
+  const double x = margin + double(random.uniform()) * (width - 2.0 * margin);
+  const double y = margin + double(random.uniform()) * (height - 2.0 * margin);
+  return {x, y};
+}
+
 double nearestPixelDistance(glm::dvec2 pixel, const std::vector<glm::dvec2>& others) {
   double best = std::numeric_limits<double>::infinity();
   for (const auto& o : others) best = std::min(best, glm::length(o - pixel));

@@ -5,6 +5,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/seeded_random.hpp"
 #include "renderer/scene/scene.hpp"
 #include "tasks/question.hpp"
 #include "tasks/view_geometry.hpp"
@@ -17,6 +18,11 @@ std::vector<WeldedMesh> weldSceneObjects(const render::Scene& scene);
 
 // A ProbePoint with its pixel position in `view`.
 ProbePoint probePoint(const ViewGeometry& view, std::string label, std::string role, glm::dvec3 world, int object);
+
+// A continuous pixel position uniform over the image less a margin on every side; x is drawn before
+// y (two statements: the order of arguments in one call is not fixed by C++, seeds must give the same
+// probes with every compiler).
+glm::dvec2 randomPixel(core::SeededRandom& random, int width, int height, double margin);
 
 // The smallest pixel distance between `pixel` and any of `others` (infinity when empty).
 double nearestPixelDistance(glm::dvec2 pixel, const std::vector<glm::dvec2>& others);

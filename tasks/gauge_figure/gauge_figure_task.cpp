@@ -56,8 +56,7 @@ std::vector<Question> GaugeFigureTask::probe(const ProbeRequest& request) const 
   for (int q = 0; q < request.count; ++q) {
     bool found = false;
     for (int a = 0; a < attempts && !found; ++a) {
-      const glm::dvec2 pixel(margin + double(random.uniform()) * (request.width - 2.0 * margin),
-                             margin + double(random.uniform()) * (request.height - 2.0 * margin));
+      const glm::dvec2 pixel = randomPixel(random, request.width, request.height, margin);
       const double gap = nearestPixelDistance(pixel, taken);
       if (gap < separation) continue;
       const auto centre = surfaces.at(pixel, layer);

@@ -39,8 +39,7 @@ std::vector<Question> RelativeDepthTask::probe(const ProbeRequest& request) cons
   const SurfaceProbe surfaces(request.scene, view);
   core::SeededRandom random(request.seed);
   const auto candidate = [&](int layer) -> std::optional<std::pair<glm::dvec2, SurfaceSample>> {
-    const glm::dvec2 pixel(margin + double(random.uniform()) * (request.width - 2.0 * margin),
-                           margin + double(random.uniform()) * (request.height - 2.0 * margin));
+    const glm::dvec2 pixel = randomPixel(random, request.width, request.height, margin);
     const auto sample = surfaces.at(pixel, layer);
     if (!sample || !surfaces.continuity(*sample, pixel, footprint, maxSpread)) return std::nullopt;
     return std::make_pair(pixel, *sample);
