@@ -2,6 +2,7 @@
 // Parsers from typed answer text to values. Each error names what was expected and what was
 // given, so a bad `tlab task check --answer` or a bad response file is easy to fix.
 #include <cstdint>
+#include <map>
 #include <set>
 #include <stdexcept>
 #include <string>
@@ -13,9 +14,20 @@
 
 namespace tlab::tasks {
 
+// A refused answer. what() is the English message for logs and the command line; `key` (a key of
+// the participant text table's [refusal], study/design/texts/en.toml) and `args` say the same to a
+// participant in the experiment's language. An empty key: a refusal no participant's input can
+// cause (a hostile or broken client), said in English only.
 class AnswerFormatError : public std::invalid_argument {
  public:
-  using std::invalid_argument::invalid_argument;
+  explicit AnswerFormatError(const std::string& message, std::string key = "", std::map<std::string, std::string> args = {})
+      : std::invalid_argument(message), key_(std::move(key)), args_(std::move(args)) {}
+  const std::string& key() const { return key_; }
+  const std::map<std::string, std::string>& args() const { return args_; }
+
+ private:
+  std::string key_;
+  std::map<std::string, std::string> args_;
 };
 
 std::int64_t parseLayerNumber(const std::string& text);   // whole number >= 1

@@ -3,6 +3,7 @@
 // the exact ground truth, the kind of answer expected, the time limit, and the checks that made
 // the question unique and unambiguous when it was chosen.
 #include <cstdint>
+#include <map>
 #include <set>
 #include <string>
 #include <utility>
@@ -51,7 +52,12 @@ struct UniquenessCheck {
 struct Question {
   std::string task;
   int number = 1;                 // 1-based, in the order probe() produced it
-  std::string text;
+  std::string text;                // in English, as `tlab task probe` prints it
+  // The same words as a key of the participant text table (study/design/texts/en.toml's [question])
+  // with its {name} values: what front ends show participants, in the experiment's language.
+  // Formatting the key's English text with textArgs gives `text` (a test checks every task).
+  std::string textKey;
+  std::map<std::string, std::string> textArgs;
   AnswerKind answerKind = AnswerKind::Label;
   std::vector<ProbePoint> points;
   GroundTruth truth;

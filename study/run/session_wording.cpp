@@ -38,4 +38,14 @@ std::string breakText(const SessionPlan& plan, std::size_t done, const BreakSpec
   return spec.text + "\n\n" + left;
 }
 
+std::string questionWording(const tasks::Question& question, const ParticipantTexts& texts) {
+  return question.textKey.empty() || !texts.has(question.textKey) ? question.text : texts.format(question.textKey, question.textArgs);
+}
+
+std::string refusalWording(const tasks::AnswerFormatError& refusal, const ParticipantTexts& texts) {
+  if (!refusal.key().empty() && texts.has(refusal.key())) return texts.format(refusal.key(), refusal.args());
+  const std::string message = refusal.what();
+  return message.rfind("answer: ", 0) == 0 ? message.substr(8) : message;
+}
+
 }  // namespace tlab::study

@@ -8,6 +8,8 @@
 
 #include "study/design/experiment.hpp"
 #include "study/design/session_plan.hpp"
+#include "tasks/answer_parser.hpp"
+#include "tasks/question.hpp"
 
 namespace tlab::study {
 
@@ -24,5 +26,13 @@ std::string taskIntroduction(const SessionPlan& plan, std::size_t index, const s
 // The break's text followed by what is left after trial `done`: test trials, or blocks when the
 // breaks count blocks.
 std::string breakText(const SessionPlan& plan, std::size_t done, const BreakSpec& spec, const ParticipantTexts& texts);
+
+// A trial's question in the participant's language: the question's text key formatted with its
+// arguments (the [question] table), or its English text when the task gave no key.
+std::string questionWording(const tasks::Question& question, const ParticipantTexts& texts);
+
+// Why a typed answer was refused, in the participant's language when the refusal names a key of
+// the [refusal] table; its English message (without the "answer: " prefix) otherwise.
+std::string refusalWording(const tasks::AnswerFormatError& refusal, const ParticipantTexts& texts);
 
 }  // namespace tlab::study

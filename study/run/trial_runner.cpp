@@ -142,7 +142,7 @@ bool TrialRunner::runTrial(Session& s, std::size_t index) {
     const TaskSpec* spec = experiment_.task(plan.taskId);
     // Never the task's internal id: "Practice" or "Instructions" in the participants' language.
     const std::string& title = experiment_.texts.text(plan.phase == Phase::Training ? "title.practice" : "title.instructions");
-    const std::string& instructions = spec->instructions.empty() ? prepared.question.text : spec->instructions;
+    const std::string instructions = spec->instructions.empty() ? questionWording(prepared.question, experiment_.texts) : spec->instructions;
     if (!s.responder.showMessage(title, taskIntroduction(s.plan, index, instructions, experiment_.texts)))
       return false;
     s.lastTask = plan.taskId;
@@ -194,10 +194,12 @@ void TrialRunner::stopAfterStorageError(Session& s, const SessionResult& result,
 
 // After the session has started: consent (when not yet recorded) and participant information.
 std::optional<SessionOutcome> TrialRunner::openSession(Session& s, bool newcomer) {
+  storeEvents(s, std::nullopt);  // what came before the session (a newcomer's consent and size calibration): stored now
   if (experiment_.consent && !store_.hasConsent(s.participant.id)) {
     const auto accepted = newcomer ? std::optional<bool>(true) : s.responder.askConsent(participantTitle(), *experiment_.consent);
     if (!accepted) return SessionOutcome::Closed;
     store_.recordConsent(s.participant.id, s.session, *accepted);
+    storeEvents(s, std::nullopt);
     if (!*accepted) {
       store_.dropParticipant(experiment_.id, s.participant.participant, "declined consent");
       return SessionOutcome::Declined;

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 
+#include "study/run/session_wording.hpp"
 #include "study/serve/flow_pages.hpp"
 
 namespace tlab::study {
@@ -59,6 +60,7 @@ bool BrowserResponder::calibrate() {
 std::optional<Response> BrowserResponder::respond(const TrialView& view) {
   if (!calibrate()) return std::nullopt;
   Screen screen = trialScreen(view, images_(view));
+  screen.page["question"] = questionWording(view.prepared.question, texts());  // in the participant's language
   if (calibration_) screen.page["px_per_cm"] = (*calibration_)["px_per_cm"];  // null: skipped
   channel_->publish(std::move(screen));
   Response response;

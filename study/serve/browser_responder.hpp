@@ -39,6 +39,9 @@ class BrowserResponder : public Responder {
   // [online] size_calibration: the credit-card screen right after consent (or before the first
   // trial of a returning participant); `noCard` offers "I have no card".
   void askCalibration(bool ask, bool noCard) { askCalibration_ = ask, noCard_ = noCard; }
+  // The calibration this participant gave in an earlier session (its stored event's detail): not
+  // asked again, and every trial page carries its px_per_cm.
+  void knownCalibration(nlohmann::json calibration) { calibration_ = std::move(calibration); }
   std::vector<ResponderEvent> takeEvents() override;
   std::optional<DisplayInfo> display() const override { return display_; }
 

@@ -80,6 +80,11 @@ void ParticipantSession::walk(ServedStudy& study, DisplayInfo display, std::vect
         channel_, [&](const TrialView& view) { return study.worker.images(view.plan, view.prepared); }, display, std::move(arrival));
     responder.completionUrl(e.online.completionUrl);
     responder.askCalibration(e.online.sizeCalibration, e.online.calibrationNoCard);
+    if (existing && e.online.sizeCalibration)  // calibrated in an earlier session (before a server restart, too)
+      if (const auto earlier = study.store.lastEventDetail(existing->id, "calibration")) {
+        auto calibration = nlohmann::json::parse(*earlier, nullptr, false);
+        if (calibration.is_object() && calibration.contains("px_per_cm")) responder.knownCalibration(std::move(calibration));
+      }
     TrialRunner runner(e, study.store, study.worker);
     const SessionResult r = runner.run(options, responder);
     if (r.outcome == SessionOutcome::Finished) {

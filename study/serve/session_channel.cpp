@@ -51,7 +51,8 @@ nlohmann::json SessionChannel::current() const {
   return page;
 }
 
-SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error) {
+SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error,
+                                                nlohmann::json* refusal) {
   std::lock_guard lock(mutex_);
   lastActivity_ = std::chrono::steady_clock::now();
   if (!closedBecause_.empty()) {
@@ -76,6 +77,7 @@ SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& 
     // jsonText: the body cut at 500 bytes may end inside a character.
     if (refused_.size() < 100) refused_.emplace_back(receivedNs, jsonText({{"error", c.error}, {"body", body.dump().substr(0, 500)}}));
     error = c.error;
+    if (refusal) *refusal = c.refusal;
     return Delivery::Refused;
   }
   c.reply.receivedNs = receivedNs;

@@ -31,9 +31,13 @@ struct Reply {
 };
 
 // What the check of a reply says: an error (the request is refused with 400) or the reply.
+// A refused answer also says why in the participant's words: `refusal` is {"key": a text-table
+// key, "args": {name: value}} (the page formats it with its table), or null.
 struct Checked {
+  Checked(std::string e = "", Reply r = {}, nlohmann::json why = nullptr) : error(std::move(e)), reply(std::move(r)), refusal(std::move(why)) {}
   std::string error;
   Reply reply;
+  nlohmann::json refusal;
 };
 
 struct Screen {
@@ -57,7 +61,8 @@ class SessionChannel {
   // Checks and delivers a reply to screen `seq`. Stale: the screen is gone or the session ended
   // (the page should show the current one); Refused: the check's error is in `error`.
   enum class Delivery { Delivered, Stale, Refused };
-  Delivery deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error);
+  // `refusal`: the check's participant-facing reason, when it gave one.
+  Delivery deliver(int seq, const nlohmann::json& body, std::int64_t receivedNs, std::string& error, nlohmann::json* refusal = nullptr);
   // Waits up to `wait` until the session thread has handled every reply delivered so far (an
   // onset is then committed): the acknowledgement of replies that do not change the screen.
   bool awaitHandled(std::chrono::milliseconds wait);

@@ -262,12 +262,13 @@ void StudyServer::reply(ParticipantSession& session, const httplib::Request& req
   const auto seq = body->find("seq");
   if (seq == body->end() || !seq->is_number_integer()) return refuse(res, 400, "reply: 'seq' (the screen's number) is missing");
   std::string error;
-  switch (channel->deliver(seq->get<int>(), *body, receivedNs, error)) {
+  nlohmann::json refusal;
+  switch (channel->deliver(seq->get<int>(), *body, receivedNs, error, &refusal)) {
     case SessionChannel::Delivery::Stale: return sendJson(res, 409, {{"error", error}, {"screen", channel->current()}});
     case SessionChannel::Delivery::Refused:
       std::fprintf(stderr, "serve: 400: participant '%s': reply refused, not stored (kept as a refused-reply event): %s\n", session.participant().c_str(),
                    error.c_str());
-      return sendJson(res, 400, {{"error", error}});
+      return sendJson(res, 400, refusal.is_null() ? nlohmann::json{{"error", error}} : nlohmann::json{{"error", error}, {"refusal", refusal}});
     case SessionChannel::Delivery::Delivered: break;
   }
   const std::string type = body->value("type", "");

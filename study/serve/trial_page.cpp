@@ -26,8 +26,12 @@ bool offered(const tasks::Widget& widget, const std::string& label) {
 std::int64_t wholeNumber(const tasks::Widget& widget, const json& v) {
   if (!v.is_number_integer()) throw std::invalid_argument("expected a whole number");
   const std::int64_t n = v.get<std::int64_t>();
-  if (n < widget.minimum || n > widget.maximum)
-    throw std::invalid_argument("expected a whole number from " + std::to_string(widget.minimum) + " to " + std::to_string(widget.maximum));
+  if (n < widget.minimum || n > widget.maximum) {
+    const std::string min = std::to_string(widget.minimum), max = std::to_string(widget.maximum);
+    if (widget.maximum >= tasks::Widget{}.maximum)  // no bound a participant needs to hear of
+      throw tasks::AnswerFormatError("expected a whole number from " + min + " to " + max, "refusal.whole_number_min", {{"min", min}});
+    throw tasks::AnswerFormatError("expected a whole number from " + min + " to " + max, "refusal.whole_number_range", {{"min", min}, {"max", max}});
+  }
   return n;
 }
 
@@ -149,8 +153,12 @@ Checked checkTrialReply(const AnswerContext& context, const std::optional<Turnta
         if (body.contains(key)) value[key] = milliseconds(body, key);
       return {"", {type, value}};
     }
+  } catch (const tasks::AnswerFormatError& e) {  // a participant's answer refused: said in their words too
+    nlohmann::json refusal;
+    if (!e.key().empty()) refusal = {{"key", e.key()}, {"args", e.args()}};
+    return {type + ": " + e.what(), {}, refusal};
   } catch (const std::exception& e) {  // json type errors included
-    return {std::string(type.empty() ? "reply" : type) + ": " + e.what(), {}};
+    return {std::string(type.empty() ? "reply" : type) + ": " + e.what(), {}, nullptr};
   }
   return {"unknown reply type '" + type.substr(0, 40) + "' (expected onset, view, answer or timeout)", {}};
 }
@@ -163,7 +171,7 @@ std::string answerText(const AnswerContext& context, const nlohmann::json& answe
     return form.fromInput(context.question, widgetInput(form.widget(context.question), context.floorPlan, answer));
   } catch (const tasks::AnswerFormatError& e) {  // said once: the reply's type prefixes it
     const std::string message = e.what();
-    throw std::invalid_argument(message.rfind("answer: ", 0) == 0 ? message.substr(8) : message);
+    throw tasks::AnswerFormatError(message.rfind("answer: ", 0) == 0 ? message.substr(8) : message, e.key(), e.args());
   }
 }
 

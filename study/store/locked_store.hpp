@@ -111,6 +111,10 @@ class LockedStore : public Store {
     const std::lock_guard lock(mutex_);
     return store_.hasConsent(participantId);
   }
+  std::optional<std::string> lastEventDetail(std::int64_t participantId, const std::string& kind) override {
+    const std::lock_guard lock(mutex_);
+    return store_.lastEventDetail(participantId, kind);
+  }
   void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) override {
     const std::lock_guard lock(mutex_);
     store_.recordInfo(participantId, session, answers);

@@ -319,6 +319,15 @@ void PostgresStore::recordInfo(std::int64_t participantId, std::int64_t session,
   });
 }
 
+std::optional<std::string> PostgresStore::lastEventDetail(std::int64_t participantId, const std::string& kind) {
+  std::optional<std::string> detail;
+  connection_->read([&](PgTransaction& t) {
+    const auto r = t.exec(store_sql::kLastEventDetail, pgParams(participantId, kind));
+    if (!r.empty()) detail = text(r[0][0]);
+  });
+  return detail;
+}
+
 bool PostgresStore::hasInfo(std::int64_t participantId) { return exists(store_sql::kHasInfo, pgParams(participantId)); }
 
 void PostgresStore::recordDisplay(std::int64_t session, const std::string& displayJson) {

@@ -456,6 +456,13 @@ void SqliteStore::recordInfo(std::int64_t participantId, std::int64_t session, c
   t.commit();
 }
 
+std::optional<std::string> SqliteStore::lastEventDetail(std::int64_t participantId, const std::string& kind) {
+  Statement s = db_->prepare(store_sql::kLastEventDetail);
+  s.bind(1, participantId).bind(2, kind);
+  if (!s.step()) return std::nullopt;
+  return s.text(0);
+}
+
 bool SqliteStore::hasInfo(std::int64_t participantId) {
   Statement s = db_->prepare(store_sql::kHasInfo);
   s.bind(1, participantId);

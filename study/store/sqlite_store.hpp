@@ -59,6 +59,7 @@ class SqliteStore : public Store {
   void recordDecline(const Experiment& experiment, const std::string& tlabVersion, const std::string& participant) override;
   void recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) override;
   bool hasConsent(std::int64_t participantId) override;
+  std::optional<std::string> lastEventDetail(std::int64_t participantId, const std::string& kind) override;
   void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) override;
   bool hasInfo(std::int64_t participantId) override;
   void recordDisplay(std::int64_t session, const std::string& displayJson) override;

@@ -192,6 +192,9 @@ class Store {
   virtual void recordDecline(const Experiment& experiment, const std::string& tlabVersion, const std::string& participant) = 0;
   virtual void recordConsent(std::int64_t participantId, std::int64_t session, bool accepted) = 0;
   virtual bool hasConsent(std::int64_t participantId) = 0;
+  // The detail of this participant's newest event of `kind` over all their sessions (a returning
+  // participant's size calibration is not asked again, even after a server restart).
+  virtual std::optional<std::string> lastEventDetail(std::int64_t participantId, const std::string& kind) = 0;
   // Participant information, all fields in one transaction.
   virtual void recordInfo(std::int64_t participantId, std::int64_t session, const std::vector<FormAnswer>& answers) = 0;
   virtual bool hasInfo(std::int64_t participantId) = 0;

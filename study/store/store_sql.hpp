@@ -77,6 +77,8 @@ inline constexpr const char* kInsertQuestionnaireAnswer =
 inline constexpr const char* kHasQuestionnaireAnswers =
     "SELECT 1 FROM questionnaire_answers WHERE participant = ?1 AND questionnaire = ?2 AND block = ?3 LIMIT 1";
 inline constexpr const char* kInsertConsent = "INSERT INTO consent (participant, session, decision, recorded_at) VALUES (?1, ?2, ?3, ?4)";
+inline constexpr const char* kLastEventDetail =
+    "SELECT e.detail FROM events e JOIN sessions s ON s.id = e.session WHERE s.participant = ?1 AND e.kind = ?2 ORDER BY e.id DESC LIMIT 1";
 inline constexpr const char* kHasConsent = "SELECT 1 FROM consent WHERE participant = ?1 AND decision = 'accepted' LIMIT 1";
 inline constexpr const char* kInsertInfo =
     "INSERT INTO participant_info (participant, session, field, value, number, recorded_at) VALUES (?1, ?2, ?3, ?4, ?5, ?6)";

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "study/run/session_wording.hpp"
 #include "study/window/window_style.hpp"
 #include "study/window/gauge_drawing.hpp"
 
@@ -47,7 +48,7 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     base_.strokeRect(*layout_.plan, kInk, 1);
     layoutJson_["plan"] = {layout_.plan->x, layout_.plan->y, layout_.plan->width, layout_.plan->height};
   }
-  painter_.drawLine(base_, q.text, 16, 12, 22.0f, kInk);
+  painter_.drawLine(base_, questionWording(q, texts), 16, 12, 22.0f, kInk);
   // How to answer here (the window also takes typed labels), by the answer's kind.
   painter_.drawLine(base_, texts.text(std::string("window_answer.") + form_.name()), 16, layout_.answer.y + 8, 18.0f, kMuted);
   const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",

@@ -11,6 +11,7 @@
 #include "study/window/trial_screen.hpp"
 #include "study/window/window_responder.hpp"
 #include "study/window/window_style.hpp"
+#include "study/run/session_wording.hpp"
 #include "study/run/simulated_observer.hpp"
 #include "tasks/answer_form.hpp"
 #include "tasks/answer_parser.hpp"
@@ -114,7 +115,7 @@ bool WindowResponder::takeTrialInputs(const TrialView& view, TrialScreen& screen
       ended = clock.response(r.answer, in.tNs, "", lastPresentOnsetMs_);
       return true;
     } catch (const tasks::AnswerFormatError& e) {
-      screen.rejected(e.what());  // not submitted: the clock keeps running
+      screen.rejected(refusalWording(e, texts()));  // not submitted: the clock keeps running
       event(in.tNs, "invalid-answer", *r.answer);
     }
   }

@@ -60,7 +60,7 @@ class DirectionForm final : public AnswerForm {
   std::string fromInput(const Question& q, const WidgetInput& input) const override {
     if (const auto* g = std::get_if<GaugeSetting>(&input)) {
       if (!(std::isfinite(g->slantDegrees) && std::isfinite(g->tiltDegrees)) || g->slantDegrees < 0.0 || g->slantDegrees > 90.0)
-        throw AnswerFormatError("answer: a gauge's slant must be from 0 to 90 degrees");
+        throw AnswerFormatError("answer: a gauge's slant must be from 0 to 90 degrees", "refusal.slant");
       return directionText(normalFromSlantTilt(gaugeFrameOf(q), g->slantDegrees, g->tiltDegrees));
     }
     return AnswerForm::fromInput(q, input);

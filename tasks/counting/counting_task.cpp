@@ -28,6 +28,8 @@ std::vector<Question> CountingTask::probe(const ProbeRequest& request) const {
   Question q;
   q.task = name();
   q.text = "How many " + (kind.empty() ? std::string("targets") : kind + " objects") + " are there?";
+  q.textKey = kind.empty() ? "question.counting" : "question.counting_kind";
+  if (!kind.empty()) q.textArgs = {{"kind", kind}};
   q.answerKind = AnswerKind::Count;
   for (const auto i : targets)
     q.points.push_back(probePoint(view, request.scene.objects[i].name, "target", surfaceCentroid(request.scene.objects[i].mesh), int(i)));

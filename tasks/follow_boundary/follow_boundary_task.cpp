@@ -155,6 +155,7 @@ Question boundaryQuestion(const std::string& task, int number, const ViewGeometr
   question.task = task;
   question.number = number;
   question.text = "Follow the shortest way along the surface boundary from A to B. Which marked points do you meet on the way?";
+  question.textKey = "question.follow_boundary";
   question.answerKind = AnswerKind::LabelSet;
   question.points.push_back(probePoint(view, "A", "start", c.marks[0].world, l.object()));
   question.points.push_back(probePoint(view, "B", "end", c.marks[1].world, l.object()));

@@ -23,15 +23,9 @@ std::vector<SettingSpec> GaugeFigureTask::settingSpecs() const {
 
 namespace {
 
-std::string ordinal(int k) {
-  if (k == 1) return "front";
-  const char* suffix = (k % 10 == 2 && k % 100 != 12) ? "nd" : (k % 10 == 3 && k % 100 != 13) ? "rd" : "th";
-  return std::to_string(k) + suffix;
-}
-
 std::string questionText(int layer) {
   if (layer == 1) return "Turn the gauge until its disk lies flat on the front surface.";
-  return "Turn the gauge until its disk lies flat on the " + ordinal(layer) + " surface from the front.";
+  return "Turn the gauge until its disk lies flat on surface " + std::to_string(layer) + " from the front.";
 }
 
 }  // namespace
@@ -70,6 +64,8 @@ std::vector<Question> GaugeFigureTask::probe(const ProbeRequest& request) const 
       question.task = name();
       question.number = q + 1;
       question.text = questionText(layer);
+      question.textKey = layer == 1 ? "question.gauge_figure_front" : "question.gauge_figure_layer";
+      if (layer > 1) question.textArgs = {{"layer", std::to_string(layer)}};
       question.answerKind = AnswerKind::Direction;
       question.points = {probePoint(view, "A", "gauge", centre->point, centre->object)};
       question.truth = centre->normal;

@@ -81,6 +81,7 @@ std::vector<Question> LayerIndexTask::probe(const ProbeRequest& request) const {
       question.task = name();
       question.number = q + 1;
       question.text = "On which layer is the surface silhouette at point A? (1 = the front layer)";
+      question.textKey = "question.layer_index";
       question.answerKind = AnswerKind::LayerNumber;
       question.points = {probePoint(view, "A", "probe", c.point, c.edge->object)};
       question.truth = std::int64_t(v.layer);

@@ -186,6 +186,7 @@ Question nearestQuestion(const std::string& task, int number, const ViewGeometry
   question.task = task;
   question.number = number;
   question.text = "Which of the marked points is nearest to A when walking on the surface?";
+  question.textKey = "question.nearest_point";
   question.answerKind = AnswerKind::Label;
   question.points.push_back(probePoint(view, "A", "given", st.world, int(st.o)));
   std::vector<double> geo, euc;

@@ -36,6 +36,7 @@ std::vector<Question> PatternTask::probe(const ProbeRequest& request) const {
                              " of the letters C, K, R, X, Y on the floor plan (need exactly one)");
   q.task = name();
   q.text = "Which letter do the targets form on the floor: C, K, R, X or Y?";
+  q.textKey = "question.pattern";
   q.answerKind = AnswerKind::Letter;
   q.truth = std::string(1, letters[0]);
   q.timeLimitSeconds = request.settings.number("time-limit");

@@ -64,6 +64,7 @@ std::vector<Question> RelativeDepthTask::probe(const ProbeRequest& request) cons
       question.task = name();
       question.number = q + 1;
       question.text = "Which of the two marked points, A or B, is nearer to you?";
+      question.textKey = "question.relative_depth";
       question.answerKind = AnswerKind::Label;
       question.points = {probePoint(view, "A", "candidate", first->second.point, first->second.object),
                          probePoint(view, "B", "candidate", second->second.point, second->second.object)};

@@ -29,6 +29,7 @@ std::vector<Question> TargetDiscoveryTask::probe(const ProbeRequest& request) co
   Question q;
   q.task = name();
   q.text = "Find the unique target and mark its position on the floor plan.";
+  q.textKey = "question.target_discovery";
   q.answerKind = AnswerKind::FloorPoint;
   q.points = {probePoint(view, target.name, "target", where, int(targets[0]))};
   q.truth = floorPlanPoint(where);

@@ -107,6 +107,25 @@ TEST_P(StoreContract, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
   EXPECT_EQ(peek(location, "SELECT count(*)" + where + " AND ended_at IS NULL"), "1");  // when it really ended is unknown
 }
 
+TEST_P(StoreContract, TheNewestEventOfAKindOverAParticipantsSessions) {
+  const auto store = openStore(fresh("store_last_event"));
+  const auto p = *store->enrol(e, "test", "p", 0, design, {fakeTrial(1)});
+  const auto q = *store->enrol(e, "test", "q", 1, design, {fakeTrial(1)});
+  EXPECT_FALSE(store->lastEventDetail(p.id, "calibration"));
+  const auto first = store->startSession(p.id, e, "test", "browser");
+  store->recordEvent(first, std::nullopt, 1, "calibration", R"({"px_per_cm":37.5})");
+  store->recordEvent(first, std::nullopt, 2, "consent", "{}");
+  store->endSession(first, "closed");
+  const auto other = store->startSession(q.id, e, "test", "browser");
+  store->recordEvent(other, std::nullopt, 3, "calibration", R"({"px_per_cm":99})");
+  EXPECT_EQ(store->lastEventDetail(p.id, "calibration"), R"({"px_per_cm":37.5})");
+  const auto second = store->startSession(p.id, e, "test", "browser");
+  store->recordEvent(second, std::nullopt, 4, "calibration", R"({"px_per_cm":40.25})");
+  EXPECT_EQ(store->lastEventDetail(p.id, "calibration"), R"({"px_per_cm":40.25})");
+  EXPECT_EQ(store->lastEventDetail(q.id, "calibration"), R"({"px_per_cm":99})");
+  EXPECT_FALSE(store->lastEventDetail(p.id, "no-such-kind"));
+}
+
 TEST_P(StoreContract, OnsetsAreCommittedAndCountShowings) {
   const std::string location = fresh("store_onsets");
   const auto store = openStore(location);

@@ -77,7 +77,7 @@ async function reply(body) {
   if (body.type === 'onset' || body.type === 'view') return r;
   if (r.status === 200) show(r.body);
   else if (r.status === 409) show(r.body.screen);
-  else if (r.status === 400) showInlineError(r.body.error || '', body.type === 'answer');
+  else if (r.status === 400) showInlineError(r.body.error || '', body.type === 'answer', r.body.refusal);
   else {  // resolves with the reply to the retry: the caller learns how the answer finally fared
     return new Promise((resolve) => problem(t('page.not_saved', { error: r.body.error || t('page.server_error') }),
       () => resolve(reply(body))));
@@ -87,8 +87,10 @@ async function reply(body) {
 
 // A refused answer, said on the page; a form field's ("field 'age': ..." in the participants'
 // language) below that field, in words without the field's id. A refused trial answer is said in
-// the page's words; the server's reason (the task's, in English) stays in the element's title.
-function showInlineError(text, answer) {
+// the page's words, followed by the reason when the server names it by a text key (`refusal`:
+// {key, args}, e.g. "Please type a whole number from 1 to 20."); the server's English reason stays
+// in the element's title.
+function showInlineError(text, answer, refusal) {
   main.querySelectorAll('.error').forEach((e) => e.remove());
   const m = /^field '([^']+)': (.*)$/.exec(text);
   const field = m && main.querySelector('.field[data-field="' + CSS.escape(m[1]) + '"]');
@@ -96,7 +98,8 @@ function showInlineError(text, answer) {
     field.append(el('p', { class: 'error' }, t('form.check', { error: m[2] })));
     field.scrollIntoView({ block: 'nearest' });
   } else {
-    main.append(el('p', { class: 'error', title: text }, answer || !text ? t('trial.refused') : text));
+    const reason = refusal && refusal.key ? ' ' + t(refusal.key, refusal.args) : '';
+    main.append(el('p', { class: 'error', title: text }, answer || !text ? t('trial.refused') + reason : text));
   }
 }
 

@@ -4,7 +4,8 @@
 * the credit-card size calibration ("virtual chinrest") after consent: "Done" before any change
   is refused on the page; the rectangle is then sized by the arrow keys and the − and + buttons,
   the calibration event stores the pixels per centimetre and the number of adjustments, a new tab
-  of the same participant is not asked again (the server keeps the value), and the trial's picture
+  of the same participant is not asked again (the server keeps the value), nor after a restart of
+  the server (the value is read back from the store: one calibration event), and the trial's picture
   is 5 cm wide by that calibration ([online] stimulus_size = "5cm"); another participant says "I
   have no card" (stored as skipped);
 * a participant who declines consent: the page says so and only the decision is stored;
@@ -81,7 +82,7 @@ def decline(p, server):
     p.screenshot("declined")
 
 
-def time_out_then_answer(p, server):
+def time_out_then_answer(p, server, restart):
     s = to_consent(p, server, "slow")
     p.find("#accept").click()
     s = calibrate(p, "calibration")
@@ -91,6 +92,17 @@ def time_out_then_answer(p, server):
     arrive(p, server, "slow")
     s = p.next_screen(-1)
     check(s["kind"] == "message", f"a new tab of a calibrated participant shows {s}, not the instructions")
+    # The server restarts (another port): the participant comes back and is not asked again either.
+    server = restart(server)
+    p.driver.switch_to.new_window("tab")
+    arrive(p, server, "slow")
+    s = p.next_screen(-1)
+    check(s["kind"] == "message", f"after a server restart a calibrated participant sees {s}, not the welcome back")
+    p.screenshot("after-restart-welcome-back")
+    p.find("#continue").click()
+    s = p.next_screen(s["seq"])
+    check(s["kind"] == "message", f"after the welcome back the instructions, not the calibration: {s}")
+    p.screenshot("after-restart-no-calibration")
     p.find("#continue").click()
     s = p.next_screen(s["seq"])
     seq = s["seq"]
@@ -116,6 +128,7 @@ def time_out_then_answer(p, server):
     p.type_number(1)
     s = p.next_screen(s["seq"])
     check(s["kind"] == "end", f"the end page expected, got {s}")
+    return server
 
 
 def no_card(p, server):
@@ -145,6 +158,8 @@ def check_database(tlab, db, folder):
     check(second["answered"] == "1" and second["raw_answer"] == "1", f"the answered trial: {second}")
     events = base.read_csv(folder, "events.csv")
     calibrations = {e["participant"]: json.loads(e["detail"]) for e in events if e["kind"] == "calibration"}
+    slow_calibrations = [e for e in events if e["kind"] == "calibration" and e["participant"] == "slow"]
+    check(len(slow_calibrations) == 1, f"one calibration of the slow participant over the restart: {slow_calibrations}")
     check(set(calibrations) == {"slow", "nocard"}, f"calibration events: {calibrations}")
     slow = calibrations["slow"]
     check(slow["skipped"] is False and slow["adjustments"] == 7 and abs(slow["card_css_px"] - ADJUSTED) < 1e-9
@@ -154,17 +169,27 @@ def check_database(tlab, db, folder):
     check(onsets and all(o["shown"]["mode"] == "cm" and abs(o["shown"]["cm_width"] - CM) < 1e-6 for o in onsets), f"the onsets' shown sizes: {onsets}")
 
 
-def edges(tlab, p, server, db, work):
+def edges(tlab, experiment, p, server, db, work):
     decline(p, server)
-    time_out_then_answer(p, server)
-    no_card(p, server)
-    server.stop()
+    restarted = []
+
+    def restart(old):
+        old.stop()
+        restarted.append(base.Server(tlab, experiment, db, work / "serve.log"))
+        return restarted[-1]
+    try:
+        server = time_out_then_answer(p, server, restart)
+        no_card(p, server)
+        server.stop()
+    finally:
+        for s in restarted:
+            s.kill()
     check_database(tlab, db, work / "csv")
 
 
 def main():
     args = base.parse_arguments(__doc__.split("\n")[0], "online_edges.toml")
-    return base.run_in_browser(args, lambda p, server, db, work: edges(args.tlab, p, server, db, work))
+    return base.run_in_browser(args, lambda p, server, db, work: edges(args.tlab, args.experiment, p, server, db, work))
 
 
 if __name__ == "__main__":

@@ -82,9 +82,12 @@ def german_session(tlab, experiment, p, server):
     check(p.find("#submit").text == de["button.submit"], f"the submit button: {p.find('#submit').text!r}")
     p.type_number(0)  # refused: the page says so in German
     error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused answer's message")[0]
-    check(error.text == de["trial.refused"], f"the refusal says: {error.text!r}")
+    # The task's question and the reason of the refusal are the table's German words too.
+    check(p.find("#screen h1.question").text == de["question.layer_index"], f"the question: {p.find('#screen h1.question').text!r}")
+    reason = de["refusal.whole_number_min"].replace("{min}", "1")
+    check(error.text == de["trial.refused"] + " " + reason, f"the refusal says: {error.text!r}")
     p.screenshot("de-trial-refused")
-    no_english(p, de, en, ["answer.layer-number", "button.submit", "trial.refused"], "trial")
+    no_english(p, de, en, ["answer.layer-number", "button.submit", "trial.refused", "question.layer_index", "refusal.whole_number_min"], "trial")
     box = p.find("#answer")
     box.send_keys(Keys.CONTROL, "a")
     box.send_keys("1", Keys.ENTER)
