@@ -28,6 +28,7 @@ void addServeCommand(CLI::App& app);     // cmd_serve.cpp
 void addLoadtestCommand(CLI::App& app);  // cmd_loadtest.cpp
 void addSimulateCommand(CLI::App& app);  // cmd_simulate.cpp
 void addExportCommand(CLI::App& app);    // cmd_export.cpp
+void addReplayCommand(CLI::App& app);    // cmd_replay.cpp
 void addAnalyzeCommand(CLI::App& app);   // cmd_analyze.cpp
 void addDropCommand(CLI::App& app);      // cmd_drop.cpp
 void addTimingCommand(CLI::App& app);    // cmd_timing.cpp

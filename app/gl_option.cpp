@@ -25,7 +25,7 @@ void addGlOption(CLI::App& cmd) {
 }  // namespace
 
 void addGlOptions(CLI::App& app) {
-  for (const char* name : {"render", "inspect", "gallery", "demo", "simulate", "stimuli", "run"})
+  for (const char* name : {"render", "inspect", "gallery", "demo", "simulate", "stimuli", "run", "replay"})
     addGlOption(*app.get_subcommand(name));
   for (auto* bench : app.get_subcommand("bench")->get_subcommands({})) addGlOption(*bench);
 }

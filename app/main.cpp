@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   tlab::app::addLoadtestCommand(app);
   tlab::app::addSimulateCommand(app);
   tlab::app::addExportCommand(app);
+  tlab::app::addReplayCommand(app);
   tlab::app::addAnalyzeCommand(app);
   tlab::app::addDropCommand(app);
   tlab::app::addVersionCommand(app);

@@ -1,5 +1,6 @@
-// Study benchmarks: building designs and session plans, and the cost of the crash-safe write path
-// (one SQLite transaction per response, synchronous=FULL, WAL). End-to-end simulated trials per
+// Study benchmarks: building designs and session plans, the cost of the crash-safe write path
+// (one SQLite transaction per response, synchronous=FULL, WAL), and the SHA-256 of a live frame's
+// pixels that the window logs once per picture shown (tlab replay checks it). End-to-end simulated trials per
 // second (rendering, probing, observer, scoring, storing) are measured with
 // `tlab simulate ... --participants N --db sim.db`, which prints trials/s.
 #include <benchmark/benchmark.h>
@@ -12,6 +13,7 @@
 #include "study/design/session_plan.hpp"
 #include "study/store/open_store.hpp"
 #include "study/design/williams_design.hpp"
+#include "study/run/frame_log.hpp"
 
 using namespace tlab::study;
 
@@ -105,3 +107,13 @@ static void BM_RecordResponse(benchmark::State& state) {
 }
 BENCHMARK(BM_RecordResponse)->Iterations(2000);
 
+
+// The frame log's hash of one live picture of N×N pixels (RGBA, as the window and browser log it).
+static void BM_FramePixelsSha256(benchmark::State& state) {
+  const int n = int(state.range(0));
+  Canvas frame(n, n, {40, 90, 160, 255});
+  for (int i = 0; i < n; ++i) frame.fillRect({i, i, 1, 1}, {255, 255, 255, 255});
+  for (auto _ : state) benchmark::DoNotOptimize(framePixelsSha256(frame));
+  state.SetBytesProcessed(state.iterations() * std::int64_t(n) * n * 4);
+}
+BENCHMARK(BM_FramePixelsSha256)->Arg(160)->Arg(512)->Arg(1024)->Unit(benchmark::kMillisecond);

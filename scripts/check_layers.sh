@@ -5,10 +5,10 @@
 #   renderer/:  pipeline → styles → compose → ops → {buffer, kbuffer, peel} → frame → params
 #               → {scene, gpu}   (renderer/CMakeLists.txt says what each floor holds); the
 #               shaders' #include "floor/piece.glsl" (resolved inside renderer/) follow it too
-#   study/:     {window, serve, simulate} → analyze → run → store → design
+#   study/:     {window, serve, simulate, replay} → analyze → run → store → design
 #               (study/CMakeLists.txt says what each floor holds); only window/ includes GLFW
 # A file may include its own folder and any folder below it; siblings ({tasks, stimuli},
-# {buffer, kbuffer, peel}, {scene, gpu}, {window, serve, simulate}) do not include each other.
+# {buffer, kbuffer, peel}, {scene, gpu}, {window, serve, simulate, replay}) do not include each other.
 # app/ may include bench/measure (tlab bench). Outside the floors: bench/ and fuzz/ may include
 # anything below app/; tests/X/ may include X/, what X/ may include, and tests/support/ (which may
 # include anything below app/); the few tests that need a sibling floor are listed in `crossing`.
@@ -92,7 +92,7 @@ declare -A crossing=(
 declare -A rank=([renderer/pipeline]=7 [renderer/styles]=6 [renderer/compose]=5 [renderer/ops]=4
                  [renderer/buffer]=3 [renderer/kbuffer]=3 [renderer/peel]=3 [renderer/frame]=2
                  [renderer/params]=1 [renderer/scene]=0 [renderer/gpu]=0
-                 [study/window]=4 [study/serve]=4 [study/simulate]=4 [study/analyze]=3 [study/run]=2
+                 [study/window]=4 [study/serve]=4 [study/simulate]=4 [study/replay]=4 [study/analyze]=3 [study/run]=2
                  [study/store]=1 [study/design]=0)
 
 failures=0

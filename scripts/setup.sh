@@ -12,6 +12,7 @@ packages=(
   libnlopt-dev  # BOBYQA for the mixed models (lme4's default optimizer)
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool imagemagick chromium chromium-driver python3-selenium
+  ffmpeg  # tlab replay -o: the video of an interactive trial's frames
   libcpp-httplib-dev libpqxx-dev postgresql  # tlab serve and the PostgreSQL store
   nginx  # the TLS reverse proxy of docs/nginx-tlab.conf, tested on loopback
   clang libclang-rt-14-dev time e2fsprogs

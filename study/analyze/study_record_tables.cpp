@@ -11,6 +11,7 @@
 #include "analysis/descriptives.hpp"
 #include "analysis/likert_summary.hpp"
 #include "analysis/number_format.hpp"
+#include "study/analyze/replay_listing.hpp"
 #include "study/run/simulated_observer.hpp"
 #include "study/store/timing_tables.hpp"
 
@@ -150,6 +151,8 @@ void appendStudyRecord(analysis::Report& report, Store& store, const StoredExper
   for (auto& table : questionnaireTables(store, stored)) report.appendices.push_back(std::move(table));
   report.appendices.push_back(stimulusTable(store, stored));
   report.appendices.push_back(sessionTimingTable(store, stored));
+  if (analysis::TextTable replays = replayTable(store, store.location(), stored.experiment.id); !replays.rows.empty())
+    report.appendices.push_back(std::move(replays));
   for (auto& image : stimulusImages(store, stored)) report.images.push_back(std::move(image));
 }
 

@@ -34,7 +34,8 @@ analysis::TextTable stimulusTable(Store& store, const StoredExperiment& stored);
 // longer there are left out (the table above still names them).
 std::vector<analysis::ReportImage> stimulusImages(Store& store, const StoredExperiment& stored, std::size_t limit = 64);
 
-// The questionnaire tables, the stimulus table and the stimulus pictures appended to a report.
+// The questionnaire tables, the stimulus table, the session timing, the interactive trials with
+// the command that replays each (when frames were logged) and the stimulus pictures appended to a report.
 void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored);
 
 }  // namespace tlab::study

@@ -23,11 +23,13 @@ LiveView::LiveView(std::shared_ptr<const render::Scene> scene, const StimulusKey
   const auto mode = request_.settings.find("mode");
   lens_ = request_.style == "dynamic" && mode != request_.settings.end() && mode->second == "active";
   if (const auto r = request_.settings.find("lens_radius"); lens_ && r != request_.settings.end()) lensRadius_ = std::stof(r->second);
+  settings_ = request_.settings;
 }
 
 bool LiveView::pointAt(glm::vec2 fraction) {
   if (!lens_) return false;
-  render::setDynamicLens(request_.settings, glm::clamp(fraction, glm::vec2(0.0f), glm::vec2(1.0f)), lensRadius_);
+  lensAt_ = glm::clamp(fraction, glm::vec2(0.0f), glm::vec2(1.0f));
+  render::setDynamicLens(request_.settings, *lensAt_, lensRadius_);
   last_.reset();  // the lens moved: render again
   return true;
 }
@@ -37,8 +39,19 @@ const Canvas& LiveView::frame() {
   if (!last_ || camera != lastCamera_) {
     last_.emplace(frameFrom(navigator_.camera()));
     lastCamera_ = camera;
+    rendered_ = {navigator_.camera(), lensAt_, rendered_.count + 1};
   }
   return *last_;
+}
+
+Canvas LiveView::frameFrom(const render::Camera& camera, std::optional<glm::vec2> lens) {
+  if (lens) {
+    pointAt(*lens);
+  } else {
+    request_.settings = settings_;
+    lensAt_.reset();
+  }
+  return frameFrom(camera);
 }
 
 Canvas LiveView::frameFrom(const render::Camera& camera) {

@@ -1,8 +1,13 @@
 #pragma once
 // LiveView: the scene of an interactive trial rendered with the trial's style from the camera the
-// participant steers (CameraNavigator); re-rendered only after the camera moved. Needs the
-// window's GL context to be current.
+// participant steers (CameraNavigator); re-rendered only after the camera (or the dynamic lens)
+// moved. Needs the window's GL context to be current. The renderer keeps state across frames (the
+// dynamic style's group order, seed 004 Alg. 1), so a replay renders the logged frames in order on
+// one LiveView, as they were rendered: rendered() tells a front end what each picture was made from.
+#include <map>
 #include <memory>
+#include <optional>
+#include <string>
 
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene.hpp"
@@ -26,6 +31,19 @@ class LiveView {
   const Canvas& frame();
   // The picture from any camera (the views of an online turntable).
   Canvas frameFrom(const render::Camera& camera);
+  // Replay: the picture from `camera` with the lens at `lens` as pointAt set it (nullopt: the
+  // style settings' own lens, as before any pointAt).
+  Canvas frameFrom(const render::Camera& camera, std::optional<glm::vec2> lens);
+
+  // What frame() rendered last: its camera, its lens (pointAt's clamped fraction; nullopt before
+  // any pointAt or when the lens does not follow the cursor) and how many pictures frame() has
+  // rendered so far (0: none).
+  struct Rendered {
+    render::Camera camera;
+    std::optional<glm::vec2> lens;
+    int count = 0;
+  };
+  const Rendered& rendered() const { return rendered_; }
 
  private:
   std::shared_ptr<const render::Scene> scene_;
@@ -36,6 +54,9 @@ class LiveView {
   std::string lastCamera_;
   bool lens_ = false;         // the style's lens follows the cursor
   float lensRadius_ = 0.2f;
+  std::map<std::string, std::string> settings_;  // the style's settings before any pointAt
+  std::optional<glm::vec2> lensAt_;              // where pointAt put the lens
+  Rendered rendered_;
 };
 
 }  // namespace tlab::study

@@ -40,6 +40,12 @@ core::Image readExternalImage(const StimulusKey& key) {
 
 render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key) { return resolveCamera(scene, key); }
 
+std::shared_ptr<render::Scene> loadStimulusScene(const StimulusKey& key, const std::vector<render::BuiltinSceneSpec>& catalog) {
+  auto scene = std::make_shared<render::Scene>(render::loadScene(key.scene, catalog));
+  render::requireTriangles(*scene, key.scene);
+  return scene;
+}
+
 bool isMarkedPoint(const tasks::ProbePoint& p) { return p.role != "target" && p.role != "gauge"; }
 
 Canvas markQuestion(const core::Image& picture, const tasks::Question& question, TextPainter& painter) {
@@ -83,8 +89,7 @@ const StimulusLibrary::Rendered& StimulusLibrary::rendered(const StimulusKey& ke
   const std::string id = key.text();
   const auto found = pictures_.find(id);
   if (found != pictures_.end()) return found->second;
-  auto scene = std::make_shared<render::Scene>(render::loadScene(key.scene, catalog_));
-  render::requireTriangles(*scene, key.scene);
+  auto scene = loadStimulusScene(key, catalog_);
   stimuli::StimulusView view;
   view.width = key.width;
   view.height = key.height;

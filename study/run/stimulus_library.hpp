@@ -42,6 +42,9 @@ bool isMarkedPoint(const tasks::ProbePoint& point);
 
 // The PNG of a stimulus from another renderer (key.images), checked to have the stimulus' size.
 core::Image readExternalImage(const StimulusKey& key);
+// The scene of a stimulus, loaded from its key (a built-in of `catalog` or a file) and checked to
+// have triangles: what a live view renders (the library's pictures and `tlab replay` load it alike).
+std::shared_ptr<render::Scene> loadStimulusScene(const StimulusKey& key, const std::vector<render::BuiltinSceneSpec>& catalog);
 // The camera a stimulus is drawn with: the key's camera on the scene's own (or the fitted one).
 render::Camera stimulusCamera(const render::Scene& scene, const StimulusKey& key);
 

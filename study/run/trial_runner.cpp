@@ -286,7 +286,12 @@ SessionResult TrialRunner::run(const RunOptions& options, Responder& responder) 
 
   s.session = store_.startSession(s.participant.id, experiment_, options.tlabVersion, responder.mode());
   faultPoint("session", ++sessions_);
-  if (const auto display = responder.display()) store_.recordDisplay(s.session, display->json());
+  if (const auto display = responder.display()) {
+    // With the version of tlab that ran it: `tlab replay` names it when a logged frame differs.
+    nlohmann::json shown = nlohmann::json::parse(display->json());
+    shown["tlab_version"] = options.tlabVersion;
+    store_.recordDisplay(s.session, shown.dump());
+  }
   auto close = [&](SessionOutcome outcome) {
     storeEvents(s, std::nullopt);
     const char* reason = outcome == SessionOutcome::Finished ? "finished" : outcome == SessionOutcome::Declined ? "declined" : "closed";

@@ -1,9 +1,12 @@
 // StudyServer's admin side: progress per slot against the target, what each live session shows
-// (screen, elapsed and idle time), answered and missing responses, drop (after a confirmation) and extend.
+// (screen, elapsed and idle time), answered and missing responses, drop (after a confirmation) and
+// extend, and the interactive trials with logged frames with the `tlab replay` command of each.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
+#include "analysis/number_format.hpp"
+#include "study/analyze/replay_listing.hpp"
 #include "study/run/session_wording.hpp"
 
 #include "study/serve/server_pages.hpp"
@@ -43,6 +46,33 @@ void addLive(nlohmann::json& row, const ParticipantSession* session) {
               {"screen", screenText(channel->current())},
               {"elapsed_s", elapsed ? nlohmann::json(std::round(*elapsed)) : nlohmann::json()},
               {"idle_s", std::round(channel->idleSeconds())}});
+}
+
+// Per participant, the interactive trials whose live frames were logged, with the command that
+// replays each on the researcher's machine (the server renders no replays: its GL serves participants).
+nlohmann::json replays(Store& store, const std::string& experimentId) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const auto& t : replayableTrials(store, experimentId))
+    out.push_back({{"participant", t.participant}, {"trial", t.sequence}, {"phase", t.phase}, {"task", t.taskId}, {"frames", t.frames},
+                   {"command", replayCommand(store.location(), t)}});
+  return out;
+}
+
+// The admin page's section of replays, placed before the end of its main part.
+std::string withReplays(std::string page, const nlohmann::json& replays) {
+  using analysis::escapeHtml;
+  std::string section = "<h2>Replays of interactive trials</h2><p>Every frame a participant was shown in an interactive trial is "
+                        "logged; each command renders them again, checks each against its logged SHA-256 and writes a page with "
+                        "the frames, the inputs, the timing and the answer (add <code>-o replay.webm</code> for a video).</p>"
+                        "<table id=\"replays\"><tr><th>participant</th><th>trial</th><th>phase</th><th>task</th><th>frames</th><th>replay</th></tr>";
+  for (const auto& r : replays)
+    section += "<tr><td>" + escapeHtml(r["participant"].get<std::string>()) + "</td><td>" + r["trial"].dump() + "</td><td>" +
+               escapeHtml(r["phase"].get<std::string>()) + "</td><td>" + escapeHtml(r["task"].get<std::string>()) + "</td><td>" +
+               r["frames"].dump() + "</td><td><code>" + escapeHtml(r["command"].get<std::string>()) + "</code></td></tr>";
+  if (replays.empty()) section += "<tr><td colspan=\"6\">none yet</td></tr>";
+  section += "</table>";
+  const auto end = page.rfind("</main>");
+  return end == std::string::npos ? page : page.insert(end, section);
 }
 
 }  // namespace
@@ -95,7 +125,8 @@ nlohmann::json StudyServer::status() {
                               countOf(missing, "missing response", "missing responses") + " to test trials stored; " +
                               countOf(long(live.size()), "participant", "participants") + " arrived at this server";
   return {{"experiment", e.id}, {"summary", summary}, {"slots", slots}, {"arrived", arrived}, {"target", target}, {"finished", finished},
-          {"running", running}, {"idle", idle}, {"responses", answered + missing}, {"answered", answered}, {"missing", missing}};
+          {"running", running}, {"idle", idle}, {"responses", answered + missing}, {"answered", answered}, {"missing", missing},
+          {"replays", replays(study_.store, e.id)}};
 }
 
 void StudyServer::admin(const httplib::Request& req, httplib::Response& res) {
@@ -105,7 +136,8 @@ void StudyServer::admin(const httplib::Request& req, httplib::Response& res) {
     return;
   }
   res.set_header("Cache-Control", "no-store");
-  res.set_content(adminPage(status(), adminToken_), "text/html; charset=utf-8");
+  const nlohmann::json now = status();
+  res.set_content(withReplays(adminPage(now, adminToken_), now["replays"]), "text/html; charset=utf-8");
 }
 
 void StudyServer::adminAction(const httplib::Request& req, httplib::Response& res) {

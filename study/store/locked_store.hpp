@@ -151,6 +151,14 @@ class LockedStore : public Store {
     const std::lock_guard lock(mutex_);
     return store_.stimulusExamples(experimentId);
   }
+  DataTable liveTrials(const std::string& experimentId) override {
+    const std::lock_guard lock(mutex_);
+    return store_.liveTrials(experimentId);
+  }
+  DataTable trialFrames(std::int64_t trial) override {
+    const std::lock_guard lock(mutex_);
+    return store_.trialFrames(trial);
+  }
 
  private:
   std::unique_ptr<Store> owner_;

@@ -67,6 +67,8 @@ class PostgresStore : public Store {
   std::vector<StoredAnswer> formAnswers(const std::string& experimentId) override;
   DataTable stimulusSummary(const std::string& experimentId) override;
   DataTable stimulusExamples(const std::string& experimentId) override;
+  DataTable liveTrials(const std::string& experimentId) override;
+  DataTable trialFrames(std::int64_t trial) override;
 
  private:
   bool exists(const std::string& sql, const std::vector<std::optional<std::string>>& params);

@@ -41,4 +41,16 @@ DataTable PostgresStore::stimulusExamples(const std::string& experimentId) {
   return out;
 }
 
+DataTable PostgresStore::liveTrials(const std::string& experimentId) {
+  DataTable out;
+  connection_->read([&](PgTransaction& t) { out = store_tables::liveTrials(t.tables(), experimentId); });
+  return out;
+}
+
+DataTable PostgresStore::trialFrames(std::int64_t trial) {
+  DataTable out;
+  connection_->read([&](PgTransaction& t) { out = store_tables::trialFrames(t.tables(), trial); });
+  return out;
+}
+
 }  // namespace tlab::study

@@ -69,6 +69,8 @@ class SqliteStore : public Store {
   std::vector<StoredAnswer> formAnswers(const std::string& experimentId) override;
   DataTable stimulusSummary(const std::string& experimentId) override;
   DataTable stimulusExamples(const std::string& experimentId) override;
+  DataTable liveTrials(const std::string& experimentId) override;
+  DataTable trialFrames(std::int64_t trial) override;
 
  private:
   int requireStudyDatabase();  // the schema version

@@ -67,4 +67,14 @@ DataTable SqliteStore::stimulusExamples(const std::string& experimentId) {
   return store_tables::stimulusExamples(q, experimentId);
 }
 
+DataTable SqliteStore::liveTrials(const std::string& experimentId) {
+  SqliteQueries q(*db_);
+  return store_tables::liveTrials(q, experimentId);
+}
+
+DataTable SqliteStore::trialFrames(std::int64_t trial) {
+  SqliteQueries q(*db_);
+  return store_tables::trialFrames(q, trial);
+}
+
 }  // namespace tlab::study

@@ -215,6 +215,11 @@ class Store {
   // (test before training); and the file of the first test question of each condition and task.
   virtual DataTable stimulusSummary(const std::string& experimentId) = 0;
   virtual DataTable stimulusExamples(const std::string& experimentId) = 0;
+  // The interactive trials with live frames stored ("frame" events, study/run/frame_log.hpp):
+  // participant, sequence, phase, task_id, frames, in participant and sequence order.
+  virtual DataTable liveTrials(const std::string& experimentId) = 0;
+  // The "frame" events of one trial (TrialRecord::id) in the order stored: session, t_ns, detail.
+  virtual DataTable trialFrames(std::int64_t trial) = 0;
 };
 
 // "host:pid" of this process, stored with each session (two stations may share one database).

@@ -229,6 +229,24 @@ DataTable stimulusExamples(TableQueries& q, const std::string& experimentId) {
   return t;
 }
 
+DataTable liveTrials(TableQueries& q, const std::string& experimentId) {
+  DataTable t;
+  t.header = {"participant", "sequence", "phase", "task_id", "frames"};
+  q.forEachRow("SELECT p.participant, t.sequence, t.phase, t.task_id, COUNT(*) FROM events e JOIN trials t ON t.id = e.trial "
+               "JOIN participants p ON p.id = t.participant WHERE e.kind = 'frame' AND p.experiment " + std::string(kOfExperiment) +
+                   " GROUP BY p.id, p.participant, t.sequence, t.phase, t.task_id ORDER BY p.id, t.sequence",
+               experimentId, [&](const ResultRow& s) { t.rows.push_back({s.text(0), s.text(1), s.text(2), s.text(3), s.text(4)}); });
+  return t;
+}
+
+DataTable trialFrames(TableQueries& q, std::int64_t trial) {
+  DataTable t;
+  t.header = {"session", "t_ns", "detail"};
+  q.forEachRow("SELECT e.session, e.t_ns, e.detail FROM events e WHERE e.trial = CAST(?1 AS INTEGER) AND e.kind = 'frame' ORDER BY e.id",
+               std::to_string(trial), [&](const ResultRow& s) { t.rows.push_back({s.text(0), s.text(1), s.text(2)}); });
+  return t;
+}
+
 }  // namespace store_tables
 
 }  // namespace tlab::study

@@ -1,6 +1,6 @@
 #pragma once
 // The tables export and analysis read (Store::exportTable, analysisRecords, sessionModes,
-// formAnswers, stimulusSummary, stimulusExamples), written once in SQL that SQLite and PostgreSQL
+// formAnswers, stimulusSummary, stimulusExamples, liveTrials, trialFrames), written once in SQL that SQLite and PostgreSQL
 // both run, over a small query interface each store implements. One copy of the SQL and of the
 // cell formatting keeps `tlab export` byte for byte the same from either store.
 #include <cstdint>
@@ -43,6 +43,8 @@ std::vector<std::map<std::string, int>> sessionModes(TableQueries& q, const std:
 std::vector<StoredAnswer> formAnswers(TableQueries& q, const std::string& experimentId);
 DataTable stimulusSummary(TableQueries& q, const std::string& experimentId);
 DataTable stimulusExamples(TableQueries& q, const std::string& experimentId);
+DataTable liveTrials(TableQueries& q, const std::string& experimentId);
+DataTable trialFrames(TableQueries& q, std::int64_t trial);
 
 }  // namespace store_tables
 

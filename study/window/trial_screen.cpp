@@ -14,6 +14,13 @@ namespace {
 
 using tasks::WidgetKind;
 
+// "drag 15,5", "key 1,0", "point 0.4531,0.2188": what moved a live view, for its frame log.
+std::string inputText(const char* what, double a, double b) {
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s %.6g,%.6g", what, a, b);
+  return buf;
+}
+
 std::string formatCountdown(double seconds) {
   const int s = std::max(0, int(std::ceil(seconds)));
   char buf[32];
@@ -158,6 +165,7 @@ void TrialScreen::arrow(int forward, int right) {
   }
   if (!live_) return;
   live_->navigator().move(forward, right);
+  liveInputs_.push_back(inputText("key", forward, right));
   dirty_ = true;
 }
 
@@ -170,13 +178,27 @@ void TrialScreen::drag(double dx, double dy) {
   }
   if (!live_) return;
   live_->navigator().drag(dx, dy);
+  liveInputs_.push_back(inputText("drag", dx, dy));
   dirty_ = true;
 }
 
 void TrialScreen::moveTo(double x, double y) {
-  if (live_ && layout_.stimulus.contains(x, y))
-    dirty_ = live_->pointAt({float((x - layout_.stimulus.x) / layout_.stimulus.width), float((y - layout_.stimulus.y) / layout_.stimulus.height)}) ||
-             dirty_;
+  if (!live_ || !layout_.stimulus.contains(x, y)) return;
+  const glm::vec2 at(float((x - layout_.stimulus.x) / layout_.stimulus.width), float((y - layout_.stimulus.y) / layout_.stimulus.height));
+  if (!live_->pointAt(at)) return;
+  liveInputs_.push_back(inputText("point", at.x, at.y));
+  dirty_ = true;
+}
+
+std::optional<LiveFrame> TrialScreen::shownLiveFrame(std::int64_t shownNs) {
+  if (!live_ || live_->rendered().count == liveShown_) return std::nullopt;
+  const LiveView::Rendered& r = live_->rendered();
+  std::string input = liveShown_ == 0 ? "start" : "";
+  for (const auto& i : liveInputs_) input += (input.empty() ? "" : "; ") + i;
+  liveInputs_.clear();
+  liveShown_ = r.count;
+  // Hashed here, once per picture shown: only pictures that reached the screen cost a hash.
+  return LiveFrame{r.count - 1, r.camera, r.lens, input, shownNs, framePixelsSha256(live_->frame())};
 }
 
 void TrialScreen::rejected(const std::string& error) {

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "study/run/canvas.hpp"
+#include "study/run/frame_log.hpp"
 #include "study/run/live_view.hpp"
 #include "study/run/responder.hpp"
 #include "study/window/screen_layout.hpp"
@@ -46,6 +47,10 @@ class TrialScreen {
   void rejected(const std::string& error);
 
   bool dirty() const { return dirty_; }
+  // Live trials, after each buffer swap at `shownNs`: the live view's picture as a LiveFrame when
+  // it is a new one (numbered from 0 in this trial, with the inputs that moved the view since the
+  // last frame shown, "start" for the first, and the SHA-256 of its pixels); nothing otherwise.
+  std::optional<LiveFrame> shownLiveFrame(std::int64_t shownNs);
   // The camera of a live trial (or the gauge's orientation) after a move, for the event log.
   std::string cameraText() const;
 
@@ -70,6 +75,8 @@ class TrialScreen {
   std::set<std::string> selected_;
   glm::dvec2 gauge_{0.0};         // (slant, tilt) in degrees
   glm::dvec2 gaugePointer_{0.0};  // where the drag is, in screen pixels
+  std::vector<std::string> liveInputs_;  // what moved the live view since the last frame shown
+  int liveShown_ = 0;                    // live pictures shown (logged) so far
   bool dirty_ = true;
 };
 

@@ -87,7 +87,8 @@ class WindowResponder final : public Responder {
   void showOnset(const TrialView& view, TrialScreen& screen, const Canvas& current, TrialClock& clock);
   bool takeTrialInputs(const TrialView& view, TrialScreen& screen, TrialClock& clock, int& shownSecond,
                        std::optional<Response>& ended);
-  void presentWhenDue(const Canvas& current, TrialClock& clock);
+  void presentFrame(TrialScreen& screen, const Canvas& current, TrialClock& clock);
+  void logLiveFrame(TrialScreen& screen, std::int64_t swapNs);
   std::optional<Input> nextInput(const Canvas& screen);
   std::optional<std::string> askField(const std::string& title, const FormField& field, int index, int count);
   int refreshHz() const;

@@ -122,22 +122,27 @@ bool WindowResponder::takeTrialInputs(const TrialView& view, TrialScreen& screen
   return false;
 }
 
-// Presents the current frame once a refresh interval has passed since the last swap, recording
-// the first frame's interval and frames over 1.5 refresh intervals (late).
-void WindowResponder::presentWhenDue(const Canvas& current, TrialClock& clock) {
-  if ((monotonicNs() - clock.lastSwapNs) / 1e6 >= clock.refreshMs) {
-    const std::int64_t swap = present(current);
-    const double interval = (swap - clock.lastSwapNs) / 1e6;
-    if (clock.lastSwapNs == clock.onsetNs && !clock.onsetFrameMs) clock.onsetFrameMs = interval;
-    if (interval > 1.5 * clock.refreshMs) ++clock.lateFrames;
-    clock.lastSwapNs = swap;
-  }
+// Presents the current frame, recording the first frame's interval and frames over 1.5 refresh
+// intervals (late); a new picture of a live view is logged as a "frame" event at its swap.
+void WindowResponder::presentFrame(TrialScreen& screen, const Canvas& current, TrialClock& clock) {
+  const std::int64_t swap = present(current);
+  const double interval = (swap - clock.lastSwapNs) / 1e6;
+  if (clock.lastSwapNs == clock.onsetNs && !clock.onsetFrameMs) clock.onsetFrameMs = interval;
+  if (interval > 1.5 * clock.refreshMs) ++clock.lateFrames;
+  clock.lastSwapNs = swap;
+  logLiveFrame(screen, swap);
+}
+
+void WindowResponder::logLiveFrame(TrialScreen& screen, std::int64_t swapNs) {
+  if (const auto shown = screen.shownLiveFrame(swapNs)) event(swapNs, kFrameEvent, frameJson(*shown));
 }
 
 // The stimulus is on screen from the swap after its first frame (the onset, committed at once
 // through view.onset); then frames are presented at the refresh rate (PsychoPy's frame record:
 // every swap interval is known, and frames over 1.5 refresh intervals count as late) until an
-// answer parses or the limit passes. Paused time is left out of the RT and the countdown.
+// answer parses or the limit passes. Paused time is left out of the RT and the countdown. A
+// frame is drawn only when it is due, so every picture a live view renders is shown and logged
+// (its renderer's state across frames replays exactly).
 std::optional<Response> WindowResponder::respond(const TrialView& view) {
   if (closed_) return std::nullopt;
   TrialScreen screen(view, blank(), painter_, texts());
@@ -146,6 +151,7 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
   clock.refreshMs = 1000.0 / (refreshHz() > 0 ? refreshHz() : 60);
   Canvas current = screen.frame(view.limitSeconds);
   showOnset(view, screen, current, clock);
+  logLiveFrame(screen, clock.onsetNs);
   int shownSecond = -1;
   while (true) {
     const double left = view.limitSeconds - clock.elapsed(monotonicNs());
@@ -156,12 +162,13 @@ std::optional<Response> WindowResponder::respond(const TrialView& view) {
     waitForInput(std::min(0.005, left), true);
     std::optional<Response> ended;
     if (takeTrialInputs(view, screen, clock, shownSecond, ended)) return ended;
+    if ((monotonicNs() - clock.lastSwapNs) / 1e6 < clock.refreshMs) continue;  // not due yet
     const int second = int(std::ceil(view.limitSeconds - clock.elapsed(monotonicNs())));
     if (screen.dirty() || second != shownSecond) {
       current = screen.frame(view.limitSeconds - clock.elapsed(monotonicNs()));
       shownSecond = second;
     }
-    presentWhenDue(current, clock);
+    presentFrame(screen, current, clock);
   }
 }
 

@@ -1,6 +1,6 @@
 // The Store contract on both stores (SQLite and PostgreSQL): slots re-assigned after a dropout, a
 // taken slot writes nothing, versions, sessions of live and dead stations, onsets, one response
-// per trial, and hostile participant ids and answers (quotes, SQL, 1 MB) stored and exported byte
+// per trial, live frames read back per trial, and hostile participant ids and answers (quotes, SQL, 1 MB) stored and exported byte
 // for byte. SQLite-only behaviour (file header, WAL): sqlite_store_test.cpp; PostgreSQL-only
 // (concurrency, lost server, read-only readers): postgres_store_test.cpp.
 #include <unistd.h>
@@ -137,6 +137,25 @@ TEST_P(StoreContract, OnsetsAreCommittedAndCountShowings) {
   EXPECT_EQ(peek(location, "SELECT detail FROM events WHERE kind = 'onset' ORDER BY id"), R"({"present_ms":1.5,"showing":1})");
   const std::string second = peek(location, "SELECT detail FROM events WHERE kind = 'onset' ORDER BY id DESC");
   EXPECT_NE(second.find("shown again after an interruption"), std::string::npos) << second;
+}
+
+TEST_P(StoreContract, LiveFramesAreReadBackPerTrialInTheOrderStored) {
+  const std::string location = fresh("store_frames");
+  const auto store = openStore(location);
+  const auto p = *store->enrol(e, "test", "p'1", 0, design, {fakeTrial(1), fakeTrial(2)});
+  const auto session = store->startSession(p.id, e, "test", "window");
+  const auto trials = store->trials(p.id);
+  store->recordEvent(session, trials.at(1).id, 300, "frame", R"({"index":0})");
+  store->recordEvent(session, trials.at(1).id, 310, "camera", "eye=1,2,3");
+  store->recordEvent(session, trials.at(1).id, 320, "frame", R"({"index":1})");
+  store->recordEvent(session, trials.at(0).id, 100, "onset", "{}");
+  const DataTable live = store->liveTrials(e.id);
+  ASSERT_EQ(live.rows.size(), 1u);
+  EXPECT_EQ(live.rows[0], (std::vector<std::string>{"p'1", std::to_string(trials.at(1).sequence), trials.at(1).phase, trials.at(1).taskId, "2"}));
+  const DataTable frames = store->trialFrames(trials.at(1).id);
+  const std::string s = std::to_string(session);
+  EXPECT_EQ(frames.rows, (std::vector<std::vector<std::string>>{{s, "300", R"({"index":0})"}, {s, "320", R"({"index":1})"}}));
+  EXPECT_TRUE(store->trialFrames(trials.at(0).id).rows.empty());
 }
 
 TEST_P(StoreContract, OneResponsePerTrial) {

@@ -16,73 +16,13 @@
 #include "study/window/screen_layout.hpp"
 #include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
+#include "tests/study/window_session.hpp"
 #include "tests/support/run_command.hpp"
 
 using namespace tlab::testing;
 using tlab::study::Database;
 
 namespace {
-
-const std::string kTlab = TLAB_EXE;
-bool haveTool(const std::string& name) { return runCommand("command -v " + name).exitCode == 0; }
-
-void pause(int ms) { std::this_thread::sleep_for(std::chrono::milliseconds(ms)); }
-
-struct StoredTrial {
-  nlohmann::json question;
-};
-
-// The trials of the participant once the runner has stored its plan (polls up to ~20 s).
-std::vector<StoredTrial> waitForTrials(const std::string& db) {
-  for (int i = 0; i < 200; ++i) {
-    try {
-      Database d(db, false);
-      auto s = d.prepare("SELECT question_json FROM trials ORDER BY sequence");
-      std::vector<StoredTrial> out;
-      while (s.step()) out.push_back({nlohmann::json::parse(s.text(0))});
-      if (!out.empty()) return out;
-    } catch (const std::exception&) {
-    }
-    pause(100);
-  }
-  return {};
-}
-
-// `tlab run EXPERIMENT` for one participant on its own Xvfb display (apart from window_cli_test's
-// 90..189), with xdotool driving its window.
-struct WindowSession {
-  std::filesystem::path dir;
-  std::string db, env, window;
-  pid_t xvfb = -1, tlab = -1;
-
-  WindowSession(const std::string& name, int displayBase, const std::string& experiment, const std::string& participant)
-      : dir(freshDir(name)), db((dir / "study.db").string()) {
-    const std::string display = ":" + std::to_string(displayBase + ::getpid() % 100);
-    xvfb = spawnProcess({"Xvfb", display, "-screen", "0", "800x600x24"}, (dir / "xvfb.out").string(), (dir / "xvfb.err").string());
-    pause(800);
-    env = "DISPLAY=" + display;
-    tlab = spawnProcess({kTlab, "run", studyData(experiment), "--participant", participant, "--db", db, "--size", "640x480"},
-                        (dir / "run.out").string(), (dir / "run.err").string(), {env});
-    const auto r = runCommand(env + " timeout 20 xdotool search --sync --name 'tlab run' | head -1");
-    window = r.out.substr(0, r.out.find('\n'));
-  }
-  CommandResult xdo(const std::string& args) const { return runCommand(env + " xdotool " + args); }
-  // Waits for tlab to end, stops Xvfb; tlab's exit code.
-  int finish() {
-    const int code = waitProcess(tlab);
-    ::kill(xvfb, SIGTERM);
-    waitProcess(xvfb);
-    return code;
-  }
-  std::string out() const { return readText((dir / "run.out").string()); }
-  std::string err() const { return readText((dir / "run.err").string()); }
-};
-
-// Presses `key` in the session's window, then waits `ms`.
-void press(const WindowSession& session, const std::string& key, int ms) {
-  session.xdo("key --window " + session.window + " " + key);
-  pause(ms);
-}
 
 // Moves the pointer to (x, y) of the window and clicks there.
 void clickAt(const WindowSession& session, int x, int y) {

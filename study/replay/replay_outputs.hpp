@@ -1,0 +1,34 @@
+#pragma once
+// What `tlab replay` writes of a replayed trial: the frames as PNG files (frame-000000.png, … in
+// the order shown), a video of them at their logged times (ffmpeg, Debian's, run as a subprocess
+// with the concat demuxer and each frame's duration), and an HTML page with the frames, the input
+// that moved each, its time, its check and the answer given.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "study/replay/logged_trial.hpp"
+#include "study/replay/trial_replay.hpp"
+
+namespace tlab::study {
+
+// "frame-000042.png": the file of the i-th frame shown.
+std::string frameFileName(std::size_t i);
+
+// How long frame i stayed on screen, in seconds: until the next frame of the same showing; the
+// last frame of a showing until the answer when it was given in that showing, else 1 s.
+double shownSeconds(const LoggedTrial& trial, std::size_t i);
+
+// The ffmpeg concat list of the frames in `folder` with their durations (the last one repeated,
+// as the concat demuxer needs to keep its duration).
+std::string concatList(const LoggedTrial& trial, const std::filesystem::path& folder);
+
+// Runs ffmpeg on the frames in `folder` (written as frameFileName names them) to `output`
+// (.webm: VP9, .mp4: H.264, otherwise ffmpeg's choice for the extension). Throws with one line when
+// ffmpeg is missing or fails (its last message).
+void writeReplayVideo(const LoggedTrial& trial, const std::filesystem::path& folder, const std::string& output);
+
+// The replay page; `framesFolder` is where the frames lie, relative to the page.
+std::string replayPage(const LoggedTrial& trial, const ReplayCheck& check, const std::string& framesFolder);
+
+}  // namespace tlab::study
