@@ -16,7 +16,15 @@
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
+#ifdef TLAB_SORTED_TEXELS
+// The sorted records read as a buffer texture (one word a texel): the same words, fetched for all
+// lanes at once where the CPU rasterizer reads storage buffers lane by lane.
+uniform usamplerBuffer uSortedWords;
+uint sortedWord(uint i) { return texelFetch(uSortedWords, int(i)).x; }
+#else
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
+uint sortedWord(uint i) { return sorted[i]; }
+#endif
 layout(std430, binding = BIND_LINKS) buffer Links { uvec4 links[]; };
 layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer Alpha { float alpha[]; };
 #ifdef TLAB_HAS_BETA
@@ -30,7 +38,7 @@ layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 // The pixels whose links need the full search: a count, then the pixel indices.
 layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPixels[]; };
 #endif
-#ifdef TLAB_GRADIENT_PAIR
+#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
 #endif
@@ -43,19 +51,19 @@ uniform float uWn;
 uniform float uS;
 uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
 
-float depthOf(uint f) { return uintBitsToFloat(sorted[fragWord(f, OFF_DEPTH)]); }
-vec3 normalOf(uint f) { return decodeNormal(sorted[fragWord(f, TLAB_OFF_NORMAL)]); }
+float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH))); }
+vec3 normalOf(uint f) { return decodeNormal(sortedWord(fragWord(f, TLAB_OFF_NORMAL))); }
 vec2 gradientOf(uint f) {
   uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
-#ifdef TLAB_GRADIENT_PAIR
+#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
   return uintBitsToFloat(sortedPairs[o >> 1]);
 #else
-  return vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
+  return vec2(uintBitsToFloat(sortedWord(o)), uintBitsToFloat(sortedWord(o + 1u)));
 #endif
 }
 uint componentOf(uint f) {
 #ifdef TLAB_HAS_IDS
-  return (sorted[fragWord(f, TLAB_OFF_IDS)] >> 16) & 0x7FFFu;
+  return (sortedWord(fragWord(f, TLAB_OFF_IDS)) >> 16) & 0x7FFFu;
 #else
   return 0u;
 #endif

@@ -16,6 +16,8 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                              float objectRadius, TransparencyFields& fields, NeighborSearch search) {
   constexpr GLuint kConnectWork = 22;  // BIND_CONNECT_WORK of ops/field_bindings.glsl
+  constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
+  constexpr GLint kSortedWordsUnit = 0;
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = layout.defines();
@@ -28,6 +30,20 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
   buffer.bindSorted();
   fields.bindCurrent();
+  // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
+  // that many words, the pass reads them so (TLAB_SORTED_TEXELS); else as a storage buffer.
+  GLint maxTexels = 0, sortedId = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
+  gpu::Texture sortedWords;
+  if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
+      double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
+    sortedWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
+    glTextureBufferRange(sortedWords.id(), GL_R32UI, GLuint(sortedId), 0,
+                         GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
+    glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
+    defines.emplace_back("TLAB_SORTED_TEXELS", "1");
+  }
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
@@ -40,6 +56,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uWn"), float(settings.wn));
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
+    glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
     gpu::dispatchLinear(items);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   };
