@@ -17,6 +17,7 @@
 namespace tlab::render {
 
 class GroupDrawOrder;  // ops/group_draw_order.hpp, for the one style that keeps it across frames
+class TransparencyFields;  // ops/transparency_fields.hpp, smart transparency's per-fragment fields
 
 struct FrameContext {
   const Scene& scene;
@@ -31,6 +32,7 @@ struct FrameContext {
   core::Image& image;  // the frame's result, row 0 = top
   gpu::ShaderCache& shaders;
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
+  TransparencyFields* fields = nullptr;  // per-fragment fields whose memory is kept across frames (smart style)
 
   // The fill as the type a pass needs (a style's passes know which fill the style declared).
   template <typename T>

@@ -1,8 +1,12 @@
 #version 450 core
-// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel, in two dispatches:
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel, in three dispatches:
 //  TLAB_PHASE 1: for every fragment, its geodesic neighbour in each of the 4 adjacent pixels by
 //     the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only when no other fragment of
-//     its own list matches that candidate better (Alg. 2);
+//     its own list matches that candidate better (Alg. 2) — where the answer follows from the
+//     fragment's own layer and the layers next to it in both lists (the fast path below); other
+//     links are left UNRESOLVED and their pixel is appended to a work list;
+//  TLAB_PHASE 3: the full bounded search (findNeighbor) for the UNRESOLVED links of the listed
+//     pixels only;
 //  TLAB_PHASE 2: links kept only when both fragments chose each other (ε is not symmetric: εz
 //     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
 //     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
@@ -12,7 +16,15 @@
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
+#ifdef TLAB_SORTED_TEXELS
+// The sorted records read as a buffer texture (one word a texel): the same words, fetched for all
+// lanes at once where the CPU rasterizer reads storage buffers lane by lane.
+uniform usamplerBuffer uSortedWords;
+uint sortedWord(uint i) { return texelFetch(uSortedWords, int(i)).x; }
+#else
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
+uint sortedWord(uint i) { return sorted[i]; }
+#endif
 layout(std430, binding = BIND_LINKS) buffer Links { uvec4 links[]; };
 layout(std430, binding = BIND_ALPHA_OUT) writeonly buffer Alpha { float alpha[]; };
 #ifdef TLAB_HAS_BETA
@@ -22,6 +34,14 @@ layout(std430, binding = BIND_BETA_OUT) writeonly buffer Beta { float beta[]; };
 layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer Gamma { float gamma[]; };
 #endif
 layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
+#if TLAB_PHASE != 2
+// The pixels whose links need the full search: a count, then the pixel indices.
+layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPixels[]; };
+#endif
+#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
+// The same records two words at a time: the gradient in one load (stride and offset are even).
+layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
+#endif
 
 uniform int uWidth;
 uniform int uHeight;
@@ -31,11 +51,22 @@ uniform float uWn;
 uniform float uS;
 uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
 
-float depthOf(uint f) { return uintBitsToFloat(sorted[fragWord(f, OFF_DEPTH)]); }
-vec3 normalOf(uint f) { return decodeNormal(sorted[fragWord(f, TLAB_OFF_NORMAL)]); }
+float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH))); }
+vec3 normalOf(uint f) { return decodeNormal(sortedWord(fragWord(f, TLAB_OFF_NORMAL))); }
 vec2 gradientOf(uint f) {
   uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
-  return vec2(uintBitsToFloat(sorted[o]), uintBitsToFloat(sorted[o + 1u]));
+#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
+  return uintBitsToFloat(sortedPairs[o >> 1]);
+#else
+  return vec2(uintBitsToFloat(sortedWord(o)), uintBitsToFloat(sortedWord(o + 1u)));
+#endif
+}
+uint componentOf(uint f) {
+#ifdef TLAB_HAS_IDS
+  return (sortedWord(fragWord(f, TLAB_OFF_IDS)) >> 16) & 0x7FFFu;
+#else
+  return 0u;
+#endif
 }
 
 // What ε reads of a fragment, loaded once per fragment rather than once per comparison.
@@ -50,11 +81,7 @@ Surfel surfel(uint f) {
   s.z = depthOf(f);
   s.g = gradientOf(f);
   s.n = normalOf(f);
-#ifdef TLAB_HAS_IDS
-  s.comp = (sorted[fragWord(f, TLAB_OFF_IDS)] >> 16) & 0x7FFFu;
-#else
-  s.comp = 0u;
-#endif
+  s.comp = componentOf(f);
   return s;
 }
 
@@ -159,14 +186,67 @@ uint findNeighbor(uint a, Surfel sa, uint headA, uint countA, uint headB, uint c
 
 bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < uWidth && q.y < uHeight; }
 
+// A link the fast path could not settle; phase 3 replaces it (fragment indices never reach it).
+const uint UNRESOLVED = 0xFFFFFFFEu;
+
+// The fast path of findNeighbor for fragment a = layer L of its list (sa; prev and next are layers
+// L - 1 and L + 1 when they exist) towards the list B of an adjacent pixel, of which it knows the
+// depths of layers L - 1, L and L + 1 (bDepths). It returns what findNeighbor returns whenever
+// that follows from these layers alone, else UNRESOLVED. Both halves rest on the bound that makes
+// findNeighbor's search exact (see beyond): a layer whose depth gap is beyond ε cannot match
+// better, nor can any layer further out on the same side, the list being sorted by depth.
+//  - The best candidate: layer L of B, when its ε is finite and layers L ± 1 of B lie on either
+//    side of the predicted depth and are beyond that ε (or do not exist).
+//  - The mutual test: findNeighbor visits the layers k of a's own list whose gap |z_k - z_b| -
+//    maxStep is not beyond ε (a contiguous range, the gap being V-shaped in k). Layers L ± 1 are
+//    tested here; the rest is settled when L ± 1 lie on the far side of b and are beyond (all
+//    layers further out then are too), or when the list ends there.
+uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint headB, uint countB, vec3 bDepths,
+                  ivec2 d, float maxStep) {
+  float bPrev = bDepths.x, bCur = bDepths.y, bNext = bDepths.z;
+  if (countB == 0u) return NO_NEIGHBOR;  // (also beyond the image edge)
+  if (L >= countB) return UNRESOLVED;
+  float predicted = sa.z + dot(vec2(d), sa.g);
+  Surfel sb;
+  sb.z = bCur;
+  sb.g = vec2(0.0);  // (ε never reads the candidate's gradient)
+  sb.n = normalOf(headB + L);
+  sb.comp = componentOf(headB + L);
+  float e = continuity(sa, sb, d);
+  if (!(e < 1.0 / 0.0)) return UNRESOLVED;
+  if (L + 1u < countB && !(bNext >= predicted && beyond(bNext - predicted, e))) return UNRESOLVED;
+  if (L > 0u && !(bPrev <= predicted && beyond(predicted - bPrev, e))) return UNRESOLVED;
+  // The mutual test over the own list (Alg. 2's second half).
+  bool nextVisited = false, prevVisited = false, nextFar = true, prevFar = true;
+  if (L + 1u < n) {
+    nextFar = next.z >= sb.z;
+    nextVisited = !beyond(nextFar ? next.z - sb.z - maxStep : sb.z - next.z - maxStep, e);
+    if (nextVisited && continuity(next, sb, d) < e) return NO_NEIGHBOR;
+  }
+  if (L > 0u) {
+    prevFar = prev.z <= sb.z;
+    prevVisited = !beyond(prevFar ? sb.z - prev.z - maxStep : prev.z - sb.z - maxStep, e);
+    if (prevVisited && continuity(prev, sb, d) < e) return NO_NEIGHBOR;
+  }
+  bool forwardDone = L + 2u >= n || (nextFar && !nextVisited);
+  bool backwardDone = L < 2u || (prevFar && !prevVisited);
+  return forwardDone && backwardDone ? headB + L : UNRESOLVED;
+}
+
 void main() {
+#if TLAB_PHASE == 3
+  uint item = linearInvocation();
+  if (item >= workCount) return;
+  uint pixel = workPixels[item];
+#else
   uint pixel = linearInvocation();
   if (pixel >= uint(uWidth * uHeight)) return;
+#endif
   uint n = pixelCount[pixel];
   if (n == 0u) return;
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
-#if TLAB_PHASE == 1
+#if TLAB_PHASE != 2
   vec4 maxStep = vec4(0.0);  // max |d·∇z| over this list, per direction
   for (uint layer = 0u; layer < n; ++layer) {
     vec2 g = abs(gradientOf(head + layer));
@@ -180,13 +260,46 @@ void main() {
     qHead[k] = pixelHead[qp];
     qCount[k] = pixelCount[qp];
   }
+#endif
+#if TLAB_PHASE == 1
+  // Walks the list with the layers next to the current one in registers: each layer's record,
+  // and each adjacent list's depths, are read once.
+  bool unresolved = false;
+#ifndef TLAB_ALL_PAIRS
+  Surfel prev = surfel(head), cur = prev, next = prev;
+  vec4 bPrev = vec4(0.0), bCur = vec4(0.0), bNext = vec4(0.0);
+  for (int k = 0; k < 4; ++k) {
+    if (qCount[k] > 0u) bNext[k] = depthOf(qHead[k]);
+  }
+#endif
   for (uint layer = 0u; layer < n; ++layer) {
     uint f = head + layer;
+    uvec4 link = uvec4(UNRESOLVED);
+#ifndef TLAB_ALL_PAIRS
+    prev = cur;
+    cur = next;
+    if (layer + 1u < n) next = surfel(f + 1u);
+    bPrev = bCur;
+    bCur = bNext;
+    for (int k = 0; k < 4; ++k) {
+      if (layer + 1u < qCount[k]) bNext[k] = depthOf(qHead[k] + layer + 1u);
+      link[k] = fastNeighbor(cur, layer, prev, next, n, qHead[k], qCount[k], vec3(bPrev[k], bCur[k], bNext[k]),
+                             kDirections[k], maxStep[k]);
+    }
+#endif
+    unresolved = unresolved || any(equal(link, uvec4(UNRESOLVED)));
+    links[f] = link;
+  }
+  if (unresolved) workPixels[atomicAdd(workCount, 1u)] = pixel;
+#elif TLAB_PHASE == 3
+  for (uint layer = 0u; layer < n; ++layer) {
+    uint f = head + layer;
+    uvec4 link = links[f];
+    if (!any(equal(link, uvec4(UNRESOLVED)))) continue;
     Surfel sf = surfel(f);
-    uint link[4];
     for (int k = 0; k < 4; ++k)
-      link[k] = findNeighbor(f, sf, head, n, qHead[k], qCount[k], kDirections[k], maxStep[k]);
-    links[f] = uvec4(link[0], link[1], link[2], link[3]);
+      if (link[k] == UNRESOLVED) link[k] = findNeighbor(f, sf, head, n, qHead[k], qCount[k], kDirections[k], maxStep[k]);
+    links[f] = link;
   }
 #else
   float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4

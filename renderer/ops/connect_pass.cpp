@@ -8,13 +8,43 @@ namespace tlab::render {
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
                                                      const SmartSettings& settings, float objectRadius,
                                                      NeighborSearch search) {
-  auto fields = std::make_unique<TransparencyFields>(buffer.fragmentCount(), settings.silhouettes, settings.halos);
-  gpu::ShaderDefines defines = buffer.layout().defines();
-  for (const auto& d : fields->defines()) defines.push_back(d);
+  auto fields = std::make_unique<TransparencyFields>();
+  connectFragments(buffer, shaders, settings, objectRadius, *fields, search);
+  return fields;
+}
+
+std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
+                             float objectRadius, TransparencyFields& fields, NeighborSearch search) {
+  constexpr GLuint kConnectWork = 22;  // BIND_CONNECT_WORK of ops/field_bindings.glsl
+  constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
+  constexpr GLint kSortedWordsUnit = 0;
+  fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
+  const FragmentLayout& layout = buffer.layout();
+  gpu::ShaderDefines defines = layout.defines();
+  for (const auto& d : fields.defines()) defines.push_back(d);
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
+  if (layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
+  gpu::Buffer& work = fields.connectWork(buffer.pixels());
+  const GLuint zero = 0;
+  glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
   buffer.bindSorted();
-  fields->bindCurrent();
-  for (const char* phase : {"1", "2"}) {
+  fields.bindCurrent();
+  // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
+  // that many words, the pass reads them so (TLAB_SORTED_TEXELS); else as a storage buffer.
+  GLint maxTexels = 0, sortedId = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
+  gpu::Texture sortedWords;
+  if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
+      double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
+    sortedWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
+    glTextureBufferRange(sortedWords.id(), GL_R32UI, GLuint(sortedId), 0,
+                         GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
+    glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
+    defines.emplace_back("TLAB_SORTED_TEXELS", "1");
+  }
+  const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
@@ -26,15 +56,22 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
     glUniform1f(program.uniform("uWn"), float(settings.wn));
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
-    gpu::dispatchLinear(buffer.pixels());
+    glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
+    gpu::dispatchLinear(items);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  }
+  };
+  // Phase 1 settles most links; phase 3 searches the pixels it listed; phase 2 keeps mutual links.
+  run("1", buffer.pixels());
+  std::uint32_t listed = 0;
+  work.download(&listed, sizeof listed);
+  if (listed > 0) run("3", listed);
+  run("2", buffer.pixels());
   // The pass wrote every field's output copy: make those current.
-  fields->swap(Field::Alpha);
-  if (fields->hasBeta()) fields->swap(Field::Beta);
-  if (fields->hasGamma()) fields->swap(Field::Gamma);
+  fields.swap(Field::Alpha);
+  if (fields.hasBeta()) fields.swap(Field::Beta);
+  if (fields.hasGamma()) fields.swap(Field::Gamma);
   gpu::checkGl("ops/connect.comp");
-  return fields;
+  return listed;
 }
 
 }  // namespace tlab::render

@@ -15,6 +15,11 @@ namespace tlab::render {
 // depth with a bound on ε (the default), or by comparing all pairs (the reference for tests).
 enum class NeighborSearch { Bounded, AllPairs };
 
+// Runs the pass into `fields`, resized for the buffer's fragments (kept memory is reused).
+// Returns how many pixels needed the full neighbour search (the rest took the fast path).
+std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
+                      float objectRadius, TransparencyFields& fields, NeighborSearch search = NeighborSearch::Bounded);
+
 // Allocates the fields for the buffer's fragments and runs the pass.
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
                                                      const SmartSettings& settings, float objectRadius,

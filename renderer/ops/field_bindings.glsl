@@ -10,6 +10,7 @@
 #define BIND_FLAGS 17
 #define BIND_ALPHA_OLD 18
 #define BIND_CHANGED 19  // one word: bit 1 β changed, bit 2 γ changed (fused spreading)
+#define BIND_CONNECT_WORK 22  // the connect pass's work list: a count, then pixels (ops/connect.comp)
 
 #define NO_NEIGHBOR 0xFFFFFFFFu
 // Flag bits: set = free (b = 1 in the paper), clear = fixed by a boundary condition (b = 0).

@@ -10,17 +10,31 @@ constexpr GLuint kLinks = 10, kAlphaIn = 11, kAlphaOut = 12, kBetaIn = 13, kBeta
                  kGammaOut = 16, kFlags = 17, kAlphaOld = 18;
 }  // namespace
 
-TransparencyFields::TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma)
-    : fragments_(fragments), withBeta_(withBeta), withGamma_(withGamma) {
+TransparencyFields::TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma) {
+  resize(fragments, withBeta, withGamma);
+}
+
+void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withGamma) {
+  fragments_ = fragments;
+  withBeta_ = withBeta;
+  withGamma_ = withGamma;
+  const auto fit = [](gpu::Buffer& b, std::size_t bytes) {
+    if (!b || b.size() < bytes) b = gpu::Buffer(bytes);
+  };
   const std::size_t floats = fragments * sizeof(float);
-  links_ = gpu::Buffer(fragments * sizeof(glm::uvec4));
-  flags_ = gpu::Buffer(fragments * 4);
-  alphaOld_ = gpu::Buffer(floats);
-  for (auto& b : alpha_.copies) b = gpu::Buffer(floats);
+  fit(links_, fragments * sizeof(glm::uvec4));
+  fit(flags_, fragments * 4);
+  fit(alphaOld_, floats);
+  for (auto& b : alpha_.copies) fit(b, floats);
   if (withBeta)
-    for (auto& b : beta_.copies) b = gpu::Buffer(floats);
+    for (auto& b : beta_.copies) fit(b, floats);
   if (withGamma)
-    for (auto& b : gamma_.copies) b = gpu::Buffer(floats);
+    for (auto& b : gamma_.copies) fit(b, floats);
+}
+
+gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
+  if (!connectWork_ || connectWork_.size() < (pixels + 1) * 4) connectWork_ = gpu::Buffer((pixels + 1) * 4);
+  return connectWork_;
 }
 
 gpu::ShaderDefines TransparencyFields::defines() const {

@@ -16,7 +16,12 @@ enum class Field { Alpha, Beta, Gamma };
 
 class TransparencyFields {
  public:
+  TransparencyFields() = default;  // no fragments yet: call resize
   TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma);
+  // For a frame of `fragments` fragments: keeps every buffer that is large enough (a frame's
+  // passes write every element they later read, so nothing needs clearing) and grows the others,
+  // so that frames of a kept renderer allocate (and the GL zeroes) no memory.
+  void resize(std::size_t fragments, bool withBeta, bool withGamma);
   std::size_t fragments() const { return fragments_; }
   bool hasBeta() const { return withBeta_; }
   bool hasGamma() const { return withGamma_; }
@@ -34,6 +39,8 @@ class TransparencyFields {
   const gpu::Buffer& links() const { return links_; }
   const gpu::Buffer& flags() const { return flags_; }
   gpu::Buffer& scratch() { return alphaOld_; }
+  // The connect pass's work list (a count, then up to `pixels` pixel indices), kept likewise.
+  gpu::Buffer& connectWork(std::size_t pixels);
 
   // Read-backs for tests, inspection and the diffusion benchmark.
   std::vector<float> read(Field field) const;
@@ -48,9 +55,9 @@ class TransparencyFields {
   PingPong& pair(Field f);
   const PingPong& pair(Field f) const;
 
-  std::size_t fragments_;
-  bool withBeta_, withGamma_;
-  gpu::Buffer links_, flags_, alphaOld_;
+  std::size_t fragments_ = 0;
+  bool withBeta_ = false, withGamma_ = false;
+  gpu::Buffer links_, flags_, alphaOld_, connectWork_;
   PingPong alpha_, beta_, gamma_;
 };
 

@@ -84,7 +84,7 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   PassTimer timer(request.timePasses);
   Fill* const fill = prepareFill(style, params, request, camera);
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, fill, image, shaders_, &drawOrder_};
+                     scene_.background, fill, image, shaders_, &drawOrder_, &fields_};
   if (fill) fill->build(frame, timer);
   std::vector<std::string> operations;
   if (!fill || !fill->composesPicture())

@@ -11,6 +11,7 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "core/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
+#include "renderer/ops/transparency_fields.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/frame/gpu_scene.hpp"
 #include "renderer/scene/scene.hpp"
@@ -96,6 +97,7 @@ class Renderer {
   gpu::ShaderCache shaders_;
   std::unique_ptr<Fill> fill_;  // kept across frames of the same size and settings (its pool, its GL objects)
   GroupDrawOrder drawOrder_;    // state across successive frames (seed 004, Alg. 1 line 1)
+  TransparencyFields fields_;   // smart transparency's fields: memory kept across frames (issue #29)
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.

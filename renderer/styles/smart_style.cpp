@@ -13,7 +13,8 @@ namespace {
 struct SmartFrame {
   SmartSettings settings;
   bool solves = false;  // whether a solve pass follows the connect pass
-  std::unique_ptr<TransparencyFields> fields;
+  TransparencyFields* fields = nullptr;  // the renderer's, or `own` without one
+  std::unique_ptr<TransparencyFields> own;
 };
 
 }  // namespace
@@ -62,7 +63,9 @@ std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& p
   // The links (Alg. 2), initial α and boundary conditions; when no solve pass is scheduled
   // (nothing to diffuse or spread) it notes what was left out.
   p.push_back(std::make_unique<FunctionPass>("connect", [frame](FrameContext& f, std::vector<std::string>& operations) {
-    frame->fields = connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius);
+    if (!f.fields) frame->own = std::make_unique<TransparencyFields>();
+    frame->fields = f.fields ? f.fields : frame->own.get();
+    connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius, *frame->fields);
     if (!frame->solves) operations = DiffusionSolver(f.shaders, frame->settings).operations();
   }));
   if (frame->solves)

@@ -30,6 +30,58 @@ TEST(NeighborLinks, BoundedSearchEqualsAllPairs) {
   }
 }
 
+// The connect pass settles most links from the layers next to each fragment (the fast path) and
+// searches the rest in full; on scenes that need both, the links equal those of comparing all
+// pairs (above), and the fields kept by a renderer give the same links frame after frame.
+TEST(NeighborLinks, FastPathAndFullSearchTogetherEqualAllPairs) {
+  struct Case {
+    const char* source;
+    int size;
+    bool bothPaths;  // some pixels take each path (the 64 close quads send every pixel to the full search)
+  };
+  for (const auto& [source, size, bothPaths] : {Case{"builtin:torus", 64, true}, Case{"builtin:nested-spheres?n=3", 64, true},
+                                                Case{"builtin:quad-stack?n=64", 24, false}}) {
+    SmartRig rig(loadScene(source), size, size);
+    std::size_t covered = 0;
+    for (auto c : rig.counts) covered += c > 0;
+    TransparencyFields kept;
+    const std::size_t searched =
+        connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, kept);
+    EXPECT_LE(searched, covered) << source;
+    if (bothPaths) {
+      EXPECT_GT(searched, 0u) << source;       // some pixels took the full search
+      EXPECT_LT(searched, covered) << source;  // and the fast path settled the others
+    }
+    const auto reference =
+        connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, NeighborSearch::AllPairs);
+    EXPECT_EQ(kept.readLinks(), reference->readLinks()) << source;
+    EXPECT_EQ(kept.readFlags(), reference->readFlags()) << source;
+    // Once more into the same (kept, no longer zeroed) memory: the same links.
+    connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, kept);
+    EXPECT_EQ(kept.readLinks(), reference->readLinks()) << source;
+    EXPECT_EQ(kept.read(Field::Beta), reference->read(Field::Beta)) << source;
+  }
+}
+
+// A renderer keeps smart transparency's fields (their memory) across frames: a frame after a
+// larger one, in memory holding that frame's values, is the picture a fresh renderer draws.
+TEST(SmartTransparency, KeptFieldsGiveTheFreshRenderersPicture) {
+  const Scene torus = loadScene("builtin:torus");
+  RenderRequest large, small;
+  large.style = small.style = "smart";
+  large.width = large.height = 96;
+  small.width = 64;
+  small.height = 48;
+  Renderer kept(torus);
+  const auto first = kept.render(small);
+  kept.render(large);
+  const auto again = kept.render(small);
+  Renderer fresh(torus);
+  const auto reference = fresh.render(small);
+  EXPECT_EQ(first.pixels, reference.pixels);
+  EXPECT_EQ(again.pixels, reference.pixels);
+}
+
 // A surface cut by the image edge: the missing neighbour beyond the edge is unknown, not "no
 // surface" — no β = 1 frame, and the border fragments stay free (Carnecky Sec. 5.3 on what
 // the image shows; issue #20 item 1).

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Hashes the pictures the renderer produces — every style on the six built-in scenes, smart
+# transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, several
+# components), `--fill list`, 512² `constant` and `smart` on the timing scenes, any glTF meshes
+# given in $TLAB_HASH_MESHES, and every PNG of `tlab figures` — so that a change to the fills,
+# the sort, the connect pass or the compositors can prove its pictures byte-identical:
+#   bash scripts/hash_render_outputs.sh OLD_TLAB > before.txt; bash scripts/hash_render_outputs.sh NEW_TLAB > after.txt
+#   diff before.txt after.txt
+# A render that fails prints "failed" in place of its hash (the same on both sides is no change).
+set -uo pipefail
+tlab=$(realpath "${1:-build/bin/tlab}")
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+styles="opaque constant unsorted smart angle normal-variation iris view-dependent dynamic curvature"
+scenes="sphere nested-spheres cube torus open-cylinders quad-stack?n=8"
+render() {  # name, then tlab render arguments
+  local name=$1
+  shift
+  if "$tlab" render "$@" -o "$name.png" > /dev/null 2>&1; then
+    echo "$(sha256sum < "$name.png" | cut -d' ' -f1)  $name"
+  else
+    echo "failed  $name"
+  fi
+}
+for scene in $scenes; do
+  for style in $styles; do render "$style-$scene" "builtin:$scene" --style "$style" --size 160x128; done
+  for fill in list; do
+    render "constant-$fill-$scene" "builtin:$scene" --style constant --fill "$fill" --size 160x128
+    render "smart-$fill-$scene" "builtin:$scene" --style smart --fill "$fill" --size 160x128
+  done
+  render "smart-adaptive-$scene" "builtin:$scene" --style smart --set alpha_init=adaptive --size 160x128
+  render "smart-nohalos-$scene" "builtin:$scene" --style smart --set halos=off --size 160x128
+  render "smart-nosilhouettes-$scene" "builtin:$scene" --style smart --set silhouettes=off --size 160x128
+  render "smart-diffusion-$scene" "builtin:$scene" --style smart --set spread=diffusion --set wz=4 --size 160x128
+done
+for scene in 'torus?triangles=100000' 'quad-stack?n=16'; do
+  for style in constant smart; do render "$style-512-$scene" "builtin:$scene" --style "$style" --size 512x512; done
+done
+for mesh in ${TLAB_HASH_MESHES:-}; do
+  for style in constant smart; do render "$style-$(basename "$mesh")" "$mesh" --style "$style" --size 384x384; done
+done
+if "$tlab" figures --out figures > /dev/null 2>&1; then
+  (cd figures && sha256sum -- *.png)
+else
+  echo "failed  figures"
+fi
