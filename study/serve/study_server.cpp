@@ -6,6 +6,7 @@
 #include "core/file_text.hpp"
 #include "study/serve/browser_responder.hpp"
 #include "study/serve/flow_pages.hpp"
+#include "study/serve/live_frames.hpp"
 #include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
 #include "study/serve/web_assets.hpp"
@@ -53,7 +54,7 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
                              {"Referrer-Policy", "no-referrer"},
                              {"X-Frame-Options", "DENY"},
-                             {"Content-Security-Policy", "default-src 'self'; img-src 'self'; style-src 'self'; script-src 'self'"}});
+                             {"Content-Security-Policy", "default-src 'self'; img-src 'self' blob:; style-src 'self'; script-src 'self'"}});
   http_.set_exception_handler([this](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
     std::string what = "unknown error";
     try {
@@ -179,6 +180,11 @@ void StudyServer::apiRoutes() {
     if (!s) return;
     reply(*s, req, res);
   });
+  http_.Post(std::string("/api/") + kToken + "/view", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = admitted(req, res);
+    if (!s) return;
+    view(*s, req, res);
+  });
   http_.Get(std::string("/api/") + kToken + "/image/([0-9a-f]{64})\\.png", [this](const httplib::Request& req, httplib::Response& res) {
     const auto s = admitted(req, res);
     if (!s) return;
@@ -275,6 +281,41 @@ void StudyServer::reply(ParticipantSession& session, const httplib::Request& req
     return sendJson(res, 200, {{"ok", channel->awaitHandled(std::chrono::milliseconds(5000))}});
   // The next screen comes after the runner stored this reply: it is the acknowledgement.
   sendJson(res, 200, channel->awaitScreenAfter(seq->get<int>(), std::chrono::milliseconds(15000)));
+}
+
+}  // namespace tlab::study
+
+namespace tlab::study {
+
+// The frame is logged (a "frame" event of the trial: camera, lens, input, pixel SHA-256, and as its
+// shown time the server's clock when it is handed to the connection) before it is sent; a frame
+// of a trial that has ended meanwhile is neither logged nor sent.
+void StudyServer::view(ParticipantSession& session, const httplib::Request& req, httplib::Response& res) {
+  const auto body = parseBody(req, res);
+  if (!body) return;
+  const auto seq = body->find("seq");
+  if (seq == body->end() || !seq->is_number_integer()) return refuse(res, 400, "view: 'seq' (the screen's number) is missing");
+  ViewInput input;
+  try {
+    input = parseViewInput(body->contains("input") ? (*body)["input"] : json::object());
+  } catch (const std::exception& e) {
+    return refuse(res, 400, std::string("view: ") + e.what());
+  }
+  const auto channel = session.channel();
+  const auto trial = channel->liveTrial(seq->get<int>());
+  if (!trial) return sendJson(res, 409, {{"error", "view: the screen on show is not this live trial"}, {"screen", channel->current()}});
+  LiveAnswer a = study_.worker.liveFrame({session.token(), trial, input});
+  if (a.status == LiveAnswer::Status::Superseded) return sendJson(res, 409, {{"error", "view: superseded by newer input"}, {"superseded", true}});
+  a.frame.shownNs = monotonicNs();
+  if (!channel->noteFrame(seq->get<int>(), trial, a.frame.shownNs, frameJson(a.frame)))
+    return sendJson(res, 409, {{"error", "view: the trial has ended"}, {"screen", channel->current()}});
+  char timing[120];
+  std::snprintf(timing, sizeof timing, "render;dur=%.3f, hash;dur=%.3f, encode;dur=%.3f", a.renderMs, a.hashMs, a.encodeMs);
+  res.set_header("Cache-Control", "no-store");
+  res.set_header("Server-Timing", timing);
+  res.set_header("X-Frame-Index", std::to_string(a.frame.index));
+  res.set_header("X-Frame-Sha256", a.frame.sha256);
+  res.set_content(std::move(a.png), "image/png");
 }
 
 }  // namespace tlab::study
