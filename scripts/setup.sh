@@ -13,6 +13,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xdotool imagemagick chromium chromium-driver python3-selenium
   libcpp-httplib-dev libpqxx-dev postgresql  # tlab serve and the PostgreSQL store
+  libpng-dev  # tlab serve's live frames: lossless PNG at zlib's fastest level
   nginx  # the TLS reverse proxy of docs/nginx-tlab.conf, tested on loopback
   clang libclang-rt-14-dev time e2fsprogs
   python3-vtk9  # bench/vtk_compare.py (run by hand)

@@ -55,9 +55,9 @@ struct LiveRequest {
 struct LiveAnswer {
   enum class Status { Frame, Superseded };
   Status status = Status::Superseded;
-  LiveFrame frame;           // index, camera, lens, input and pixel SHA-256 (shownNs is set when it is sent)
-  std::string png;           // the frame, lossless
-  double renderMs = 0.0, hashMs = 0.0, encodeMs = 0.0;  // what it cost on the GL worker
+  LiveFrame frame;                      // index, camera, lens and input (the SHA-256 and shownNs are set where it is sent)
+  std::shared_ptr<const Canvas> pixels;  // the frame as rendered
+  double renderMs = 0.0;                 // what it cost on the GL worker
 };
 
 class LiveFrameQueue {

@@ -160,6 +160,7 @@ double msSince(LiveClock::time_point start) { return std::chrono::duration<doubl
 
 // The participant's input moves the session's navigator (the window's arithmetic), each motion
 // kept only when the eye stays within the trial's bounds; then the frame from exactly that camera.
+// Its hash and PNG are made by the HTTP thread that sends it: the GL worker only renders.
 LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
   LiveSlot& slot = liveSlots_[request.session];
   if (slot.trial != request.trial) {
@@ -178,16 +179,9 @@ LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
   a.frame.camera = view.navigator().camera();
   a.frame.lens = slot.lens;
   a.frame.input = in.describe();
-  auto start = LiveClock::now();
-  const Canvas frame = view.frameFrom(a.frame.camera);  // never the cached frame(): the exact camera logged
+  const auto start = LiveClock::now();
+  a.pixels = std::make_shared<const Canvas>(view.frameFrom(a.frame.camera));  // never the cached frame(): the exact camera logged
   a.renderMs = msSince(start);
-  start = LiveClock::now();
-  a.frame.sha256 = framePixelsSha256(frame);
-  a.hashMs = msSince(start);
-  start = LiveClock::now();
-  const std::vector<std::uint8_t> png = core::encodePng(frame.toImage());
-  a.png.assign(png.begin(), png.end());
-  a.encodeMs = msSince(start);
   while (liveSlots_.size() > kLiveViews) {  // the least recently used view goes
     auto oldest = liveSlots_.begin();
     for (auto it = liveSlots_.begin(); it != liveSlots_.end(); ++it)

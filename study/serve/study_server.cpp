@@ -1,11 +1,13 @@
 #include "study/serve/study_server.hpp"
 
+#include <chrono>
 #include <cstdio>
 #include <stdexcept>
 
 #include "core/file_text.hpp"
 #include "study/serve/browser_responder.hpp"
 #include "study/serve/flow_pages.hpp"
+#include "study/serve/frame_png.hpp"
 #include "study/serve/live_frames.hpp"
 #include "study/serve/request_checks.hpp"
 #include "study/serve/server_pages.hpp"
@@ -306,16 +308,23 @@ void StudyServer::view(ParticipantSession& session, const httplib::Request& req,
   if (!trial) return sendJson(res, 409, {{"error", "view: the screen on show is not this live trial"}, {"screen", channel->current()}});
   LiveAnswer a = study_.worker.liveFrame({session.token(), trial, input});
   if (a.status == LiveAnswer::Status::Superseded) return sendJson(res, 409, {{"error", "view: superseded by newer input"}, {"superseded", true}});
+  // The hash and the PNG here, on this request's thread: the GL worker renders the next frame meanwhile.
+  auto start = std::chrono::steady_clock::now();
+  a.frame.sha256 = framePixelsSha256(*a.pixels);
+  const double hashMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  start = std::chrono::steady_clock::now();
+  std::string png = encodeFramePng(*a.pixels);
+  const double encodeMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   a.frame.shownNs = monotonicNs();
   if (!channel->noteFrame(seq->get<int>(), trial, a.frame.shownNs, frameJson(a.frame)))
     return sendJson(res, 409, {{"error", "view: the trial has ended"}, {"screen", channel->current()}});
   char timing[120];
-  std::snprintf(timing, sizeof timing, "render;dur=%.3f, hash;dur=%.3f, encode;dur=%.3f", a.renderMs, a.hashMs, a.encodeMs);
+  std::snprintf(timing, sizeof timing, "render;dur=%.3f, hash;dur=%.3f, encode;dur=%.3f", a.renderMs, hashMs, encodeMs);
   res.set_header("Cache-Control", "no-store");
   res.set_header("Server-Timing", timing);
   res.set_header("X-Frame-Index", std::to_string(a.frame.index));
   res.set_header("X-Frame-Sha256", a.frame.sha256);
-  res.set_content(std::move(a.png), "image/png");
+  res.set_content(std::move(png), "image/png");
 }
 
 }  // namespace tlab::study
