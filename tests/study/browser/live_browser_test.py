@@ -90,26 +90,17 @@ def explore(p, navigation):
 
 def walk(p, server):
     shown = {}
-    p.driver.get(server.link(base.PARTICIPANT))
-    p.until(lambda: "/p/" in p.driver.current_url, "the redirect to the session page")
-    s = p.next_screen(-1)
-    while True:
-        kind, seq = s["kind"], s["seq"]
-        if kind == "trial":
-            p.trial_ready()
-            live = p.driver.execute_script("return current.live;")
-            check(live is not None and "live" in p.find("#stage").get_attribute("class"), f"the trial is not live: {live}")
-            shown["walk" if live["navigation"] == "walk" else "orbit"] = explore(p, live["navigation"])
-            check(live["lens"] == (live["navigation"] == "orbit"), f"the lens follows the cursor only in the orbit trial's style: {live}")
-            p.type_number(2, select_all=True)
-        elif kind == "message":
-            p.find("#continue").click()
-        elif kind == "end":
-            p.screenshot("end")
-            return shown
-        else:
-            raise AssertionError(f"unexpected screen kind {kind!r}")
-        s = p.next_screen(seq)
+
+    def answer(seq):
+        live = p.driver.execute_script("return current.live;")
+        check(live is not None and "live" in p.find("#stage").get_attribute("class"), f"the trial is not live: {live}")
+        shown["walk" if live["navigation"] == "walk" else "orbit"] = explore(p, live["navigation"])
+        check(live["lens"] == (live["navigation"] == "orbit"), f"the lens follows the cursor only in the orbit trial's style: {live}")
+        p.type_number(2, select_all=True)
+
+    base.walk_trials(p, server, answer)
+    p.screenshot("end")
+    return shown
 
 
 def check_stored(tlab, db, folder, shown):
