@@ -166,12 +166,17 @@ LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
   if (slot.trial != request.trial) {
     slot = LiveSlot{};
     slot.trial = request.trial;
-    slot.view = std::make_unique<LiveView>(request.trial->scene, request.trial->stimulus, request.trial->navigation, request.trial->start);
   }
   slot.used = ++liveUses_;
+  if (!slot.view) {
+    slot.view = std::make_unique<LiveView>(request.trial->scene, request.trial->stimulus, request.trial->navigation, request.trial->start);
+    if (slot.navigator) slot.view->navigator() = *slot.navigator;  // a view dropped for others: made again where it was
+    if (slot.lens) slot.view->pointAt(*slot.lens);
+  }
   LiveView& view = *slot.view;
   const ViewInput& in = request.input;
   steer(view.navigator(), *request.trial, in);
+  slot.navigator = view.navigator();
   if (in.point && view.pointAt(*in.point)) slot.lens = glm::clamp(*in.point, glm::vec2(0.0f), glm::vec2(1.0f));
   LiveAnswer a;
   a.status = LiveAnswer::Status::Frame;
@@ -182,11 +187,13 @@ LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
   const auto start = LiveClock::now();
   a.pixels = std::make_shared<const Canvas>(view.frameFrom(a.frame.camera));  // never the cached frame(): the exact camera logged
   a.renderMs = msSince(start);
-  while (liveSlots_.size() > kLiveViews) {  // the least recently used view goes
-    auto oldest = liveSlots_.begin();
-    for (auto it = liveSlots_.begin(); it != liveSlots_.end(); ++it)
-      if (it->second.used < oldest->second.used) oldest = it;
-    liveSlots_.erase(oldest);
+  std::size_t views = 0;
+  for (const auto& [session, other] : liveSlots_) views += other.view ? 1 : 0;
+  for (; views > kLiveViews; --views) {  // the least recently used view goes
+    LiveSlot* oldest = nullptr;
+    for (auto& [session, other] : liveSlots_)
+      if (other.view && (!oldest || other.used < oldest->used)) oldest = &other;
+    oldest->view.reset();
   }
   return a;
 }

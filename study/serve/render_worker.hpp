@@ -43,7 +43,7 @@ class RenderWorker : public StimulusSource {
   // "superseded" when newer input of the same session came before it was begun.
   LiveAnswer liveFrame(LiveRequest request);
   static constexpr double kLiveFramesPerSecond = 30.0;
-  static constexpr std::size_t kLiveViews = 64;  // kept at once; the least recently used goes first
+  static constexpr std::size_t kLiveViews = 16;  // renderers kept at once; the least recently used goes first
   const gpu::GpuInfo& gpuInfo() const { return info_; }
   // The PNG file of an image this worker made or prepared, by SHA-256 name; nullopt otherwise.
   std::optional<std::string> imagePath(const std::string& sha256) const;
@@ -64,13 +64,16 @@ class RenderWorker : public StimulusSource {
   std::string writeImage(const core::Image& image);  // GL thread
   Turntable renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared);  // GL thread
   LiveAnswer renderLive(const LiveRequest& request);  // GL thread
-  // One session's live trial on the GL thread: its view (navigator and renderer), the next frame's
-  // index and the lens where the cursor last put it.
+  // One session's live trial on the GL thread: where its camera is, the next frame's index, the
+  // lens where the cursor last put it, and its view (a renderer; at most kLiveViews are kept, the
+  // least recently used dropped first and made again when its session asks: the camera, index
+  // and lens stay here).
   struct LiveSlot {
     std::shared_ptr<const LiveTrial> trial;
-    std::unique_ptr<LiveView> view;
+    std::optional<CameraNavigator> navigator;
     int next = 0;
     std::optional<glm::vec2> lens;
+    std::unique_ptr<LiveView> view;
     std::uint64_t used = 0;
   };
 
