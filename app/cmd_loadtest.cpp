@@ -3,6 +3,7 @@
 // and the server's figures are printed: participants finished and failed, responses
 // acknowledged, throughput, and the latency percentiles from an answer to its acknowledgement
 // and of every request. Exit code 1 when a participant failed, with the first error.
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -25,6 +26,14 @@ void loadtest(const study::LoadOptions& o) {
   printLatency("answer -> acknowledgement", r.ack);
   printLatency("all requests", r.requests);
   printLatency("display report -> first screen", r.start);
+  if (r.frame.count > 0) {  // live trials: frames a second of each participant while exploring, and input → frame
+    std::vector<double> fps = r.framesPerSecond;
+    std::sort(fps.begin(), fps.end());
+    std::printf("live frames: %zu; frames/s per participant: min %.1f  median %.1f  max %.1f\n", r.frame.count, fps.front(), fps[fps.size() / 2],
+                fps.back());
+    printLatency("live input -> frame", r.frame);
+    std::printf("live frame on the GL worker (ms, p50): render %.2f  pixel SHA-256 %.2f  PNG %.2f\n", r.render.p50, r.hash.p50, r.encode.p50);
+  }
   if (r.reconnects > 0) std::printf("reconnections: %d\n", r.reconnects);
   std::fflush(stdout);
   if (r.failed > 0) throw std::runtime_error(r.firstError);
@@ -41,6 +50,10 @@ void addLoadtestCommand(CLI::App& app) {
   cmd->add_option("--think", o->behaviour.thinkMs, "mean think time before each answer or button press, ms (exponential)")
       ->capture_default_str()
       ->check(CLI::Range(0.0, 3600000.0));
+  cmd->add_option("--live-seconds", o->behaviour.liveSeconds,
+                  "live trials (orbit, walk): explore each this long, input sent as fast as frames come back (0: the think time)")
+      ->capture_default_str()
+      ->check(CLI::Range(0.0, 3600.0));
   cmd->add_option("--seed", o->seed, "seed of the think times and answers")->capture_default_str();
   cmd->add_option("--pid-prefix", o->pidPrefix, "participant ids: PREFIX001, PREFIX002, ...")->capture_default_str();
   cmd->add_option("--param", o->parameter, "the link's participant parameter (the experiment's [online] participant_parameter)")

@@ -124,7 +124,8 @@ struct OnlineSpec {
   std::string studyParameter;                // stored with the session when given ("STUDY_ID")
   std::string sessionParameter;              // ("SESSION_ID")
   double timeoutMinutes = 60.0;              // no request for this long: the participant is dropped, the slot freed
-  int turntableAzimuths = 36;                // orbit tasks: pre-rendered views around the target ...
+  bool live = true;                          // orbit and walk tasks rendered live by the server (false: orbit as a turntable)
+  int turntableAzimuths = 36;                // orbit tasks with live = false: pre-rendered views around the target ...
   int turntableElevations = 5;               // ... at this many elevations
   double turntableElevationDegrees = 60.0;   // spread of the elevations (centred on the start view)
   std::string completionUrl;                 // the debrief links here (Prolific's completion URL)

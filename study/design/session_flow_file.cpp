@@ -125,7 +125,7 @@ void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
   const toml::table* t = optionalTable(r, root, "online",
                                        {"participant_parameter", "study_parameter", "session_parameter", "timeout_minutes", "turntable_azimuths",
                                         "turntable_elevations", "turntable_elevation_degrees", "completion_url", "size_calibration",
-                                        "calibration_no_card", "stimulus_size", "devices"});
+                                        "calibration_no_card", "stimulus_size", "devices", "live"});
   if (!t) return;
   o.participantParameter = r.string(*t, "participant_parameter", "online", false, o.participantParameter);
   if (o.participantParameter.empty()) r.fail(t->get("participant_parameter"), "online.participant_parameter", "must not be empty");
@@ -147,6 +147,10 @@ void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
   if (const toml::node* n = t->get("calibration_no_card")) {
     if (!n->is_boolean()) r.fail(n, "online.calibration_no_card", "must be true or false");
     o.calibrationNoCard = n->as_boolean()->get();
+  }
+  if (const toml::node* n = t->get("live")) {
+    if (!n->is_boolean()) r.fail(n, "online.live", "must be true or false");
+    o.live = n->as_boolean()->get();
   }
   readStimulusSize(r, *t, o);
   if (t->get("devices")) o.devices = r.strings(*t, "devices", "online");

@@ -57,7 +57,7 @@ LoadResult runLoad(const LoadOptions& o) {
   }
   LoadResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::vector<double> ack, requests, starts;
+  std::vector<double> ack, requests, starts, frames, render, hash, encode;
   for (const auto& run : runs) {
     (run.finished ? r.finished : r.failed) += 1;
     if (!run.finished && r.firstError.empty()) r.firstError = run.error;
@@ -66,11 +66,20 @@ LoadResult runLoad(const LoadOptions& o) {
     ack.insert(ack.end(), run.ackMs.begin(), run.ackMs.end());
     requests.insert(requests.end(), run.requestMs.begin(), run.requestMs.end());
     starts.insert(starts.end(), run.startMs.begin(), run.startMs.end());
+    frames.insert(frames.end(), run.frameMs.begin(), run.frameMs.end());
+    render.insert(render.end(), run.renderMs.begin(), run.renderMs.end());
+    hash.insert(hash.end(), run.hashMs.begin(), run.hashMs.end());
+    encode.insert(encode.end(), run.encodeMs.begin(), run.encodeMs.end());
+    if (run.liveSeconds > 0.0) r.framesPerSecond.push_back(double(run.frameMs.size()) / run.liveSeconds);
   }
   r.acknowledged = int(r.acked.size());
   r.ack = percentiles(std::move(ack));
   r.requests = percentiles(std::move(requests));
   r.start = percentiles(std::move(starts));
+  r.frame = percentiles(std::move(frames));
+  r.render = percentiles(std::move(render));
+  r.hash = percentiles(std::move(hash));
+  r.encode = percentiles(std::move(encode));
   return r;
 }
 

@@ -38,6 +38,9 @@ struct LoadResult {
   int reconnects = 0;
   double seconds = 0.0;  // wall time of the whole run
   Percentiles ack, requests, start;  // answer → acknowledgement; every request; display report → first screen
+  Percentiles frame;                 // live trials: input → frame
+  Percentiles render, hash, encode;  // live trials: each frame's cost on the server's GL worker
+  std::vector<double> framesPerSecond;  // live trials: each participant's frames a second while exploring
   std::vector<AckedTrial> acked;  // every acknowledged trial, by participant
   std::string firstError;         // the first failed participant's error line
   double throughput() const { return seconds > 0.0 ? acknowledged / seconds : 0.0; }

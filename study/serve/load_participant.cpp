@@ -53,7 +53,7 @@ LoadParticipant::Reply LoadParticipant::send(const std::string& method, const st
     throw ConnectionLost(method + " " + path + ": " + httplib::to_string(r.error()));
   }
   if (r->status >= 500) throw ConnectionLost(method + " " + path + ": HTTP " + std::to_string(r->status) + " " + brief(r->body));
-  return {r->status, r->body, r->get_header_value("Location")};
+  return {r->status, r->body, r->get_header_value("Location"), r->get_header_value("Server-Timing")};
 }
 
 double LoadParticipant::thinkTime() {

@@ -38,6 +38,9 @@ LoadTarget parseLoadTarget(const std::string& url, const std::string& parameter)
 struct LoadBehaviour {
   double thinkMs = 200.0;     // mean think time (exponential), before every button press and answer
   double retrySeconds = 0.0;  // how long one outage may last before the participant fails (0: never retry)
+  // Live trials (orbit, walk): explored this long (0: for the think time) by sending input as fast as
+  // frames come back, one request at a time, as the page does — orbiting drags, walking steps and turns.
+  double liveSeconds = 0.0;
 };
 
 // A trial the server acknowledged: its phase, its position among that phase's trials (the page's
@@ -55,6 +58,9 @@ struct ParticipantRun {
   std::vector<AckedTrial> acked;
   std::vector<double> ackMs, requestMs;  // answer → acknowledgement; every request
   std::vector<double> startMs;           // display report → first screen (the server enrols and plans the session)
+  std::vector<double> frameMs;           // live trials: input sent → its frame received
+  std::vector<double> renderMs, hashMs, encodeMs;  // live trials: what each frame cost on the server's GL worker
+  double liveSeconds = 0.0;              // time spent exploring live trials (frames / liveSeconds: frames a second)
   int reconnects = 0;
 };
 
@@ -75,12 +81,15 @@ class LoadParticipant {
     int status = 0;
     std::string body;
     std::string location;
+    std::string timing;  // the Server-Timing header (a live frame's render, hash and encode times)
   };
   Reply send(const std::string& method, const std::string& path, const nlohmann::json* body = nullptr);
   nlohmann::json arrive();
   nlohmann::json recover(std::string why);
   nlohmann::json step(const nlohmann::json& screen);
   nlohmann::json trial(const nlohmann::json& screen);
+  // A live trial's views for `ms`: input after input, each sent when the previous frame arrived.
+  void explore(const nlohmann::json& screen, double ms);
   // Sends a reply that ends `screen`; returns the next screen. `acknowledged`: the server took the
   // reply (200) and moved on to a later screen, which it does only after storing the reply.
   nlohmann::json finishing(const nlohmann::json& screen, nlohmann::json body, bool* acknowledged = nullptr);

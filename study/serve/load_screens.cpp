@@ -2,6 +2,8 @@
 // participant does on a message, consent, form, break and trial screen.
 #include <httplib.h>
 
+#include <cstdlib>
+#include <cstring>
 #include <stdexcept>
 #include <thread>
 
@@ -68,6 +70,34 @@ json LoadParticipant::finishing(const json& screen, json body, bool* acknowledge
   return pastWait(screenOf(r, "reply"));
 }
 
+// Orbiting: a drag of 8 picture pixels (2.4°) right and 1 up per frame; walking: a step forward,
+// then a drag to look right, in turn. The first request has no input: the start view.
+void LoadParticipant::explore(const json& screen, double ms) {
+  const bool walking = screen["live"].value("navigation", "") == "walk";
+  const std::string path = "/api/" + token_ + "/view";
+  const auto start = std::chrono::steady_clock::now();
+  const auto elapsedMs = [&start] { return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(); };
+  for (int n = 0; n == 0 || elapsedMs() < ms; ++n) {
+    json input = json::object();
+    if (n > 0 && walking && n % 2 == 1) input = {{"forward", 1}};
+    else if (n > 0 && walking) input = {{"dx", 8}};
+    else if (n > 0) input = {{"dx", 8}, {"dy", -1}};
+    const json body{{"seq", screen.value("seq", 0)}, {"input", input}};
+    const auto sent = std::chrono::steady_clock::now();
+    const Reply r = send("POST", path, &body);
+    if (r.status == 200) {
+      run_.frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
+      for (auto [name, into] : {std::pair{"render;dur=", &run_.renderMs}, {"hash;dur=", &run_.hashMs}, {"encode;dur=", &run_.encodeMs}})
+        if (const auto at = r.timing.find(name); at != std::string::npos) into->push_back(std::atof(r.timing.c_str() + at + std::strlen(name)));
+      continue;
+    }
+    if (r.status == 409 && r.body.find("superseded") != std::string::npos) continue;
+    if (r.status == 409) break;  // the trial is gone (its time ran out)
+    throw std::runtime_error("view refused: HTTP " + std::to_string(r.status) + " " + brief(r.body));
+  }
+  run_.liveSeconds += elapsedMs() / 1000.0;
+}
+
 json LoadParticipant::trial(const json& screen) {
   fetchImages(screen);
   const std::string reply = "/api/" + token_ + "/reply";
@@ -86,6 +116,8 @@ json LoadParticipant::trial(const json& screen) {
                     {"elevation", t["start"][1].get<int>()}, {"t_ms", rt / 2.0}};
     send("POST", reply, &view);
     think(rt / 2.0);
+  } else if (screen.contains("live")) {
+    explore(screen, behaviour_.liveSeconds > 0.0 ? behaviour_.liveSeconds * 1000.0 : rt);
   } else {
     think(rt);
   }

@@ -1,5 +1,6 @@
 #include "study/serve/render_worker.hpp"
 
+#include <chrono>
 #include <filesystem>
 
 #include "core/image.hpp"
@@ -45,15 +46,35 @@ void RenderWorker::loop(std::promise<void>& ready) {
   }
   for (;;) {
     std::function<void()> job;
+    std::optional<LiveFrameQueue::Taken> frame;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stopping_ || !jobs_.empty(); });
-      if (jobs_.empty()) break;
-      job = std::move(jobs_.front());
-      jobs_.pop_front();
+      for (;;) {  // preparation first; then a live frame that is due; else wait for either
+        if (!jobs_.empty() || stopping_) break;
+        if ((frame = liveQueue_.take(LiveClock::now()))) break;
+        if (const auto due = liveQueue_.nextDue()) wake_.wait_until(lock, *due);
+        else wake_.wait(lock);
+      }
+      if (!frame && jobs_.empty()) break;
+      if (!frame) {
+        job = std::move(jobs_.front());
+        jobs_.pop_front();
+      }
     }
-    job();
+    if (job) job();
+    if (frame) {
+      try {
+        frame->answer.set_value(renderLive(frame->request));
+      } catch (...) {
+        frame->answer.set_exception(std::current_exception());
+      }
+    }
   }
+  {
+    std::lock_guard lock(mutex_);
+    liveQueue_.clear();
+  }
+  liveSlots_.clear();  // their renderers' GL objects go while the context is current
   library_.reset();
   painter_.reset();
 }
@@ -114,9 +135,67 @@ TrialImages RenderWorker::images(const PlannedTrial& trial, const PreparedTrial&
     if (const auto it = trialImages_.find(key); it != trialImages_.end()) return it->second;
     TrialImages images;
     if (prepared.floorPlanImage) images.floorPlanSha256 = writeImage(prepared.floorPlanImage->toImage());
-    if (trial.navigation == Navigation::Orbit) images.turntable = renderTurntable(trial, prepared);
+    if (trial.navigation != Navigation::None && online_.live) images.live = true;
+    else if (trial.navigation == Navigation::Orbit) images.turntable = renderTurntable(trial, prepared);
     return trialImages_.emplace(key, images).first->second;
   });
+}
+
+LiveAnswer RenderWorker::liveFrame(LiveRequest request) {
+  std::future<LiveAnswer> answer;
+  {
+    std::lock_guard lock(mutex_);
+    if (stopping_) return LiveAnswer{};
+    answer = liveQueue_.submit(std::move(request));
+  }
+  wake_.notify_one();
+  return answer.get();
+}
+
+namespace {
+
+double msSince(LiveClock::time_point start) { return std::chrono::duration<double, std::milli>(LiveClock::now() - start).count(); }
+
+}  // namespace
+
+// The participant's input moves the session's navigator (the window's arithmetic), each motion
+// kept only when the eye stays within the trial's bounds; then the frame from exactly that camera.
+// Its hash and PNG are made by the HTTP thread that sends it: the GL worker only renders.
+LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
+  LiveSlot& slot = liveSlots_[request.session];
+  if (slot.trial != request.trial) {
+    slot = LiveSlot{};
+    slot.trial = request.trial;
+  }
+  slot.used = ++liveUses_;
+  if (!slot.view) {
+    slot.view = std::make_unique<LiveView>(request.trial->scene, request.trial->stimulus, request.trial->navigation, request.trial->start);
+    if (slot.navigator) slot.view->navigator() = *slot.navigator;  // a view dropped for others: made again where it was
+    if (slot.lens) slot.view->pointAt(*slot.lens);
+  }
+  LiveView& view = *slot.view;
+  const ViewInput& in = request.input;
+  steer(view.navigator(), *request.trial, in);
+  slot.navigator = view.navigator();
+  if (in.point && view.pointAt(*in.point)) slot.lens = glm::clamp(*in.point, glm::vec2(0.0f), glm::vec2(1.0f));
+  LiveAnswer a;
+  a.status = LiveAnswer::Status::Frame;
+  a.frame.index = slot.next++;
+  a.frame.camera = view.navigator().camera();
+  a.frame.lens = slot.lens;
+  a.frame.input = in.describe();
+  const auto start = LiveClock::now();
+  a.pixels = std::make_shared<const Canvas>(view.frameFrom(a.frame.camera));  // never the cached frame(): the exact camera logged
+  a.renderMs = msSince(start);
+  std::size_t views = 0;
+  for (const auto& [session, other] : liveSlots_) views += other.view ? 1 : 0;
+  for (; views > kLiveViews; --views) {  // the least recently used view goes
+    LiveSlot* oldest = nullptr;
+    for (auto& [session, other] : liveSlots_)
+      if (other.view && (!oldest || other.used < oldest->used)) oldest = &other;
+    oldest->view.reset();
+  }
+  return a;
 }
 
 std::optional<std::string> RenderWorker::imagePath(const std::string& sha256) const {

@@ -107,6 +107,20 @@ bool SessionChannel::mayFetch(const std::string& sha) const {
   return images_.count(sha) > 0;
 }
 
+std::shared_ptr<const LiveTrial> SessionChannel::liveTrial(int seq) const {
+  std::lock_guard lock(mutex_);
+  if (seq != seq_ || !closedBecause_.empty()) return nullptr;
+  return screen_.live;
+}
+
+bool SessionChannel::noteFrame(int seq, const std::shared_ptr<const LiveTrial>& trial, std::int64_t tNs, std::string detail) {
+  std::lock_guard lock(mutex_);
+  if (seq != seq_ || !closedBecause_.empty() || !trial || screen_.live != trial || frames_.size() >= kMaxFramesPerTrial) return false;
+  frames_.push_back({tNs, "frame", std::move(detail)});
+  lastActivity_ = std::chrono::steady_clock::now();
+  return true;
+}
+
 std::vector<std::pair<std::int64_t, std::string>> SessionChannel::takeRefusals() {
   std::lock_guard lock(mutex_);
   return std::exchange(refused_, {});
@@ -119,7 +133,10 @@ void SessionChannel::note(Event event) {
 
 std::vector<SessionChannel::Event> SessionChannel::takeEvents() {
   std::lock_guard lock(mutex_);
-  return std::exchange(events_, {});
+  std::vector<Event> taken = std::exchange(events_, {});
+  taken.insert(taken.end(), std::make_move_iterator(frames_.begin()), std::make_move_iterator(frames_.end()));
+  frames_.clear();
+  return taken;
 }
 
 double SessionChannel::idleSeconds() const {

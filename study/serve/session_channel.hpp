@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <deque>
 #include <functional>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <set>
@@ -20,6 +21,8 @@
 #include <nlohmann/json.hpp>
 
 namespace tlab::study {
+
+struct LiveTrial;  // study/serve/live_frames.hpp
 
 using SteadyTime = std::chrono::steady_clock::time_point;
 
@@ -44,6 +47,7 @@ struct Screen {
   nlohmann::json page;  // what the page shows (never a ground truth)
   std::function<Checked(const nlohmann::json&)> check;
   std::set<std::string> images;  // SHA-256 names this screen may fetch
+  std::shared_ptr<const LiveTrial> live;  // a live trial: the scene, style and start its frames come from
 };
 
 class SessionChannel {
@@ -69,6 +73,13 @@ class SessionChannel {
   // Waits up to `wait` for a screen after `seq`; returns the current page either way.
   nlohmann::json awaitScreenAfter(int seq, std::chrono::milliseconds wait);
   bool mayFetch(const std::string& sha) const;
+  // The live trial of screen `seq` while it is on show (nullptr: another screen, not live, ended).
+  std::shared_ptr<const LiveTrial> liveTrial(int seq) const;
+  // Keeps a live frame's "frame" event when `trial` is still the one on show as screen `seq` (the
+  // frame may then be sent: every frame sent is logged); false otherwise. The session thread stores
+  // the frames with the trial (takeEvents).
+  bool noteFrame(int seq, const std::shared_ptr<const LiveTrial>& trial, std::int64_t tNs, std::string detail);
+  static constexpr std::size_t kMaxFramesPerTrial = 200000;
   // Refused replies are kept as events ("refused-reply") until the session thread stores them.
   std::vector<std::pair<std::int64_t, std::string>> takeRefusals();
   // Answers to a screen that had gone ("late-answer") and what the server noted of the session
@@ -105,6 +116,7 @@ class SessionChannel {
   std::set<std::string> images_;
   std::vector<std::pair<std::int64_t, std::string>> refused_;
   std::vector<Event> events_;
+  std::vector<Event> frames_;
   int refusals_ = 0;
   std::string closedBecause_;
   bool timedOut_ = false;

@@ -10,9 +10,9 @@ namespace tlab::study {
 
 void checkOnlineExperiment(const Experiment& experiment) {
   for (const auto& t : experiment.tasks)
-    if (t.navigation == Navigation::Walk)
-      throw ExperimentFileError(t.navigationSource + ": walking through a scene needs the live window: run this task with `tlab run` "
-                                                     "(online, tasks can use navigation = \"orbit\", shown as a pre-rendered turntable)");
+    if (t.navigation == Navigation::Walk && !experiment.online.live)
+      throw ExperimentFileError(t.navigationSource + ": walking through a scene needs live views: [online] live = false shows only "
+                                                     "orbit tasks online, as pre-rendered turntables");
 }
 
 PreparedStudy prepareStudy(const Experiment& experiment, RenderWorker& worker, int slots, bool progressBar) {

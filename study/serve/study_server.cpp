@@ -53,7 +53,7 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
                              {"Referrer-Policy", "no-referrer"},
                              {"X-Frame-Options", "DENY"},
-                             {"Content-Security-Policy", "default-src 'self'; img-src 'self'; style-src 'self'; script-src 'self'"}});
+                             {"Content-Security-Policy", "default-src 'self'; img-src 'self' blob:; style-src 'self'; script-src 'self'"}});
   http_.set_exception_handler([this](const httplib::Request& req, httplib::Response& res, std::exception_ptr ep) {
     std::string what = "unknown error";
     try {
@@ -178,6 +178,11 @@ void StudyServer::apiRoutes() {
     const auto s = admitted(req, res);
     if (!s) return;
     reply(*s, req, res);
+  });
+  http_.Post(std::string("/api/") + kToken + "/view", [this](const httplib::Request& req, httplib::Response& res) {
+    const auto s = admitted(req, res);
+    if (!s) return;
+    view(*s, req, res);
   });
   http_.Get(std::string("/api/") + kToken + "/image/([0-9a-f]{64})\\.png", [this](const httplib::Request& req, httplib::Response& res) {
     const auto s = admitted(req, res);

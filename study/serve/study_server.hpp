@@ -48,6 +48,8 @@ class StudyServer {
   void adminRoutes();
   void arrive(const httplib::Request& req, httplib::Response& res);
   void reply(ParticipantSession& session, const httplib::Request& req, httplib::Response& res);
+  // POST /api/<token>/view of a live trial: the page's input in, the next frame (PNG) out.
+  void view(ParticipantSession& session, const httplib::Request& req, httplib::Response& res);
   void admin(const httplib::Request& req, httplib::Response& res);
   void adminAction(const httplib::Request& req, httplib::Response& res);
   nlohmann::json status();

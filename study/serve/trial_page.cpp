@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "study/serve/live_frames.hpp"
 #include "tasks/answer_form.hpp"
 #include "tasks/answer_parser.hpp"
 
@@ -130,6 +131,7 @@ json pageOf(const TrialView& view, const TrialImages& images) {
   if (view.prepared.floorPlan && !images.floorPlanSha256.empty())
     page["floor_plan"] = {{"sha256", images.floorPlanSha256}, {"width", view.prepared.floorPlan->width}, {"height", view.prepared.floorPlan->height}};
   if (images.turntable) page["turntable"] = turntableJson(*images.turntable);
+  if (images.live) page["live"] = {{"navigation", navigationName(view.plan.navigation)}, {"lens", lensFollowsCursor(view.plan.stimulus)}};
   return page;
 }
 
@@ -182,6 +184,8 @@ Screen trialScreen(const TrialView& view, const TrialImages& images) {
   if (!images.floorPlanSha256.empty()) s.images.insert(images.floorPlanSha256);
   if (images.turntable)
     for (const auto& v : images.turntable->views) s.images.insert(v.sha256);
+  if (images.live && view.prepared.scene)
+    s.live = std::make_shared<const LiveTrial>(LiveTrial{view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera});
   // Copies: a late reply may be checked after the runner's view has gone.
   s.check = [context = AnswerContext{view.prepared.question, view.prepared.floorPlan}, turntable = images.turntable](const json& body) {
     return checkTrialReply(context, turntable, body);

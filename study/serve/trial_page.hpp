@@ -32,8 +32,11 @@ struct Turntable {
 struct TrialImages {
   std::string floorPlanSha256;
   std::optional<Turntable> turntable;
+  bool live = false;  // an orbit or walk trial whose views the server renders live ([online] live)
 };
 
+// A live trial's screen carries its LiveTrial (made anew for each screen: a trial starts at its
+// start camera) and its page {"live": {"navigation": "orbit"|"walk", "lens": bool}}.
 Screen trialScreen(const TrialView& view, const TrialImages& images);
 
 // What checking an answer needs of a trial (kept by value: a reply may come late).

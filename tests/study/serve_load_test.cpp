@@ -69,3 +69,24 @@ TEST(ServeLoad, APageReloadedAfterTheEndStillShowsTheEndScreen) {
   EXPECT_EQ(nlohmann::json::parse(now->body).value("kind", ""), "end") << now->body << server.stderrText();
   EXPECT_EQ(server.stop(SIGTERM), 0);
 }
+
+// Live views under load (issue #30): two participants explore the walk and the orbit trial of
+// live_online.toml at once, input after input as fast as frames come back, and answer; every frame
+// they received is a stored "frame" event, and the frames a second and input → frame are printed.
+TEST(ServeLoad, TwoParticipantsExploreLiveTrialsAndEveryFrameTheyGotIsLogged) {
+  const auto dir = freshDir("serve_load_live");
+  ServedStudy server(studyData("live_online.toml"), (dir / "study.db").string(), dir);
+  const CommandResult load = runCommand(commandLine({TLAB_EXE, "loadtest", server.link(), "--participants", "2", "--concurrency", "2", "--think",
+                                                     "0", "--live-seconds", "0.5", "--param", "PROLIFIC_PID"}));
+  EXPECT_EQ(server.stop(SIGTERM), 0);
+  ASSERT_EQ(load.exitCode, 0) << load.out << load.err;
+  EXPECT_NE(load.out.find("participants: 2 finished, 0 failed"), std::string::npos) << load.out;
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(load.out, m, std::regex("live frames: ([0-9]+); frames/s per participant: min [0-9.]+"))) << load.out;
+  const long frames = std::stol(m[1]);
+  EXPECT_GE(frames, 4) << "at least the start view of each live trial of each participant";
+  EXPECT_NE(load.out.find("live input -> frame (ms, n=" + std::to_string(frames) + "): p50 "), std::string::npos) << load.out;
+  EXPECT_NE(load.out.find("live frame on the GL worker (ms, p50): render "), std::string::npos) << load.out;
+  const auto db = (dir / "study.db").string();
+  EXPECT_EQ(queryCount(db, "SELECT COUNT(*) FROM events WHERE kind = 'frame'"), frames) << "every frame received is logged, no other";
+}

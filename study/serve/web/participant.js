@@ -15,6 +15,7 @@ let current = null;      // the screen shown
 let timers = [];         // cleared when the screen changes
 let keyHandler = null;
 let resizeHandler = null;
+let cleanups = [];       // run when the screen changes (a live trial's key listener)
 let settings = { stimulus_size: { mode: 'native' } };  // GET config
 let pxPerCm = null;      // device pixels per cm, once calibrated
 // key -> text: the experiment's participant text table, which the server writes into the page.
@@ -116,6 +117,8 @@ function clear() {
   keyHandler = null;
   if (resizeHandler) removeEventListener('resize', resizeHandler);
   resizeHandler = null;
+  cleanups.forEach((f) => f());
+  cleanups = [];
   document.getElementById('toosmall').hidden = true;
   main.replaceChildren();
 }
@@ -378,6 +381,78 @@ function turntable(s, stage, img) {
   return src(a, e);
 }
 
+// Live trials (orbit, walk: [online] live): the server renders every view from the participant's
+// input, with the window's camera arithmetic. The page sends only input — dragged picture pixels,
+// arrow-key presses (Up/Down: forward/back, Left/Right: turn), wheel steps (forward/back), the
+// cursor for a lens that follows it — and shows the PNG that comes back. One request is in
+// flight at a time; input piles up meanwhile and goes with the next. The stage carries the frame
+// shown (data-frame-index, data-frame-sha256: the server's log of it) for browser tests.
+function live(s, stage, img) {
+  const L = s.live;
+  let input = { dx: 0, dy: 0, forward: 0, turn: 0 }, point = null, inFlight = false, started = false, dragging = null, shown = null;
+  stage.classList.add('live');
+  stage.dataset.frames = '0';
+  const moved = () => input.dx || input.dy || input.forward || input.turn || point;
+  const send = async () => {
+    if (inFlight || current !== s || (started && !moved())) return;
+    inFlight = true;
+    started = true;
+    const body = { seq: s.seq, input: {} };
+    for (const k of ['dx', 'dy', 'forward', 'turn']) if (input[k]) body.input[k] = input[k];
+    if (point) body.input.point = point;
+    input = { dx: 0, dy: 0, forward: 0, turn: 0 };
+    point = null;
+    let r = null;
+    try {
+      r = await fetch(api('view'), { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body), cache: 'no-store' });
+    } catch (e) { r = null; }
+    if (r && r.status === 200 && current === s) {
+      const url = URL.createObjectURL(await r.blob());
+      img.src = url;
+      await img.decode().catch(() => {});
+      if (shown) URL.revokeObjectURL(shown);
+      shown = url;
+      stage.dataset.frameIndex = r.headers.get('X-Frame-Index');
+      stage.dataset.frameSha256 = r.headers.get('X-Frame-Sha256');
+      stage.dataset.frames = String(Number(stage.dataset.frames) + 1);
+    } else if (r && r.status === 409) {
+      const b = await r.json().catch(() => ({}));
+      if (b.screen && b.screen.seq > s.seq) show(b.screen);
+    } else if (r && r.status === 403) {
+      problem(t('page.other_browser'), () => location.reload());
+    }
+    inFlight = false;
+    if (moved()) timers.push(setTimeout(send, r && r.status === 200 ? 0 : 500));
+  };
+  const scale = () => s.image.width / img.clientWidth;  // picture pixels per CSS px
+  stage.addEventListener('pointerdown', (ev) => { dragging = { x: ev.clientX, y: ev.clientY }; stage.setPointerCapture(ev.pointerId); ev.preventDefault(); });
+  stage.addEventListener('pointerup', () => { dragging = null; const answer = document.getElementById('answer'); if (answer) answer.focus(); });
+  stage.addEventListener('pointermove', (ev) => {
+    if (dragging) {
+      input.dx += (ev.clientX - dragging.x) * scale();
+      input.dy += (ev.clientY - dragging.y) * scale();
+      dragging = { x: ev.clientX, y: ev.clientY };
+    }
+    if (L.lens) {
+      const box = img.getBoundingClientRect();
+      point = [Math.min(1, Math.max(0, (ev.clientX - box.left) / box.width)), Math.min(1, Math.max(0, (ev.clientY - box.top) / box.height))];
+    }
+    send();
+  });
+  stage.addEventListener('wheel', (ev) => { ev.preventDefault(); input.forward += ev.deltaY < 0 ? 1 : -1; send(); }, { passive: false });
+  const keys = (e) => {
+    const step = { ArrowUp: [1, 0], ArrowDown: [-1, 0], ArrowLeft: [0, -1], ArrowRight: [0, 1] }[e.key];
+    if (!step) return;
+    e.preventDefault();
+    input.forward += step[0];
+    input.turn += step[1];
+    send();
+  };
+  document.addEventListener('keydown', keys);
+  cleanups.push(() => { document.removeEventListener('keydown', keys); if (shown) URL.revokeObjectURL(shown); });
+  send();  // the start view
+}
+
 // How to answer with the mouse or keys: the text of answer.<answer kind> (answer.typed for a kind
 // the table does not know).
 function hint(s) {
@@ -419,6 +494,7 @@ function trial(s) {
   const img = picture(s.image, api('image/' + s.image.sha256 + '.png'), s.floor_plan ? s.floor_plan.width : 0);
   if (s.turntable) img.src = turntable(s, stage, img);
   stage.append(img);
+  if (s.live) live(s, stage, img);
   const clock = el('span', { class: 'countdown', id: 'countdown', title: t('trial.time_left') }, '');
   const progress = t(s.phase === 'training' ? 'trial.progress_practice' : 'trial.progress_test', { index: s.index, total: s.total });
   main.append(el('div', { class: 'top' }, el('span', { class: 'muted progress' }, progress), clock),

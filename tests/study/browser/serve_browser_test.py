@@ -198,6 +198,24 @@ class Participant:
         box.send_keys(str(number), Keys.ENTER)
 
 
+def walk_trials(p, server, answer):
+    """Opens the participant's link and walks the session to its end: Continue on every message,
+    answer(seq) on every trial once its onset is reported. Returns when the end screen shows."""
+    p.driver.get(server.link(PARTICIPANT))
+    p.until(lambda: "/p/" in p.driver.current_url, "the redirect to the session page")
+    s = p.next_screen(-1)
+    while s["kind"] != "end":
+        kind, seq = s["kind"], s["seq"]
+        if kind == "trial":
+            p.trial_ready()
+            answer(seq)
+        elif kind == "message":
+            p.find("#continue").click()
+        else:
+            raise AssertionError(f"unexpected screen kind {kind!r}")
+        s = p.next_screen(seq)
+
+
 def check_picture_unscaled(p, what):
     """The stimulus is drawn at its rendered size in device pixels: CSS px x devicePixelRatio = image pixels."""
     m = p.driver.execute_script(

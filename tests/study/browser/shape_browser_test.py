@@ -52,43 +52,34 @@ def turn_gauge(p):
 
 def walk(p, server):
     shown = {}
-    p.driver.get(server.link(base.PARTICIPANT))
-    p.until(lambda: "/p/" in p.driver.current_url, "the redirect to the session page")
-    s = p.next_screen(-1)
-    while True:
-        kind, seq = s["kind"], s["seq"]
-        if kind == "trial":
-            p.trial_ready()
-            widget = p.driver.execute_script("return current.widget.kind;")
-            p.screenshot(f"trial-{widget}")
-            if widget == "gauge":
-                hint = p.find("#hint").text
-                check("Drag" in hint and "Done" in hint, f"the gauge hint: {hint!r}")
-                base.corrupt_next_answer(p, {"slant": 120, "tilt": 0})  # a slant no gauge has: refused
-                p.find("#submit").click()
-                error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused gauge answer's message")[0]
-                reason = error.get_attribute("title") or ""
-                check(error.text and "slant" in reason, f"the refusal says {error.text!r}, its reason {reason!r}")
-                check(p.state()["seq"] == seq, "the gauge trial was left after a refused answer")
-                shown["gauge"] = turn_gauge(p)
-                p.find("#submit").click()
-            elif widget == "pick-label":
-                base.corrupt_next_answer(p, "ZZ")
-                p.press_at(p.finds("#stage .hit")[0])
-                p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused label's message")
-                hits = p.finds("#stage .hit")
-                check(sorted(h.get_attribute("data-label") for h in hits) == ["A", "B"], "relative depth offers A and B")
-                shown["depth"] = hits[1].get_attribute("data-label")
-                p.press_at(hits[1])
-            else:
-                raise AssertionError(f"a widget the test does not know: {widget}")
-        elif kind == "message":
-            p.find("#continue").click()
-        elif kind == "end":
-            return shown
+
+    def answer(seq):
+        widget = p.driver.execute_script("return current.widget.kind;")
+        p.screenshot(f"trial-{widget}")
+        if widget == "gauge":
+            hint = p.find("#hint").text
+            check("Drag" in hint and "Done" in hint, f"the gauge hint: {hint!r}")
+            base.corrupt_next_answer(p, {"slant": 120, "tilt": 0})  # a slant no gauge has: refused
+            p.find("#submit").click()
+            error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused gauge answer's message")[0]
+            reason = error.get_attribute("title") or ""
+            check(error.text and "slant" in reason, f"the refusal says {error.text!r}, its reason {reason!r}")
+            check(p.state()["seq"] == seq, "the gauge trial was left after a refused answer")
+            shown["gauge"] = turn_gauge(p)
+            p.find("#submit").click()
+        elif widget == "pick-label":
+            base.corrupt_next_answer(p, "ZZ")
+            p.press_at(p.finds("#stage .hit")[0])
+            p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused label's message")
+            hits = p.finds("#stage .hit")
+            check(sorted(h.get_attribute("data-label") for h in hits) == ["A", "B"], "relative depth offers A and B")
+            shown["depth"] = hits[1].get_attribute("data-label")
+            p.press_at(hits[1])
         else:
-            raise AssertionError(f"unexpected screen kind {kind!r}")
-        s = p.next_screen(seq)
+            raise AssertionError(f"a widget the test does not know: {widget}")
+
+    base.walk_trials(p, server, answer)
+    return shown
 
 
 def check_stored(tlab, db, folder, shown):

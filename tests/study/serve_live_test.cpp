@@ -1,0 +1,143 @@
+// Live views of tlab serve end to end over HTTP (issue #30), as the participant page and as an
+// attacker would use POST /api/<token>/view: frames only for the live trial on show, each PNG's
+// pixels the SHA-256 the server logs, input refused unless finite and bounded, the eye kept within
+// the scene's bounds however far one walks, nothing after the trial, and every frame sent stored
+// as a "frame" event of its trial.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+
+#include "core/png_file.hpp"
+#include "renderer/scene/scene_source.hpp"
+#include "study/design/scene_catalog.hpp"
+#include "study/run/frame_log.hpp"
+#include "study/serve/live_frames.hpp"
+#include "tests/study/serve_test_client.hpp"
+#include "tests/study/served_study.hpp"
+
+namespace tlab::testing {
+namespace {
+
+using nlohmann::json;
+
+struct Frame {
+  int status = 0;
+  int index = -1;
+  std::string sha256;  // the server's header
+  std::string pixels;  // framePixelsSha256 of the PNG as decoded here
+  std::string body;
+};
+
+class ServeLive : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = freshDir(::testing::UnitTest::GetInstance()->current_test_info()->name());
+    db_ = (dir_ / "study.db").string();
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  Frame view(httplib::Client& http, const std::string& token, const json& body) {
+    const auto r = http.Post(("/api/" + token + "/view").c_str(), body.dump(), "application/json");
+    if (!r) throw std::runtime_error("no reply to the view request");
+    Frame f{r->status, -1, r->get_header_value("X-Frame-Sha256"), "", r->body};
+    if (r->status != 200) return f;
+    f.index = std::stoi(r->get_header_value("X-Frame-Index"));
+    const auto png = dir_ / "frame.png";
+    std::ofstream(png, std::ios::binary) << r->body;
+    const auto image = core::readPngFile(png.string());
+    if (!image) throw std::runtime_error("the frame is not a PNG");
+    f.pixels = study::framePixelsSha256(study::Canvas(*image));
+    return f;
+  }
+
+  std::filesystem::path dir_;
+  std::string db_;
+};
+
+TEST_F(ServeLive, FramesComeOnlyFromTheTrialOnShowWithinItsBoundsAndEveryOneIsLogged) {
+  ServedStudy server(studyData("live_online.toml"), db_, dir_);
+  PageClient page(server.port());
+  const auto [status, token] = page.arrive("live-online", "PROLIFIC_PID=p1");
+  ASSERT_EQ(status, 303);
+  httplib::Client http("127.0.0.1", server.port());
+  http.set_read_timeout(60, 0);
+  json screen = page.api(token, "display", display()).body;
+  ASSERT_EQ(screen["kind"], "message") << screen.dump();
+  EXPECT_EQ(view(http, token, {{"seq", screen["seq"]}, {"input", json::object()}}).status, 409) << "a message is not a live trial";
+  while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
+  ASSERT_TRUE(screen.contains("live")) << screen.dump();
+  EXPECT_EQ(screen["live"]["navigation"], "walk");
+  EXPECT_FALSE(screen.contains("turntable"));
+  const int seq = screen["seq"];
+  ASSERT_EQ(page.api(token, "reply", {{"seq", seq}, {"type", "onset"}, {"painted_ms", 10.5}}).status, 200);
+
+  std::vector<Frame> sent;
+  sent.push_back(view(http, token, {{"seq", seq}}));  // no input: the start view
+  sent.push_back(view(http, token, {{"seq", seq}, {"input", {{"dx", 30}}}}));
+  for (const Frame& f : sent) {
+    ASSERT_EQ(f.status, 200) << f.body;
+    EXPECT_EQ(f.pixels, f.sha256) << "the PNG holds exactly the pixels whose SHA-256 is logged";
+  }
+  EXPECT_EQ(sent[0].index, 0);
+  EXPECT_EQ(sent[1].index, 1);
+  EXPECT_NE(sent[0].sha256, sent[1].sha256) << "the drag turned the view";
+
+  // What no page sends is refused, and neither rendered nor logged.
+  for (const json& bad : {json{{"seq", seq}, {"input", {{"dx", "30"}}}}, json{{"seq", seq}, {"input", {{"dx", 1e6}}}},
+                          json{{"seq", seq}, {"input", {{"forward", 1.5}}}}, json{{"seq", seq}, {"input", {{"point", {2, 0}}}}},
+                          json{{"seq", seq}, {"input", {{"camera", "eye=0,0,0 target=0,0,1"}}}}, json{{"input", json::object()}},
+                          json{{"seq", seq}, {"input", {1, 2}}}})
+    EXPECT_EQ(view(http, token, bad).status, 400) << bad.dump();
+  EXPECT_EQ(view(http, token, {{"seq", seq + 1}, {"input", {{"dx", 5}}}}).status, 409) << "a screen not on show";
+  EXPECT_EQ(view(http, "0000000000000000000000000000000000000000000000000000000000000000", {{"seq", seq}}).status, 404);
+
+  // Walking on and on without collision: the eye stops at the bounds of the scene.
+  for (int i = 0; i < 30; ++i) {
+    sent.push_back(view(http, token, {{"seq", seq}, {"input", {{"forward", 40}}}}));
+    ASSERT_EQ(sent.back().status, 200) << sent.back().body;
+  }
+  json answered = page.api(token, "reply", {{"seq", seq}, {"type", "answer"}, {"answer", 3}, {"rt_ms", 2000.0}}).body;
+  EXPECT_EQ(view(http, token, {{"seq", seq}, {"input", {{"dx", 5}}}}).status, 409) << "the trial has ended";
+  while (answered["kind"] == "message") answered = page.api(token, "reply", continueReply(answered)).body;  // the orbit task's instructions
+  ASSERT_EQ(answered["kind"], "trial") << answered.dump();  // the orbit trial
+  ASSERT_EQ(answered["live"]["navigation"], "orbit");
+  EXPECT_TRUE(answered["live"]["lens"].get<bool>()) << "the dynamic style in active mode: its lens follows the cursor";
+  const Frame orbit = view(http, token, {{"seq", answered["seq"]}, {"input", {{"point", {0.25, 0.5}}}}});
+  ASSERT_EQ(orbit.status, 200) << orbit.body;
+  EXPECT_EQ(orbit.index, 0) << "each trial counts its own frames";
+  EXPECT_EQ(orbit.pixels, orbit.sha256);
+  const Walk rest = walk(page, token, answered);
+  ASSERT_EQ(rest.screens.back()["kind"], "end") << rest.screens.back().dump();
+  server.stop(SIGTERM);
+
+  const auto events = exportedTable(db_, dir_, "events");
+  const std::size_t kind = column(events, "kind"), detail = column(events, "detail"), trial = column(events, "trial_sequence");
+  std::map<std::string, std::vector<study::LiveFrame>> frames;  // by trial
+  for (std::size_t i = 1; i < events.size(); ++i)
+    if (events[i][kind] == study::kFrameEvent) frames[events[i][trial]].push_back(study::parseFrameJson(events[i][detail]));
+  ASSERT_EQ(frames.size(), 2u);
+  const auto& walked = frames.begin()->second;
+  ASSERT_EQ(walked.size(), sent.size()) << "every frame sent is stored, nothing refused is";
+  for (std::size_t i = 0; i < walked.size(); ++i) {
+    EXPECT_EQ(walked[i].index, int(i));
+    EXPECT_EQ(walked[i].sha256, sent[i].sha256);
+    EXPECT_FALSE(walked[i].lens) << "the walk trial's style has no lens";
+  }
+  EXPECT_EQ(walked[0].input, "start");
+  EXPECT_EQ(walked[1].input, "drag 30,0");
+  EXPECT_EQ(walked[2].input, "key 40,0");
+  const auto scene = std::make_shared<const render::Scene>(render::loadScene("builtin:walkthrough?seed=1", study::sceneCatalog()));
+  const study::LiveTrial bounds{scene, {}, study::Navigation::Walk, walked[0].camera};
+  for (const auto& f : walked) EXPECT_TRUE(study::withinLiveBounds(bounds, f.camera)) << render::cameraText(f.camera);
+  EXPECT_EQ(render::cameraText(walked[walked.size() - 1].camera), render::cameraText(walked[walked.size() - 2].camera))
+      << "at the bounds, walking on no longer moves the eye";
+  const auto& orbited = frames.rbegin()->second;
+  ASSERT_EQ(orbited.size(), 1u);
+  ASSERT_TRUE(orbited[0].lens);
+  EXPECT_EQ(*orbited[0].lens, glm::vec2(0.25f, 0.5f));
+  EXPECT_EQ(orbited[0].input, "point 0.25,0.5");
+}
+
+}  // namespace
+}  // namespace tlab::testing
