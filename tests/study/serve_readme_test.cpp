@@ -17,11 +17,11 @@ namespace {
 
 using nlohmann::json;
 
-// The `tlab ...` lines of the README block marked "online-steps: tested".
-std::vector<std::string> readmeCommands() {
+// The `tlab ...` lines of the README block marked "NAME: tested".
+std::vector<std::string> readmeCommands(const std::string& name = "online-steps") {
   const std::string readme = readText(std::string(TLAB_SOURCE_DIR) + "/README.md");
-  const auto marker = readme.find("<!-- online-steps: tested -->");
-  if (marker == std::string::npos) throw std::runtime_error("README.md: no online-steps block");
+  const auto marker = readme.find("<!-- " + name + ": tested -->");
+  if (marker == std::string::npos) throw std::runtime_error("README.md: no " + name + " block");
   const auto begin = readme.find("```sh\n", marker), end = readme.find("```\n", begin + 6);
   std::istringstream block(readme.substr(begin + 6, end - begin - 6));
   std::vector<std::string> commands;
@@ -75,6 +75,27 @@ TEST(ServeReadme, TheOnlineStepsWorkAsWritten) {
   const auto trials = parseCsv(readText((dir / "results" / "trials.csv").string()));
   EXPECT_EQ(trials.size(), 1u + w.answered);
   EXPECT_TRUE(std::filesystem::exists(dir / "results" / "report.html"));
+  std::filesystem::remove_all(dir);
+}
+
+// "### Live views online": Elmqvist's whole study served, its orbit (T1, T2) and walk (T3, T4)
+// trials rendered live, walked by the load tester's simulated participant as the README shows.
+TEST(ServeReadme, ElmqvistRunsWholeOnlineWithLiveViewsAsWritten) {
+  const auto commands = readmeCommands("live-steps");
+  ASSERT_EQ(commands.size(), 2u);
+  EXPECT_EQ(commands[0], "tlab serve examples/elmqvist.toml --db elmqvist.db --listen 0.0.0.0:8080");
+  const auto dir = freshDir("serve_readme_live");
+  const std::string db = (dir / "elmqvist.db").string();
+  ServedStudy server(example("elmqvist.toml"), db, dir);  // the first line, on a free loopback port
+  const std::string load = std::regex_replace(substituted(commands[1], db, dir), std::regex("http://127\\.0\\.0\\.1:8080/s/elmqvist2008"), server.link());
+  const auto r = runCommand(load);
+  EXPECT_EQ(server.stop(SIGTERM), 0);
+  ASSERT_EQ(r.exitCode, 0) << load << "\n" << r.out << r.err;
+  EXPECT_NE(r.out.find("participants: 1 finished, 0 failed"), std::string::npos) << r.out;
+  EXPECT_EQ(queryCount(db, "SELECT COUNT(*) FROM responses WHERE answered = 1"), queryCount(db, "SELECT COUNT(*) FROM trials"));
+  for (const char* task : {"T1", "T2", "T3", "T4"})  // every task explored live: frames logged with its trials
+    EXPECT_GT(queryCount(db, std::string("SELECT COUNT(*) FROM events e JOIN trials t ON t.id = e.trial WHERE e.kind = 'frame' AND t.task_id = '") + task + "'"), 0)
+        << task;
   std::filesystem::remove_all(dir);
 }
 

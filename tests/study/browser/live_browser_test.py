@@ -5,7 +5,8 @@ and looked around by real pointer drags, its orbit trial (the dynamic style's le
 cursor) orbited by drags. Every frame the page displayed is hashed here from its decoded pixels
 (the <img> drawn on a canvas: SHA-256 of "WxH:" and its RGBA bytes) and must be a "frame" event the
 server stored for that trial with the same SHA-256; the stored frames are numbered from 0, begin
-with the start view and name the input that moved them; the answers are stored.
+with the start view and name the input that moved them; the answers are stored; and `tlab replay`
+renders every logged frame of both trials again from the database alone: "N of N frames identical".
 
     tests/study/browser/live_browser_test.py --tlab build/bin/tlab
 """
@@ -131,6 +132,14 @@ def check_stored(tlab, db, folder, shown):
         for index, sha in shown[task]:  # every picture the page displayed is a stored frame of its trial
             check(stored.get(index) == sha, f"{task}: the page displayed frame {index} with pixels {sha}, stored: {stored.get(index)}")
     print(f"frames stored: { {t: len(f) for t, f in by_task.items()} }; displayed and matched: { {t: len(v) for t, v in shown.items()} }")
+    # Replay of each browser trial: every frame rendered again here and compared with its logged hash.
+    for sequence, task in task_of.items():
+        n = len(by_task[task])
+        replay = subprocess.run([tlab, "replay", db, "--participant", base.PARTICIPANT, "--trial", sequence],
+                                capture_output=True, text=True, timeout=300)
+        print(f"tlab replay --trial {sequence} ({task}): {replay.stdout.strip().splitlines()[-1:] or replay.stderr.strip()}")
+        check(replay.returncode == 0 and f"{n} of {n} frames identical" in replay.stdout,
+              f"{task}: tlab replay of the browser trial: exit {replay.returncode}\n{replay.stdout}\n{replay.stderr}")
 
 
 def session(args, p, server, db, work):
