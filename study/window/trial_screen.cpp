@@ -58,6 +58,8 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
   painter_.drawLine(base_, questionWording(q, texts), 16, 12, 22.0f, kInk);
   // How to answer here (the window also takes typed labels), by the answer's kind.
   painter_.drawLine(base_, texts.text(std::string("window_answer.") + form_.name()), 16, layout_.answer.y + 8, 18.0f, kMuted);
+  if (live_)  // how to move in the scene, below how to answer
+    painter_.drawLine(base_, texts.text(std::string("live.") + navigationName(view.plan.navigation)), 16, layout_.answer.y + 32, 16.0f, kMuted);
   const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",
                                            {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
   painter_.drawLine(base_, counter, base_.width() - 260, 12, 18.0f, kMuted);

@@ -501,7 +501,9 @@ function trial(s) {
     el('h1', { class: 'question' }, s.question));
   const row = el('div', { class: 'row' }, stage);
   if (s.floor_plan) row.append(floorPlan(s, submit));
-  main.append(row, el('p', { class: 'muted', id: 'hint' }, hint(s)), answerControls(s, stage, submit));
+  // A live trial says how to move (drag and keys, the lens that follows the pointer) above the hint.
+  const moving = s.live ? [el('p', { class: 'muted', id: 'navigation' }, t('live.' + s.live.navigation) + (s.live.lens ? ' ' + t('live.lens') : ''))] : [];
+  main.append(row, ...moving, el('p', { class: 'muted', id: 'hint' }, hint(s)), answerControls(s, stage, submit));
   painted(img).then((t) => {
     if (current !== s) return;
     onset = t;

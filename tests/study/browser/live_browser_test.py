@@ -97,6 +97,9 @@ def walk(p, server):
         check(live is not None and "live" in p.find("#stage").get_attribute("class"), f"the trial is not live: {live}")
         shown["walk" if live["navigation"] == "walk" else "orbit"] = explore(p, live["navigation"])
         check(live["lens"] == (live["navigation"] == "orbit"), f"the lens follows the cursor only in the orbit trial's style: {live}")
+        words = p.find("#navigation").text  # how to move, from the text table
+        check(("arrow keys walk" in words) == (live["navigation"] == "walk") and ("lens follows" in words) == live["lens"],
+              f"the {live['navigation']} trial says how to move: {words!r}")
         p.type_number(2, select_all=True)
 
     base.walk_trials(p, server, answer)
