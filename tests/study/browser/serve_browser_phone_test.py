@@ -29,13 +29,7 @@ def phone_session(server, shots):
     driver = size.browser(profile, mobile=size.PHONE)
     try:
         p = base.Participant(driver, shots)
-        driver.get(server.link("phone-1"))
-        s = p.next_screen(-1)
-        check(s["kind"] == "message", f"the phone gets the instructions, not a refusal: {s}")
-        p.find("#continue").click()
-        s = p.next_screen(s["seq"])
-        check(s["kind"] == "trial", f"the trial expected, got {s}")
-        p.trial_ready()
+        s = size.first_trial(p, server, "phone-1")  # the instructions, not a refusal
         m = size.measure(p)
         view = driver.execute_script("return {w: innerWidth, touch: navigator.maxTouchPoints};")
         print(f"phone: {view['w']} CSS px wide, {view['touch']} touch points; the {m['natural']}-px picture is {m['css']} CSS px"

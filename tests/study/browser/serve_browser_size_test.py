@@ -48,7 +48,8 @@ def measure(p):
         " rendering: getComputedStyle(i).imageRendering};")
 
 
-def desktop_trial(p, server, participant, scale, shots):
+def first_trial(p, server, participant):
+    """Arrives, continues past the instructions and waits for the trial's picture; returns the trial screen."""
     p.driver.get(server.link(participant))
     s = p.next_screen(-1)
     check(s["kind"] == "message", f"{participant}: the instructions expected, got {s}")
@@ -56,6 +57,11 @@ def desktop_trial(p, server, participant, scale, shots):
     s = p.next_screen(s["seq"])
     check(s["kind"] == "trial", f"{participant}: the trial expected, got {s}")
     p.trial_ready()
+    return s
+
+
+def desktop_trial(p, server, participant, scale, shots):
+    s = first_trial(p, server, participant)
     m = measure(p)
     print(f"{scale}x: the {m['natural']}-px picture is {m['css']} x {m['css_h']} CSS px = {m['device']} device px at devicePixelRatio {m['dpr']}"
           f" (image-rendering {m['rendering']})")
