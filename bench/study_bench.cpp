@@ -109,6 +109,37 @@ BENCHMARK(BM_RecordResponse)->Iterations(2000);
 
 
 // The frame log's hash of one live picture of N×N pixels (RGBA, as the window and browser log it).
+// A live trial's frame events stored after the trial: one commit each (recordEvent) against one
+// transaction for all (recordEvents, what the trial runner does). Arg: the frames of the trial.
+static void storeFrameEvents(benchmark::State& state, bool batched) {
+  const auto path = std::filesystem::temp_directory_path() / ("tlab_bench_events_" + std::to_string(::getpid()) + ".db");
+  std::filesystem::remove(path);
+  const Experiment e = elmqvistDesign();
+  {
+    const auto storeOwner = openStore(path.string());
+    Store& store = *storeOwner;
+    std::vector<TrialRecord> trials(1);
+    trials[0].phase = "test";
+    const auto p = *store.enrol(e, "bench", "bench", 0, makeDesign(e), trials);
+    const auto trial = store.trials(p.id).at(0).id;
+    const auto session = store.startSession(p.id, e, "bench", "bench");
+    std::vector<EventRecord> frames(static_cast<std::size_t>(state.range(0)));
+    for (std::size_t i = 0; i < frames.size(); ++i)
+      frames[i] = {std::int64_t(i), "frame", R"({"index":)" + std::to_string(i) + R"(,"camera":"eye=1,2,3 target=0,0,0","sha256":")" + std::string(64, 'a') + "\"}"};
+    for (auto _ : state) {
+      if (batched) store.recordEvents(session, trial, frames);
+      else
+        for (const auto& f : frames) store.recordEvent(session, trial, f.tNs, f.kind, f.detail);
+    }
+    state.SetItemsProcessed(state.iterations() * state.range(0));
+  }
+  for (const char* suffix : {"", "-wal", "-shm"}) std::filesystem::remove(path.string() + suffix);
+}
+static void BM_FrameEventsOneCommitEach(benchmark::State& state) { storeFrameEvents(state, false); }
+static void BM_FrameEventsOneTransaction(benchmark::State& state) { storeFrameEvents(state, true); }
+BENCHMARK(BM_FrameEventsOneCommitEach)->Arg(300)->Iterations(3)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_FrameEventsOneTransaction)->Arg(300)->Iterations(3)->Unit(benchmark::kMillisecond);
+
 static void BM_FramePixelsSha256(benchmark::State& state) {
   const int n = int(state.range(0));
   Canvas frame(n, n, {40, 90, 160, 255});

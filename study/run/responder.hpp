@@ -11,6 +11,7 @@
 #include "study/design/experiment.hpp"
 #include "study/design/session_plan.hpp"
 #include "study/run/stimulus_library.hpp"
+#include "study/store/store.hpp"
 
 namespace tlab::study {
 
@@ -55,11 +56,7 @@ struct Response {
 };
 
 // A timestamped event the responder saw (pause, resume, key, layout), stored in the events table.
-struct ResponderEvent {
-  std::int64_t tNs = 0;
-  std::string kind;
-  std::string detail;
-};
+using ResponderEvent = EventRecord;  // stored as they came (study/store/store.hpp)
 
 // The monotonic clock in nanoseconds: the clock of every stored onset and response.
 std::int64_t monotonicNs();

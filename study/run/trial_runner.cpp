@@ -87,7 +87,7 @@ TrialRunner::TrialRunner(const Experiment& experiment, Store& store, StimulusSou
     : experiment_(experiment), store_(store), stimuli_(stimuli), design_(makeDesign(experiment)) {}
 
 void TrialRunner::storeEvents(Session& s, std::optional<std::int64_t> trial) {
-  for (const auto& e : s.responder.takeEvents()) store_.recordEvent(s.session, trial, e.tNs, e.kind, e.detail);
+  store_.recordEvents(s.session, trial, s.responder.takeEvents());  // one transaction: a live trial's frames are many
 }
 
 bool TrialRunner::runQuestionnaires(Session& s, const std::string& when, int block) {

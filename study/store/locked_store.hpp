@@ -91,6 +91,10 @@ class LockedStore : public Store {
     const std::lock_guard lock(mutex_);
     store_.recordEvent(session, trial, tNs, kind, detail);
   }
+  void recordEvents(std::int64_t session, std::optional<std::int64_t> trial, const std::vector<EventRecord>& events) override {
+    const std::lock_guard lock(mutex_);
+    store_.recordEvents(session, trial, events);
+  }
   void recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block, const std::vector<FormAnswer>& answers) override {
     const std::lock_guard lock(mutex_);
     store_.recordQuestionnaire(participantId, session, questionnaire, block, answers);

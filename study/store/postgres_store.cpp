@@ -282,6 +282,13 @@ void PostgresStore::recordEvent(std::int64_t session, std::optional<std::int64_t
   });
 }
 
+void PostgresStore::recordEvents(std::int64_t session, std::optional<std::int64_t> trial, const std::vector<EventRecord>& events) {
+  if (events.empty()) return;
+  connection_->transact("the session's events", [&](PgTransaction& t) {
+    for (const auto& e : events) t.exec(store_sql::kInsertEvent, pgParams(session, trial, e.tNs, e.kind, e.detail));
+  });
+}
+
 void PostgresStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                         const std::vector<FormAnswer>& answers) {
   connection_->transact("the questionnaire answers", [&](PgTransaction& t) {

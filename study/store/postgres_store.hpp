@@ -50,6 +50,7 @@ class PostgresStore : public Store {
   void recordResponse(const ResponseRecord& response) override;
   void recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                    const std::string& detail) override;
+  void recordEvents(std::int64_t session, std::optional<std::int64_t> trial, const std::vector<EventRecord>& events) override;
   void recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                            const std::vector<FormAnswer>& answers) override;
   bool hasQuestionnaireAnswers(std::int64_t participantId, const std::string& questionnaire, int block) override;

@@ -416,6 +416,13 @@ void SqliteStore::recordEvent(std::int64_t session, std::optional<std::int64_t> 
   e.bind(3, tNs).bind(4, kind).bind(5, detail).run();
 }
 
+void SqliteStore::recordEvents(std::int64_t session, std::optional<std::int64_t> trial, const std::vector<EventRecord>& events) {
+  if (events.empty()) return;
+  Transaction t(*db_);
+  for (const auto& e : events) recordEvent(session, trial, e.tNs, e.kind, e.detail);
+  t.commit();
+}
+
 void SqliteStore::recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                       const std::vector<FormAnswer>& answers) {
   Transaction t(*db_);

@@ -78,6 +78,14 @@ struct ResponseRecord {
   std::optional<double> onsetToSwapMs;
 };
 
+// One event of a session (an onset's details, a drag, a shown frame, ...): the monotonic time, its
+// kind and its detail (JSON or text).
+struct EventRecord {
+  std::int64_t tNs = 0;
+  std::string kind;
+  std::string detail;
+};
+
 // One answer of a form (participant information or a questionnaire): the text as given and its
 // number where it has one (study/design/form_field.hpp).
 struct FormAnswer {
@@ -182,6 +190,8 @@ class Store {
   virtual void recordResponse(const ResponseRecord& response) = 0;
   virtual void recordEvent(std::int64_t session, std::optional<std::int64_t> trial, std::int64_t tNs, const std::string& kind,
                            const std::string& detail) = 0;
+  // Several events in one transaction, in order (a live trial's frames: one commit, not one each).
+  virtual void recordEvents(std::int64_t session, std::optional<std::int64_t> trial, const std::vector<EventRecord>& events) = 0;
   // All items of one questionnaire screen in one transaction.
   virtual void recordQuestionnaire(std::int64_t participantId, std::int64_t session, const std::string& questionnaire, int block,
                                    const std::vector<FormAnswer>& answers) = 0;

@@ -107,6 +107,22 @@ TEST_P(StoreContract, ASessionOfALiveProcessIsRefusedAndADeadOneIsResumed) {
   EXPECT_EQ(peek(location, "SELECT count(*)" + where + " AND ended_at IS NULL"), "1");  // when it really ended is unknown
 }
 
+TEST_P(StoreContract, EventsOfOneCallAreStoredInOrderWithTheirTrial) {
+  const std::string location = fresh("store_events_batch");
+  const auto store = openStore(location);
+  const auto p = *store->enrol(e, "test", "p", 0, design, {fakeTrial(1)});
+  const auto trial = store->trials(p.id).at(0).id;
+  const auto session = store->startSession(p.id, e, "test", "window");
+  std::vector<EventRecord> frames;
+  for (int i = 0; i < 50; ++i) frames.push_back({1000 + i, "frame", R"({"index":)" + std::to_string(i) + "}"});
+  store->recordEvents(session, trial, frames);
+  store->recordEvents(session, std::nullopt, {});  // nothing: no transaction, no row
+  EXPECT_EQ(peek(location, "SELECT count(*) FROM events WHERE kind = 'frame' AND trial = " + std::to_string(trial)), "50");
+  EXPECT_EQ(peek(location, "SELECT detail FROM events WHERE kind = 'frame' ORDER BY id LIMIT 1"), R"({"index":0})");
+  EXPECT_EQ(peek(location, "SELECT detail FROM events WHERE kind = 'frame' ORDER BY id DESC LIMIT 1"), R"({"index":49})");
+  EXPECT_EQ(peek(location, "SELECT t_ns FROM events WHERE kind = 'frame' ORDER BY id DESC LIMIT 1"), "1049");
+}
+
 TEST_P(StoreContract, TheNewestEventOfAKindOverAParticipantsSessions) {
   const auto store = openStore(fresh("store_last_event"));
   const auto p = *store->enrol(e, "test", "p", 0, design, {fakeTrial(1)});
