@@ -1,5 +1,6 @@
 #include "study/run/frame_log.hpp"
 
+#include <cstdio>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
@@ -9,6 +10,12 @@
 #include "core/sha256.hpp"
 
 namespace tlab::study {
+
+std::string frameInputPart(const char* what, double a, double b) {
+  char text[96];
+  std::snprintf(text, sizeof text, "%s %.9g,%.9g", what, a, b);
+  return text;
+}
 
 std::string framePixelsSha256(const Canvas& frame) {
   const std::string head = std::to_string(frame.width()) + "x" + std::to_string(frame.height()) + ":";

@@ -27,6 +27,11 @@ struct LiveFrame {
   std::string sha256;              // framePixelsSha256 of the rendered frame
 };
 
+// One part of LiveFrame::input: "drag 15,5", "key 1,0", "point 0.453125,0.21875" — `what` and two
+// numbers, each written with 9 significant digits (a float's value reads back exactly). The window
+// and the server write every input this way.
+std::string frameInputPart(const char* what, double a, double b);
+
 // SHA-256 of a frame's pixels: "WxH:" followed by its RGBA bytes, row 0 at the top — the same
 // numbers wherever the frame is rendered, independent of any image encoding.
 std::string framePixelsSha256(const Canvas& frame);

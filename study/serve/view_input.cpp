@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "study/run/frame_log.hpp"
+
 namespace tlab::study {
 
 namespace {
@@ -37,12 +39,11 @@ ViewInput ViewInput::then(const ViewInput& later) const {
 
 std::string ViewInput::describe() const {
   if (empty()) return "start";
-  std::string text;
-  char part[96];
-  auto add = [&text](const char* p) { text += (text.empty() ? "" : " ") + std::string(p); };
-  if (dx != 0.0 || dy != 0.0) std::snprintf(part, sizeof part, "drag %.9g,%.9g", dx, dy), add(part);
-  if (forward != 0 || turn != 0) std::snprintf(part, sizeof part, "key %d,%d", forward, turn), add(part);
-  if (point) std::snprintf(part, sizeof part, "point %.9g,%.9g", double(point->x), double(point->y)), add(part);
+  std::string text;  // one summed input: its parts joined by spaces
+  auto add = [&text](const std::string& part) { text += (text.empty() ? "" : " ") + part; };
+  if (dx != 0.0 || dy != 0.0) add(frameInputPart("drag", dx, dy));
+  if (forward != 0 || turn != 0) add(frameInputPart("key", forward, turn));
+  if (point) add(frameInputPart("point", point->x, point->y));
   return text;
 }
 

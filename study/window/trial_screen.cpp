@@ -14,13 +14,6 @@ namespace {
 
 using tasks::WidgetKind;
 
-// "drag 15,5", "key 1,0", "point 0.4531,0.2188": what moved a live view, for its frame log.
-std::string inputText(const char* what, double a, double b) {
-  char buf[96];
-  std::snprintf(buf, sizeof buf, "%s %.6g,%.6g", what, a, b);
-  return buf;
-}
-
 std::string formatCountdown(double seconds) {
   const int s = std::max(0, int(std::ceil(seconds)));
   char buf[32];
@@ -167,7 +160,7 @@ void TrialScreen::arrow(int forward, int right) {
   }
   if (!live_) return;
   live_->navigator().move(forward, right);
-  liveInputs_.push_back(inputText("key", forward, right));
+  liveInputs_.push_back(frameInputPart("key", forward, right));
   dirty_ = true;
 }
 
@@ -180,7 +173,7 @@ void TrialScreen::drag(double dx, double dy) {
   }
   if (!live_) return;
   live_->navigator().drag(dx, dy);
-  liveInputs_.push_back(inputText("drag", dx, dy));
+  liveInputs_.push_back(frameInputPart("drag", dx, dy));
   dirty_ = true;
 }
 
@@ -188,7 +181,7 @@ void TrialScreen::moveTo(double x, double y) {
   if (!live_ || !layout_.stimulus.contains(x, y)) return;
   const glm::vec2 at(float((x - layout_.stimulus.x) / layout_.stimulus.width), float((y - layout_.stimulus.y) / layout_.stimulus.height));
   if (!live_->pointAt(at)) return;
-  liveInputs_.push_back(inputText("point", at.x, at.y));
+  liveInputs_.push_back(frameInputPart("point", at.x, at.y));
   dirty_ = true;
 }
 
