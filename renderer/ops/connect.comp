@@ -10,7 +10,8 @@
 //  TLAB_PHASE 2: links kept only when both fragments chose each other (ε is not symmetric: εz
 //     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
 //     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
-//     boundary conditions of Sec. 5.3 on β and γ with their b flags.
+//     boundary conditions of Sec. 5.3 on β and γ with their b flags; with TLAB_LIST_SEEDS, the
+//     fragments where β and γ start above 0 (Eq. 9's seeds) in lists for the solve's frontier.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
@@ -37,6 +38,15 @@ layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 #if TLAB_PHASE != 2
 // The pixels whose links need the full search: a count, then the pixel indices.
 layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPixels[]; };
+#endif
+#if TLAB_PHASE == 2 && defined(TLAB_LIST_SEEDS)
+// The fragments Eq. 9 spreads from (value above 0), for the solve's frontier (ops/spread_frontier.comp).
+#ifdef TLAB_HAS_BETA
+FRONTIER_LIST(, BIND_SEEDS_BETA, SeedsBeta, betaSeeds);
+#endif
+#ifdef TLAB_HAS_GAMMA
+FRONTIER_LIST(, BIND_SEEDS_GAMMA, SeedsGamma, gammaSeeds);
+#endif
 #endif
 #if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
@@ -338,11 +348,18 @@ void main() {
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
     if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
     alpha[f] = alphaInit;
+    uint at;
 #ifdef TLAB_HAS_BETA
     beta[f] = b;
+#ifdef TLAB_LIST_SEEDS
+    if (b > 0.0) { FRONTIER_APPEND(betaSeeds, f, at); }
+#endif
 #endif
 #ifdef TLAB_HAS_GAMMA
     gamma[f] = g;
+#ifdef TLAB_LIST_SEEDS
+    if (g > 0.0) { FRONTIER_APPEND(gammaSeeds, f, at); }
+#endif
 #endif
     flags[f] = free;
   }

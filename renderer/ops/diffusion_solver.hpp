@@ -19,7 +19,9 @@ class DiffusionSolver {
   // One of the n steps (time λα) on all fields.
   void step(TransparencyFields& fields) const;
   // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps, or a
-  // step that changed nothing).
+  // step that changed nothing). Where the connect pass listed Eq. 9's seeds for these fields
+  // (and nothing changed them since), β and γ spread on the frontier only
+  // (ops/spread_frontier.comp): the same fields, bit for bit, for a fraction of the work.
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
@@ -43,11 +45,15 @@ class DiffusionSolver {
   const gpu::ShaderProgram& alphaProgram(bool jacobi, Spread fused) const;
   unsigned takeChanges() const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
+  // Up to `steps` Eq. 9 steps of `field` from its listed seeds; returns the steps run.
+  int spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
+  const gpu::ShaderProgram* frontierStep_;
+  const gpu::ShaderProgram* frontierApply_;
   mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
   mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };
