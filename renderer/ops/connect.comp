@@ -320,7 +320,11 @@ void main() {
     if (inside(q)) qHead[k] = pixelHead[uint(q.y * uWidth + q.x)];
     else ++outside;
   }
-  for (uint layer = 0u; layer < n; ++layer) {
+  // Seeds are listed 32 layers at a time (one atomic per list and chunk: on a CPU rasterizer
+  // every lane runs an atomic's loop, whether or not it appends).
+  for (uint chunk = 0u; chunk < n; chunk += 32u) {
+  uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
+  for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {
     uint f = head + layer;
     uvec4 link = links[f];
     uint found = 0u;
@@ -348,20 +352,24 @@ void main() {
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
     if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
     alpha[f] = alphaInit;
-    uint at;
 #ifdef TLAB_HAS_BETA
     beta[f] = b;
-#ifdef TLAB_LIST_SEEDS
-    if (b > 0.0) { FRONTIER_APPEND(betaSeeds, f, at); }
-#endif
+    if (b > 0.0) betaMask |= 1u << (layer - chunk);
 #endif
 #ifdef TLAB_HAS_GAMMA
     gamma[f] = g;
-#ifdef TLAB_LIST_SEEDS
-    if (g > 0.0) { FRONTIER_APPEND(gammaSeeds, f, at); }
-#endif
+    if (g > 0.0) gammaMask |= 1u << (layer - chunk);
 #endif
     flags[f] = free;
+  }
+#ifdef TLAB_LIST_SEEDS
+#ifdef TLAB_HAS_BETA
+  FRONTIER_APPEND_LAYERS(betaSeeds, betaMask, head + chunk);
+#endif
+#ifdef TLAB_HAS_GAMMA
+  FRONTIER_APPEND_LAYERS(gammaSeeds, gammaMask, head + chunk);
+#endif
+#endif
   }
 #endif
 }

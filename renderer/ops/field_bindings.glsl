@@ -38,3 +38,14 @@
   list.items[AT] = (F);                                                           \
   if (AT % FRONTIER_GROUP == 0u && AT < FRONTIER_GROUP * FRONTIER_MAX_GROUPS)     \
     atomicAdd(list.groups, 1u)
+// Appends fragment FIRST + i for each bit i of MASK, reserving their places with one atomic; the
+// group count grows by the multiples of FRONTIER_GROUP in the reserved range (up to the limit).
+#define FRONTIER_APPEND_LAYERS(list, MASK, FIRST)                                                 \
+  {                                                                                               \
+    uint at_ = atomicAdd(list.count, uint(bitCount(MASK)));                                       \
+    uint end_ = at_ + uint(bitCount(MASK));                                                       \
+    uint groups_ = min((end_ + FRONTIER_GROUP - 1u) / FRONTIER_GROUP, FRONTIER_MAX_GROUPS) -      \
+                   min((at_ + FRONTIER_GROUP - 1u) / FRONTIER_GROUP, FRONTIER_MAX_GROUPS);        \
+    if (groups_ > 0u) atomicAdd(list.groups, groups_);                                            \
+    for (uint m_ = (MASK); m_ != 0u; m_ &= m_ - 1u) list.items[at_++] = (FIRST) + uint(findLSB(m_)); \
+  }

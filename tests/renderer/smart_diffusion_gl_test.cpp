@@ -143,7 +143,7 @@ TEST(FieldSpreading, SettledSpreadingStopsWithoutChangingTheFields) {
 // The connect pass lists Eq. 9's seeds — exactly the fragments where β and γ start above 0 — and
 // the solve spreads from them on the frontier only (ops/spread_frontier.comp): bit for bit the
 // fields of n full steps of every fragment, on scenes with silhouettes, halos, several
-// components, deep and shuffled stacks, for both initial α (adaptive α diffuses alongside), for λ
+// components, deep and shuffled stacks, lists longer than 32 layers, for both initial α (adaptive α diffuses alongside), for λ
 // that settles within n steps and λ that does not, and with halos off.
 TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
   struct Case {
@@ -151,6 +151,7 @@ TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
     int size;
     std::map<std::string, std::string> settings;
     bool seeded = true;  // the scene has silhouettes or occluding edges to spread from
+    std::uint32_t deepSeed = 0;  // some seed lies at least this deep in its list
   };
   const std::vector<Case> cases = {
       {"builtin:torus", 64, {}},
@@ -159,6 +160,7 @@ TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
       {"builtin:open-cylinders", 64, {{"iterations", "50"}, {"lambda_beta", "0.01"}}},
       {"builtin:open-cylinders", 40, {{"halos", "off"}, {"lambda_beta", "0"}, {"iterations", "9"}}},
       {"builtin:nested-spheres?n=2", 48, {{"lambda_gamma", "1"}}},
+      {"builtin:nested-spheres?n=20", 64, {}, true, 32},  // seeds listed 32 layers at a time
       {"builtin:quad-stack?n=64", 24, {}, false},
       {"builtin:quad-stack?n=16", 32, {}, false},
       {"builtin:sphere?segments=8&rings=4", 24, {{"alpha_init", "adaptive"}, {"solver", "implicit"}}},
@@ -168,6 +170,10 @@ TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
     SmartRig frontier(loadScene(c.source), c.size, c.size, c.settings), full(loadScene(c.source), c.size, c.size, c.settings);
     ASSERT_TRUE(frontier.fields->seedsListed()) << what;
     std::size_t seeds = 0;
+    std::vector<std::uint32_t> layerOf(frontier.buffer->fragmentCount());
+    for (std::size_t p = 0; p < frontier.counts.size(); ++p)
+      for (std::uint32_t k = 0; k < frontier.counts[p]; ++k) layerOf[frontier.heads[p] + k] = k;
+    std::uint32_t deepest = 0;
     for (Field f : {Field::Beta, Field::Gamma}) {
       if (f == Field::Gamma && !frontier.fields->hasGamma()) continue;
       const auto values = frontier.fields->read(f);
@@ -178,8 +184,10 @@ TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
       std::sort(listed.begin(), listed.end());
       EXPECT_EQ(listed, expected) << what << " field " << int(f);
       seeds += listed.size();
+      for (auto i : listed) deepest = std::max(deepest, layerOf[i]);
     }
     EXPECT_EQ(seeds > 0u, c.seeded) << what;
+    EXPECT_GE(deepest, c.deepSeed) << what;
     const DiffusionSolver solver(frontier.shaders, frontier.smart);
     solver.solve(*frontier.fields);
     EXPECT_FALSE(frontier.fields->seedsListed()) << what;
