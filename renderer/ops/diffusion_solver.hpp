@@ -1,7 +1,8 @@
 #pragma once
 // The solve pass (Carnecky Sec. 5.4): n steps of α diffusion (Eq. 8; explicit, sub-stepped or
 // implicit — see ops/diffuse_alpha.comp for the stability bound) and β/γ spreading (Eq. 9 or
-// Eq. 8), each step a ping-pong compute pass over all fragments. What a scene does not need is
+// Eq. 8), each step a ping-pong compute pass over all fragments — or, for Eq. 9 from the seeds
+// the connect pass listed, passes over the frontier only (ops/spread_frontier.comp). What a scene does not need is
 // left out: no α diffusion when α starts uniform (Eq. 4), no γ with halos off, no β without
 // silhouettes.
 #include <string>
