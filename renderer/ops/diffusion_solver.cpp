@@ -165,6 +165,7 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
                                     unsigned freeBit) const {
   const gpu::Buffer* previous = &fields.frontier(field);  // step 1: the seeds
   const gpu::Buffer* changed = &fields.frontier(Field::Alpha);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT);  // the connect pass wrote the seed list's header
   fields.current(field).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
   fields.links().bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
   fields.flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
