@@ -46,7 +46,8 @@ time_limit = 600
 TOML
 }
 
-printf '%-10s %4s  %-38s  %-24s  %s\n' style n "frames/s per participant" "input -> frame (ms)" "GL worker per frame (ms, p50)"
+printf '%-10s %4s  %-38s  %-24s  %s\n' style n "frames/s per participant" "input -> frame (ms)" "first frame (ms, max)"
+stages=
 for style in ${STYLES:-constant dynamic smart}; do
   experiment "$style" >"$work/$style.toml"
   : >"$work/serve.out"
@@ -61,11 +62,15 @@ for style in ${STYLES:-constant dynamic smart}; do
     out=$("$tlab" loadtest "$link" --participants "$n" --concurrency "$n" --think 0 --live-seconds "$seconds" --pid-prefix "$style-$n-")
     fps=$(sed -n 's/^live frames: [0-9]*; frames\/s per participant: //p' <<<"$out")
     lat=$(sed -n 's/^live input -> frame (ms, n=[0-9]*): \(p50 [0-9.]*  p95 [0-9.]*\).*/\1/p' <<<"$out")
-    cost=$(sed -n 's/^live frame on the GL worker (ms, p50): //p' <<<"$out")
-    printf '%-10s %4s  %-38s  %-24s  %s\n' "$style" "$n" "$fps" "$lat" "$cost"
+    first=$(sed -n 's/^live first frame of a trial (ms, n=[0-9]*): .*max \([0-9.]*\)$/\1/p' <<<"$out")
+    printf '%-10s %4s  %-38s  %-24s  %s\n' "$style" "$n" "$fps" "$lat" "$first"
+    stages+=$(printf '%-10s %4s %s' "$style" "$n" "$(sed -n 's/^live frame on the server (ms, p50\/p95)://p' <<<"$out")")$'\n'
+
   done
   kill "$server"
   wait "$server" 2>/dev/null || true
   server=
 done
+echo "each stage of a frame on the server (ms, p50/p95; Server-Timing):"
+printf '%s' "$stages"
 sed -n 's/.*(GL: \(.*\))$/GL: \1/p' "$work/serve.out"

@@ -64,10 +64,24 @@ class RenderWorker : public StimulusSource {
   std::string writeImage(const core::Image& image);  // GL thread
   Turntable renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared);  // GL thread
   LiveAnswer renderLive(const LiveRequest& request);  // GL thread
+  // A live trial's renderers are built before its first frame is asked for: when its screen is
+  // prepared (images()), a shareable trial's view is made and its start frame rendered once for
+  // every session; a dynamic trial gets a spare view with its start frame rendered, which the
+  // next session to start that trial takes (kept within kLiveViews). GL thread.
+  void warmLive(const LiveTrial& trial);
+  // One view of a live trial on the GL thread: the renderer, and the start frame it rendered first
+  // (not yet shown; kept for the next session to start the trial), counted for the LRU.
+  struct KeptView {
+    std::unique_ptr<LiveView> view;
+    std::shared_ptr<const Canvas> start;
+    std::uint64_t used = 0;
+  };
+  KeptView makeWarmView(const LiveTrial& trial);  // GL thread: built and its start frame rendered
   // One session's live trial on the GL thread: where its camera is, the next frame's index, the
-  // lens where the cursor last put it, and its view (a renderer; at most kLiveViews are kept, the
-  // least recently used dropped first and made again when its session asks: the camera, index
-  // and lens stay here).
+  // lens where the cursor last put it, and its own view when the style keeps state across frames
+  // (dynamic; else the trial's shared view renders: at most kLiveViews views of both kinds are
+  // kept, the least recently used dropped first and made again when a session asks: the camera,
+  // index and lens stay here).
   struct LiveSlot {
     std::shared_ptr<const LiveTrial> trial;
     std::optional<CameraNavigator> navigator;
@@ -76,6 +90,8 @@ class RenderWorker : public StimulusSource {
     std::unique_ptr<LiveView> view;
     std::uint64_t used = 0;
   };
+  LiveView& sharedView(const LiveTrial& trial, std::uint64_t use);  // GL thread
+  void dropLeastRecentlyUsedViews();                                 // GL thread
 
   std::string directory_;
   std::vector<render::BuiltinSceneSpec> catalog_;
@@ -85,11 +101,14 @@ class RenderWorker : public StimulusSource {
   std::unique_ptr<StimulusLibrary> library_;  // GL thread
   std::map<std::string, TrialImages> trialImages_;  // GL thread: stimulus key → images
   std::map<std::string, LiveSlot> liveSlots_;        // GL thread: session token → its live trial
+  std::map<std::string, KeptView> sharedViews_;      // GL thread: liveViewKey → the view sessions share
+  std::map<std::string, KeptView> spareViews_;       // GL thread: liveViewKey → a dynamic trial's next session's view
   std::uint64_t liveUses_ = 0;                       // GL thread
   LiveFrameQueue liveQueue_{kLiveFramesPerSecond};   // guarded by mutex_
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<std::function<void()>> jobs_;
+  std::deque<std::function<void()>> idleJobs_;  // warm-ups: when no job waits and no live frame is due
   std::map<std::string, std::string> paths_;  // sha256 → file (guarded by mutex_)
   std::map<std::string, PreparedTrial> prepared_;  // preparedTrialKey → trial (guarded by mutex_)
   bool stopping_ = false;
