@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <utility>
 
+#include "study/serve/frame_jpeg.hpp"
 #include "study/serve/frame_png.hpp"
 #include "study/serve/live_frames.hpp"
 #include "study/serve/request_checks.hpp"
@@ -39,8 +40,9 @@ std::string serverTiming(const StageTimes& times) {
 
 }  // namespace
 
-// The frame is logged (a "frame" event of the trial: camera, lens, input, pixel SHA-256, and as its
-// shown time the server's clock when it is handed to the connection) before it is sent; a frame
+// The frame is logged (a "frame" event of the trial: camera, lens, input, pixel SHA-256, how it was
+// encoded ([online] frames: PNG, or JPEG at its quality), and as its shown time the server's clock
+// when it is handed to the connection) before it is sent; a frame
 // of a trial that has ended meanwhile is neither logged nor sent.
 void StudyServer::view(ParticipantSession& session, const httplib::Request& req, httplib::Response& res) {
   const auto received = std::chrono::steady_clock::now();
@@ -71,7 +73,10 @@ void StudyServer::view(ParticipantSession& session, const httplib::Request& req,
   // The hash and the PNG here, on this request's thread: the GL worker renders the next frame meanwhile.
   a.frame.sha256 = framePixelsSha256(*a.pixels);
   times.emplace_back("hash", lap());
-  std::string png = encodeFramePng(*a.pixels);
+  const OnlineSpec& online = study_.experiment.online;
+  const bool jpeg = online.frames == "jpeg";
+  std::string encoded = jpeg ? encodeFrameJpeg(*a.pixels, online.jpegQuality) : encodeFramePng(*a.pixels);
+  a.frame.encoding = jpeg ? "jpeg quality=" + std::to_string(online.jpegQuality) : "png";
   times.emplace_back("encode", lap());
   a.frame.shownNs = monotonicNs();
   if (!channel->noteFrame(seq->get<int>(), trial, a.frame.shownNs, frameJson(a.frame)))
@@ -82,7 +87,8 @@ void StudyServer::view(ParticipantSession& session, const httplib::Request& req,
   res.set_header("Server-Timing", serverTiming(times));
   res.set_header("X-Frame-Index", std::to_string(a.frame.index));
   res.set_header("X-Frame-Sha256", a.frame.sha256);
-  res.set_content(std::move(png), "image/png");
+  res.set_header("X-Frame-Encoding", a.frame.encoding);
+  res.set_content(std::move(encoded), jpeg ? "image/jpeg" : "image/png");
 }
 
 }  // namespace tlab::study
