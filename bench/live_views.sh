@@ -10,7 +10,9 @@
 #   bash bench/live_views.sh [SECONDS] [SIZE]        # default 10 s of exploring per trial, 512
 #
 # Environment: TLAB (default build/bin/tlab), STYLES (default "constant dynamic smart"),
-# COUNTS (participants at once, default "1 4"). The GL backend tlab serve renders with is printed
+# COUNTS (participants at once, default "1 4"), FRAMES (png, the default, or jpeg: [online] frames),
+# LIVE_RENDERERS (tlab serve --live-renderers: threads rendering live views at once; default 1).
+# The GL backend tlab serve renders with is printed
 # by its first line (TLAB_GL=egl|osmesa picks one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,6 +46,8 @@ navigation = "orbit"
 task = "counting"
 time_limit = 600
 TOML
+  [ "${FRAMES:-png}" = jpeg ] && printf '\n[online]\nframes = "jpeg"\n'
+  return 0
 }
 
 printf '%-10s %4s  %-38s  %-24s  %s\n' style n "frames/s per participant" "input -> frame (ms)" "first frame (ms, max)"
@@ -51,7 +55,7 @@ stages=
 for style in ${STYLES:-constant dynamic smart}; do
   experiment "$style" >"$work/$style.toml"
   : >"$work/serve.out"
-  "$tlab" serve "$work/$style.toml" --db "$work/$style.db" --listen 127.0.0.1:0 --quiet >"$work/serve.out" 2>"$work/serve.err" &
+  "$tlab" serve "$work/$style.toml" --db "$work/$style.db" --listen 127.0.0.1:0 --quiet ${LIVE_RENDERERS:+--live-renderers "$LIVE_RENDERERS"} >"$work/serve.out" 2>"$work/serve.err" &
   server=$!
   until grep -qs '^admin: ' "$work/serve.out"; do
     if ! kill -0 "$server" 2>/dev/null; then cat "$work/serve.err" >&2; exit 1; fi

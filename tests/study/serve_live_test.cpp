@@ -58,6 +58,69 @@ class ServeLive : public ::testing::Test {
     return f;
   }
 
+  // Two participants explore both trials of live_online.toml with their requests interleaved, on
+  // `renderers` LiveRenderers; every trial is replayed.
+  void exploreInTurnAndReplay(int renderers) {
+    ServedStudy server(studyData("live_online.toml"), db_, dir_, 0, {"--live-renderers", std::to_string(renderers)});
+    PageClient page(server.port());
+    httplib::Client http("127.0.0.1", server.port());
+    http.set_read_timeout(120, 0);
+    std::vector<std::string> tokens;
+    std::vector<json> screens;
+    for (const char* pid : {"PROLIFIC_PID=p1", "PROLIFIC_PID=p2"}) {
+      const auto [status, token] = page.arrive("live-online", pid);
+      ASSERT_EQ(status, 303);
+      json screen = page.api(token, "display", display()).body;
+      while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
+      tokens.push_back(token);
+      screens.push_back(screen);
+    }
+    std::map<std::string, int> sentPerTrial;  // "p1 walk" → frames sent
+    for (const char* task : {"walk", "orbit"}) {
+      const std::vector<json> inputs = std::string(task) == "walk" ? std::vector<json>{json::object(), {{"dx", 12}}, {{"forward", 3}}, {{"dx", -7}, {"dy", 2}}}
+                                                                   : std::vector<json>{json::object(), {{"dx", 9}, {"point", {0.3, 0.6}}}, {{"dy", -4}}};
+      for (std::size_t step = 0; step < inputs.size(); ++step)
+        for (std::size_t p = 0; p < tokens.size(); ++p) {  // p1, p2, p1, p2, ...: the shared view renders for both in turn
+          ASSERT_EQ(screens[p]["live"]["navigation"], task) << screens[p].dump();
+          json input = inputs[step];
+          if (input.contains("point")) input["point"] = {0.3 + 0.4 * double(p), 0.6 - 0.4 * double(p)};  // each participant's lens elsewhere
+          const Frame f = view(http, tokens[p], {{"seq", screens[p]["seq"]}, {"input", input}});
+          ASSERT_EQ(f.status, 200) << f.body;
+          EXPECT_EQ(f.index, int(step));
+          EXPECT_EQ(f.pixels, f.sha256) << "the PNG holds exactly the pixels logged";
+          ++sentPerTrial["p" + std::to_string(p + 1) + " " + task];
+        }
+      for (std::size_t p = 0; p < tokens.size(); ++p) {
+        const int seq = screens[p]["seq"];
+        json next = page.api(tokens[p], "reply", {{"seq", seq}, {"type", "answer"}, {"answer", 3}, {"rt_ms", 2000.0}}).body;
+        while (next["kind"] == "message") next = page.api(tokens[p], "reply", continueReply(next)).body;
+        screens[p] = next;
+      }
+    }
+    for (std::size_t p = 0; p < tokens.size(); ++p) {
+      const Walk rest = walk(page, tokens[p], screens[p]);
+      ASSERT_EQ(rest.screens.back()["kind"], "end") << rest.screens.back().dump();
+    }
+    server.stop(SIGTERM);
+
+    const auto events = exportedTable(db_, dir_, "events");
+    const std::size_t kind = column(events, "kind"), who = column(events, "participant"), trial = column(events, "trial_sequence");
+    std::map<std::pair<std::string, std::string>, int> logged;  // (participant, trial) → frames
+    for (std::size_t i = 1; i < events.size(); ++i)
+      if (events[i][kind] == study::kFrameEvent) ++logged[{events[i][who], events[i][trial]}];
+    ASSERT_EQ(logged.size(), 4u);
+    for (const auto& [at, n] : logged) {
+      const CommandResult replay = runCommand(commandLine({TLAB_EXE, "replay", db_, "--participant", at.first, "--trial", at.second}));
+      EXPECT_EQ(replay.exitCode, 0) << replay.out << replay.err;
+      const std::string identical = std::to_string(n) + " of " + std::to_string(n) + " frames identical";
+      EXPECT_NE(replay.out.find(identical), std::string::npos) << at.first << " trial " << at.second << ": " << replay.out << replay.err;
+    }
+    std::map<std::string, int> perParticipant;
+    for (const auto& [at, n] : logged) perParticipant[at.first] += n;
+    EXPECT_EQ(perParticipant["p1"], sentPerTrial["p1 walk"] + sentPerTrial["p1 orbit"]) << "every frame sent is logged";
+    EXPECT_EQ(perParticipant["p2"], sentPerTrial["p2 walk"] + sentPerTrial["p2 orbit"]);
+  }
+
   std::filesystem::path dir_;
   std::string db_;
 };
@@ -153,66 +216,11 @@ TEST_F(ServeLive, FramesComeOnlyFromTheTrialOnShowWithinItsBoundsAndEveryOneIsLo
 // explore both trials with their requests interleaved, and every frame they were sent — the start
 // frames rendered beforehand, the shared view's frames of both — is what a fresh renderer makes:
 // `tlab replay` renders each trial again on its own and finds N of N frames identical.
-TEST_F(ServeLive, PreparedAndSharedRenderersServeWhatAFreshRendererMakes) {
-  ServedStudy server(studyData("live_online.toml"), db_, dir_);
-  PageClient page(server.port());
-  httplib::Client http("127.0.0.1", server.port());
-  http.set_read_timeout(120, 0);
-  std::vector<std::string> tokens;
-  std::vector<json> screens;
-  for (const char* pid : {"PROLIFIC_PID=p1", "PROLIFIC_PID=p2"}) {
-    const auto [status, token] = page.arrive("live-online", pid);
-    ASSERT_EQ(status, 303);
-    json screen = page.api(token, "display", display()).body;
-    while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
-    tokens.push_back(token);
-    screens.push_back(screen);
-  }
-  std::map<std::string, int> sentPerTrial;  // "p1 walk" → frames sent
-  for (const char* task : {"walk", "orbit"}) {
-    const std::vector<json> inputs = std::string(task) == "walk" ? std::vector<json>{json::object(), {{"dx", 12}}, {{"forward", 3}}, {{"dx", -7}, {"dy", 2}}}
-                                                                 : std::vector<json>{json::object(), {{"dx", 9}, {"point", {0.3, 0.6}}}, {{"dy", -4}}};
-    for (std::size_t step = 0; step < inputs.size(); ++step)
-      for (std::size_t p = 0; p < tokens.size(); ++p) {  // p1, p2, p1, p2, ...: the shared view renders for both in turn
-        ASSERT_EQ(screens[p]["live"]["navigation"], task) << screens[p].dump();
-        json input = inputs[step];
-        if (input.contains("point")) input["point"] = {0.3 + 0.4 * double(p), 0.6 - 0.4 * double(p)};  // each participant's lens elsewhere
-        const Frame f = view(http, tokens[p], {{"seq", screens[p]["seq"]}, {"input", input}});
-        ASSERT_EQ(f.status, 200) << f.body;
-        EXPECT_EQ(f.index, int(step));
-        EXPECT_EQ(f.pixels, f.sha256) << "the PNG holds exactly the pixels logged";
-        ++sentPerTrial["p" + std::to_string(p + 1) + " " + task];
-      }
-    for (std::size_t p = 0; p < tokens.size(); ++p) {
-      const int seq = screens[p]["seq"];
-      json next = page.api(tokens[p], "reply", {{"seq", seq}, {"type", "answer"}, {"answer", 3}, {"rt_ms", 2000.0}}).body;
-      while (next["kind"] == "message") next = page.api(tokens[p], "reply", continueReply(next)).body;
-      screens[p] = next;
-    }
-  }
-  for (std::size_t p = 0; p < tokens.size(); ++p) {
-    const Walk rest = walk(page, tokens[p], screens[p]);
-    ASSERT_EQ(rest.screens.back()["kind"], "end") << rest.screens.back().dump();
-  }
-  server.stop(SIGTERM);
+TEST_F(ServeLive, PreparedAndSharedRenderersServeWhatAFreshRendererMakes) { exploreInTurnAndReplay(1); }
 
-  const auto events = exportedTable(db_, dir_, "events");
-  const std::size_t kind = column(events, "kind"), who = column(events, "participant"), trial = column(events, "trial_sequence");
-  std::map<std::pair<std::string, std::string>, int> logged;  // (participant, trial) → frames
-  for (std::size_t i = 1; i < events.size(); ++i)
-    if (events[i][kind] == study::kFrameEvent) ++logged[{events[i][who], events[i][trial]}];
-  ASSERT_EQ(logged.size(), 4u);
-  for (const auto& [at, n] : logged) {
-    const CommandResult replay = runCommand(commandLine({TLAB_EXE, "replay", db_, "--participant", at.first, "--trial", at.second}));
-    EXPECT_EQ(replay.exitCode, 0) << replay.out << replay.err;
-    const std::string identical = std::to_string(n) + " of " + std::to_string(n) + " frames identical";
-    EXPECT_NE(replay.out.find(identical), std::string::npos) << at.first << " trial " << at.second << ": " << replay.out << replay.err;
-  }
-  std::map<std::string, int> perParticipant;
-  for (const auto& [at, n] : logged) perParticipant[at.first] += n;
-  EXPECT_EQ(perParticipant["p1"], sentPerTrial["p1 walk"] + sentPerTrial["p1 orbit"]) << "every frame sent is logged";
-  EXPECT_EQ(perParticipant["p2"], sentPerTrial["p2 walk"] + sentPerTrial["p2 orbit"]);
-}
+// Two LiveRenderers (tlab serve --live-renderers 2, each its own GL context): the participants' frames
+// come from both, each session's from one, and are what a fresh renderer makes.
+TEST_F(ServeLive, TwoLiveRenderersServeWhatAFreshRendererMakes) { exploreInTurnAndReplay(2); }
 
 // [online] frames = "jpeg" (issue #30 §1: a lossy encoding may be chosen and is logged): the frames
 // come as JPEGs, each frame event says so, its SHA-256 stays that of the rendered pixels — `tlab
