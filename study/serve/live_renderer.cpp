@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "study/run/camera_navigator.hpp"
+#include "study/serve/gl_thread.hpp"
 
 namespace tlab::study {
 
@@ -16,25 +17,10 @@ std::unique_ptr<LiveView> newView(const LiveTrial& t) { return std::make_unique<
 }  // namespace
 
 LiveRenderer::LiveRenderer(double framesPerSecond) : queue_(framesPerSecond) {
-  std::promise<void> ready;
-  auto started = ready.get_future();
-  thread_ = std::thread([this, &ready] { loop(ready); });
-  try {
-    started.get();  // the context's error, if it could not be made
-  } catch (...) {
-    thread_.join();
-    throw;
-  }
+  thread_ = startGlThread([this](std::promise<void>& ready) { loop(ready); });
 }
 
-LiveRenderer::~LiveRenderer() {
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_one();
-  thread_.join();
-}
+LiveRenderer::~LiveRenderer() { stopGlThread(mutex_, stopping_, wake_, thread_); }
 
 void LiveRenderer::loop(std::promise<void>& ready) {
   std::unique_ptr<gpu::GpuContext> context;

@@ -8,6 +8,7 @@
 #include "core/sha256.hpp"
 #include "study/run/camera_navigator.hpp"
 #include "study/run/live_view.hpp"
+#include "study/serve/gl_thread.hpp"
 
 namespace tlab::study {
 
@@ -15,25 +16,10 @@ RenderWorker::RenderWorker(std::string directory, std::vector<render::BuiltinSce
     : directory_(std::move(directory)), catalog_(std::move(catalog)), online_(std::move(online)) {
   if (online_.live)
     for (int i = 0; i < std::max(1, liveRenderers); ++i) live_.push_back(std::make_unique<LiveRenderer>(kLiveFramesPerSecond));
-  std::promise<void> ready;
-  auto started = ready.get_future();
-  thread_ = std::thread([this, &ready] { loop(ready); });
-  try {
-    started.get();  // the context's error, if it could not be made
-  } catch (...) {
-    thread_.join();
-    throw;
-  }
+  thread_ = startGlThread([this](std::promise<void>& ready) { loop(ready); });
 }
 
-RenderWorker::~RenderWorker() {
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_one();
-  thread_.join();
-}
+RenderWorker::~RenderWorker() { stopGlThread(mutex_, stopping_, wake_, thread_); }
 
 void RenderWorker::loop(std::promise<void>& ready) {
   std::unique_ptr<gpu::GpuContext> context;

@@ -58,6 +58,13 @@ class ServeLive : public ::testing::Test {
     return f;
   }
 
+  // The display report, then on through the messages to the first trial's screen.
+  static json firstTrial(PageClient& page, const std::string& token) {
+    json screen = page.api(token, "display", display()).body;
+    while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
+    return screen;
+  }
+
   // Two participants explore both trials of live_online.toml with their requests interleaved, on
   // `renderers` LiveRenderers; every trial is replayed.
   void exploreInTurnAndReplay(int renderers) {
@@ -70,10 +77,8 @@ class ServeLive : public ::testing::Test {
     for (const char* pid : {"PROLIFIC_PID=p1", "PROLIFIC_PID=p2"}) {
       const auto [status, token] = page.arrive("live-online", pid);
       ASSERT_EQ(status, 303);
-      json screen = page.api(token, "display", display()).body;
-      while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
       tokens.push_back(token);
-      screens.push_back(screen);
+      screens.push_back(firstTrial(page, token));
     }
     std::map<std::string, int> sentPerTrial;  // "p1 walk" → frames sent
     for (const char* task : {"walk", "orbit"}) {
@@ -232,10 +237,9 @@ TEST_F(ServeLive, JpegFramesAreSentLoggedWithTheirEncodingAndReplayedExactly) {
   PageClient page(server.port());
   const auto [status, token] = page.arrive("live-online", "PROLIFIC_PID=j1");
   ASSERT_EQ(status, 303);
+  const json screen = firstTrial(page, token);
   httplib::Client http("127.0.0.1", server.port());
   http.set_read_timeout(120, 0);
-  json screen = page.api(token, "display", display()).body;
-  while (screen["kind"] != "trial") screen = page.api(token, "reply", continueReply(screen)).body;
   std::vector<std::string> jpegs;
   for (const json& input : {json::object(), json{{"dx", 20}}, json{{"forward", 4}}}) {
     const auto r = http.Post(("/api/" + token + "/view").c_str(), json{{"seq", screen["seq"]}, {"input", input}}.dump(), "application/json");
