@@ -17,20 +17,12 @@ std::unique_ptr<LiveView> newView(const LiveTrial& t) { return std::make_unique<
 }  // namespace
 
 LiveRenderer::LiveRenderer(double framesPerSecond) : queue_(framesPerSecond) {
-  thread_ = startGlThread([this](std::promise<void>& ready) { loop(ready); });
+  thread_ = startGlThread([](const gpu::GpuContext&) {}, [this] { loop(); });
 }
 
 LiveRenderer::~LiveRenderer() { stopGlThread(mutex_, stopping_, wake_, thread_); }
 
-void LiveRenderer::loop(std::promise<void>& ready) {
-  std::unique_ptr<gpu::GpuContext> context;
-  try {
-    context = gpu::createHeadlessContext();
-    ready.set_value();
-  } catch (...) {
-    ready.set_exception(std::current_exception());
-    return;
-  }
+void LiveRenderer::loop() {
   for (;;) {
     std::function<void()> job;
     std::optional<LiveFrameQueue::Taken> frame;

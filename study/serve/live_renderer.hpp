@@ -44,7 +44,7 @@ class LiveRenderer {
   static constexpr std::size_t kLiveViews = 16;  // views kept at once; the least recently used goes first
 
  private:
-  void loop(std::promise<void>& ready);
+  void loop();  // the thread's: warm-ups and frames until stopped
   LiveAnswer render(const LiveRequest& request);  // the thread's
   void warmNow(const LiveTrial& trial);           // the thread's
   // One view of a live trial: the renderer, and the start frame it rendered first (not yet shown;

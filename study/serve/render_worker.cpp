@@ -16,23 +16,18 @@ RenderWorker::RenderWorker(std::string directory, std::vector<render::BuiltinSce
     : directory_(std::move(directory)), catalog_(std::move(catalog)), online_(std::move(online)) {
   if (online_.live)
     for (int i = 0; i < std::max(1, liveRenderers); ++i) live_.push_back(std::make_unique<LiveRenderer>(kLiveFramesPerSecond));
-  thread_ = startGlThread([this](std::promise<void>& ready) { loop(ready); });
+  thread_ = startGlThread(
+      [this](const gpu::GpuContext& context) {
+        info_ = context.info();
+        painter_ = std::make_unique<TextPainter>();
+        library_ = std::make_unique<StimulusLibrary>(directory_, catalog_, *painter_);
+      },
+      [this] { loop(); });
 }
 
 RenderWorker::~RenderWorker() { stopGlThread(mutex_, stopping_, wake_, thread_); }
 
-void RenderWorker::loop(std::promise<void>& ready) {
-  std::unique_ptr<gpu::GpuContext> context;
-  try {
-    context = gpu::createHeadlessContext();
-    info_ = context->info();
-    painter_ = std::make_unique<TextPainter>();
-    library_ = std::make_unique<StimulusLibrary>(directory_, catalog_, *painter_);
-    ready.set_value();
-  } catch (...) {
-    ready.set_exception(std::current_exception());
-    return;
-  }
+void RenderWorker::loop() {
   for (;;) {
     std::function<void()> job;
     {

@@ -61,7 +61,7 @@ class RenderWorker : public StimulusSource {
     wake_.notify_one();
     return result.get();
   }
-  void loop(std::promise<void>& ready);
+  void loop();  // the GL thread's: jobs until stopped
   std::string writeImage(const core::Image& image);  // GL thread
   Turntable renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared);  // GL thread
   std::string directory_;
