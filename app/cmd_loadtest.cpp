@@ -32,7 +32,10 @@ void loadtest(const study::LoadOptions& o) {
     std::printf("live frames: %zu; frames/s per participant: min %.1f  median %.1f  max %.1f\n", r.frame.count, fps.front(), fps[fps.size() / 2],
                 fps.back());
     printLatency("live input -> frame", r.frame);
-    std::printf("live frame on the GL worker (ms, p50): render %.2f  pixel SHA-256 %.2f  PNG %.2f\n", r.render.p50, r.hash.p50, r.encode.p50);
+    printLatency("live first frame of a trial", r.firstFrame);
+    std::printf("live frame on the server (ms, p50/p95):");  // Server-Timing's stages, in the server's order
+    for (const auto& [name, p] : r.stages) std::printf("  %s %.2f/%.2f", name.c_str(), p.p50, p.p95);
+    std::printf("\n");
   }
   if (r.reconnects > 0) std::printf("reconnections: %d\n", r.reconnects);
   std::fflush(stdout);

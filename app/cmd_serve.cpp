@@ -30,6 +30,7 @@ struct ServeCommandOptions {
   int threads = 256;  // requests answered at once (idle connections hold none)
   int perAddress = 2000;
   int slots = 0;
+  int liveRenderers = 1;  // threads rendering live frames at once, each with its own GL context
   bool quiet = false;
 };
 
@@ -67,7 +68,7 @@ void serve(const ServeCommandOptions& o) {
   checkExperimentOnGl(e);  // a broken style file or a misaligned image: one line, before any session
   study::checkOnlineExperiment(e);
   study::LockedStore store(study::openStore(o.db));
-  study::RenderWorker worker(study::stimulusDirectoryFor(o.db), sceneCatalog(), e.online);
+  study::RenderWorker worker(study::stimulusDirectoryFor(o.db), sceneCatalog(), e.online, o.liveRenderers);
   const study::Design design = study::makeDesign(e);
   const int slots = o.slots > 0 ? o.slots : study::slotsOfOneCycle(design, e.participants);
   // One line per phase, also with --quiet (which hides only the bar): preparing can take minutes.
@@ -118,6 +119,9 @@ void addServeCommand(CLI::App& app) {
                   "open connections one client address may hold; beyond, its longest-idle one is closed")
       ->capture_default_str()->check(CLI::Range(8, 1000000));
   cmd->add_option("--slots", o->slots, "counterbalancing slots to prepare stimuli for (default: one balanced cycle, at most the experiment's participants)");
+  cmd->add_option("--live-renderers", o->liveRenderers,
+                  "threads that render live views at once, each with its own GL context (each session's frames on one of them)")
+      ->capture_default_str()->check(CLI::Range(1, 64));
   cmd->add_flag("--quiet", o->quiet, "no progress bar");
   cmd->callback([o] { serve(*o); });
 }

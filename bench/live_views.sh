@@ -10,7 +10,9 @@
 #   bash bench/live_views.sh [SECONDS] [SIZE]        # default 10 s of exploring per trial, 512
 #
 # Environment: TLAB (default build/bin/tlab), STYLES (default "constant dynamic smart"),
-# COUNTS (participants at once, default "1 4"). The GL backend tlab serve renders with is printed
+# COUNTS (participants at once, default "1 4"), FRAMES (png, the default, or jpeg: [online] frames),
+# LIVE_RENDERERS (tlab serve --live-renderers: threads rendering live views at once; default 1).
+# The GL backend tlab serve renders with is printed
 # by its first line (TLAB_GL=egl|osmesa picks one).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -44,13 +46,16 @@ navigation = "orbit"
 task = "counting"
 time_limit = 600
 TOML
+  [ "${FRAMES:-png}" = jpeg ] && printf '\n[online]\nframes = "jpeg"\n'
+  return 0
 }
 
-printf '%-10s %4s  %-38s  %-24s  %s\n' style n "frames/s per participant" "input -> frame (ms)" "GL worker per frame (ms, p50)"
+printf '%-10s %4s  %-38s  %-24s  %s\n' style n "frames/s per participant" "input -> frame (ms)" "first frame (ms, max)"
+stages=
 for style in ${STYLES:-constant dynamic smart}; do
   experiment "$style" >"$work/$style.toml"
   : >"$work/serve.out"
-  "$tlab" serve "$work/$style.toml" --db "$work/$style.db" --listen 127.0.0.1:0 --quiet >"$work/serve.out" 2>"$work/serve.err" &
+  "$tlab" serve "$work/$style.toml" --db "$work/$style.db" --listen 127.0.0.1:0 --quiet ${LIVE_RENDERERS:+--live-renderers "$LIVE_RENDERERS"} >"$work/serve.out" 2>"$work/serve.err" &
   server=$!
   until grep -qs '^admin: ' "$work/serve.out"; do
     if ! kill -0 "$server" 2>/dev/null; then cat "$work/serve.err" >&2; exit 1; fi
@@ -61,11 +66,15 @@ for style in ${STYLES:-constant dynamic smart}; do
     out=$("$tlab" loadtest "$link" --participants "$n" --concurrency "$n" --think 0 --live-seconds "$seconds" --pid-prefix "$style-$n-")
     fps=$(sed -n 's/^live frames: [0-9]*; frames\/s per participant: //p' <<<"$out")
     lat=$(sed -n 's/^live input -> frame (ms, n=[0-9]*): \(p50 [0-9.]*  p95 [0-9.]*\).*/\1/p' <<<"$out")
-    cost=$(sed -n 's/^live frame on the GL worker (ms, p50): //p' <<<"$out")
-    printf '%-10s %4s  %-38s  %-24s  %s\n' "$style" "$n" "$fps" "$lat" "$cost"
+    first=$(sed -n 's/^live first frame of a trial (ms, n=[0-9]*): .*max \([0-9.]*\)$/\1/p' <<<"$out")
+    printf '%-10s %4s  %-38s  %-24s  %s\n' "$style" "$n" "$fps" "$lat" "$first"
+    stages+=$(printf '%-10s %4s %s' "$style" "$n" "$(sed -n 's/^live frame on the server (ms, p50\/p95)://p' <<<"$out")")$'\n'
+
   done
   kill "$server"
   wait "$server" 2>/dev/null || true
   server=
 done
+echo "each stage of a frame on the server (ms, p50/p95; Server-Timing):"
+printf '%s' "$stages"
 sed -n 's/.*(GL: \(.*\))$/GL: \1/p' "$work/serve.out"

@@ -15,6 +15,7 @@ packages=(
   ffmpeg  # tlab replay -o: the video of an interactive trial's frames
   libcpp-httplib-dev libpqxx-dev postgresql  # tlab serve and the PostgreSQL store
   libpng-dev  # tlab serve's live frames: lossless PNG at zlib's fastest level
+  libjpeg62-turbo-dev  # tlab serve's live frames when [online] frames = "jpeg" (lossy, logged)
   nginx  # the TLS reverse proxy of docs/nginx-tlab.conf, tested on loopback
   clang libclang-rt-14-dev time e2fsprogs
   python3-vtk9  # bench/vtk_compare.py (run by hand)

@@ -125,6 +125,8 @@ struct OnlineSpec {
   std::string sessionParameter;              // ("SESSION_ID")
   double timeoutMinutes = 60.0;              // no request for this long: the participant is dropped, the slot freed
   bool live = true;                          // orbit and walk tasks rendered live by the server (false: orbit as a turntable)
+  std::string frames = "png";                // how live frames are sent: "png" (lossless) or "jpeg" (lossy, logged with each frame)
+  int jpegQuality = 90;                      // frames = "jpeg": libjpeg's quality, 1..100
   int turntableAzimuths = 36;                // orbit tasks with live = false: pre-rendered views around the target ...
   int turntableElevations = 5;               // ... at this many elevations
   double turntableElevationDegrees = 60.0;   // spread of the elevations (centred on the start view)

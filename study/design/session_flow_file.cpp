@@ -125,7 +125,7 @@ void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
   const toml::table* t = optionalTable(r, root, "online",
                                        {"participant_parameter", "study_parameter", "session_parameter", "timeout_minutes", "turntable_azimuths",
                                         "turntable_elevations", "turntable_elevation_degrees", "completion_url", "size_calibration",
-                                        "calibration_no_card", "stimulus_size", "devices", "live"});
+                                        "calibration_no_card", "stimulus_size", "devices", "live", "frames", "jpeg_quality"});
   if (!t) return;
   o.participantParameter = r.string(*t, "participant_parameter", "online", false, o.participantParameter);
   if (o.participantParameter.empty()) r.fail(t->get("participant_parameter"), "online.participant_parameter", "must not be empty");
@@ -152,6 +152,13 @@ void readOnline(const FieldReader& r, const toml::table& root, OnlineSpec& o) {
     if (!n->is_boolean()) r.fail(n, "online.live", "must be true or false");
     o.live = n->as_boolean()->get();
   }
+  o.frames = r.string(*t, "frames", "online", false, o.frames);
+  if (o.frames != "png" && o.frames != "jpeg")
+    r.fail(t->get("frames"), "online.frames", "expected \"png\" (lossless) or \"jpeg\" (lossy), got '" + o.frames + "'");
+  const std::int64_t quality = r.integer(*t, "jpeg_quality", "online", o.jpegQuality, 1);
+  if (quality > 100) r.fail(t->get("jpeg_quality"), "online.jpeg_quality", "must be between 1 and 100");
+  o.jpegQuality = int(quality);
+  if (t->get("jpeg_quality") && o.frames != "jpeg") r.fail(t->get("jpeg_quality"), "online.jpeg_quality", "only with frames = \"jpeg\"");
   readStimulusSize(r, *t, o);
   if (t->get("devices")) o.devices = r.strings(*t, "devices", "online");
   for (const auto& d : o.devices)

@@ -32,6 +32,7 @@ std::string frameJson(const LiveFrame& frame) {
   j["input"] = frame.input;
   j["shown_ns"] = frame.shownNs;
   j["sha256"] = frame.sha256;
+  if (!frame.encoding.empty()) j["encoding"] = frame.encoding;
   return j.dump();
 }
 
@@ -54,6 +55,7 @@ LiveFrame parseFrameJson(const std::string& json) {
     f.input = field("input").get<std::string>();
     f.shownNs = field("shown_ns").get<std::int64_t>();
     f.sha256 = field("sha256").get<std::string>();
+    if (const auto encoding = j.find("encoding"); encoding != j.end()) f.encoding = encoding->get<std::string>();
   } catch (const nlohmann::json::exception& e) {
     throw std::invalid_argument(std::string("frame: ") + e.what());
   }

@@ -25,6 +25,7 @@ struct LiveFrame {
   std::string input;               // what moved the view: "start", "drag DX,DY", "key FORWARD,TURN", "point X,Y", ...
   std::int64_t shownNs = 0;        // monotonic clock when the frame was shown (window: after the swap)
   std::string sha256;              // framePixelsSha256 of the rendered frame
+  std::string encoding;            // how it was sent: "png" (lossless), "jpeg quality=Q" (lossy); "" shown as rendered (the window)
 };
 
 // One part of LiveFrame::input: "drag 15,5", "key 1,0", "point 0.453125,0.21875" — `what` and two
@@ -37,7 +38,8 @@ std::string frameInputPart(const char* what, double a, double b);
 std::string framePixelsSha256(const Canvas& frame);
 
 // One line of JSON: {"index":…, "camera":"eye=… target=… up=… fovy=… near=… far=…",
-// "lens":[x,y] (when set), "input":"…", "shown_ns":…, "sha256":"…"}; floats written so they read back exactly.
+// "lens":[x,y] (when set), "input":"…", "shown_ns":…, "sha256":"…", "encoding":"…" (when set)}; floats
+// written so they read back exactly.
 std::string frameJson(const LiveFrame& frame);
 // Throws std::invalid_argument naming the missing or bad field.
 LiveFrame parseFrameJson(const std::string& json);

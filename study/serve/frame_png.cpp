@@ -1,6 +1,7 @@
 #include "study/serve/frame_png.hpp"
 
 #include <png.h>
+#include <zlib.h>
 
 #include <stdexcept>
 #include <vector>
@@ -44,8 +45,9 @@ std::string encodeFramePng(const Canvas& frame) {
   png_set_write_fn(w.png, &out, append, flush);
   png_set_IHDR(w.png, w.info, png_uint_32(frame.width()), png_uint_32(frame.height()), 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
+  png_set_filter(w.png, PNG_FILTER_TYPE_BASE, PNG_FILTER_UP);
   png_set_compression_level(w.png, 1);
+  png_set_compression_strategy(w.png, Z_RLE);
   std::vector<png_bytep> rows(std::size_t(frame.height()));
   auto* pixels = const_cast<png_bytep>(frame.rgba().data());  // libpng only reads the rows
   for (std::size_t y = 0; y < rows.size(); ++y) rows[y] = pixels + y * std::size_t(frame.width()) * 4;

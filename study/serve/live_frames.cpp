@@ -38,6 +38,12 @@ void steer(CameraNavigator& navigator, const LiveTrial& trial, const ViewInput& 
   }
 }
 
+std::string liveViewKey(const LiveTrial& trial) {
+  return trial.stimulus.text() + " | " + navigationName(trial.navigation) + " | " + render::cameraText(trial.start);
+}
+
+bool liveViewShareable(const LiveTrial& trial) { return trial.stimulus.style != "dynamic"; }
+
 bool lensFollowsCursor(const StimulusKey& stimulus) {
   std::map<std::string, std::string> settings;
   for (const auto& s : stimulus.renderSettings) render::addSetting(settings, s);

@@ -14,6 +14,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "renderer/scene/camera.hpp"
 #include "renderer/scene/scene.hpp"
@@ -46,18 +48,31 @@ void steer(CameraNavigator& navigator, const LiveTrial& trial, const ViewInput& 
 // Whether the trial's style has a lens that follows the cursor (dynamic, mode = active), as LiveView decides.
 bool lensFollowsCursor(const StimulusKey& stimulus);
 
+// The renderer a live trial's frames come from is kept per key: the scene, the style with its
+// settings, the size, the navigation and the start camera (LiveTrial).
+std::string liveViewKey(const LiveTrial& trial);
+// Whether sessions may share one renderer for `trial`: its frames depend only on the camera, never
+// on the frames before (every style but dynamic, whose group order is state across frames, seed 004
+// Alg. 1 line 1, and whose lens is the session's own).
+bool liveViewShareable(const LiveTrial& trial);
+
 struct LiveRequest {
   std::string session;  // the participant's token
   std::shared_ptr<const LiveTrial> trial;
   ViewInput input;
+  LiveClock::time_point submitted = LiveClock::now();  // when the server took the request
 };
+
+// What a frame cost, stage by stage, in milliseconds (the Server-Timing header: "wait", "build",
+// "steer", "render" on the GL worker; then "hash", "encode", ... where it is sent).
+using StageTimes = std::vector<std::pair<std::string, double>>;
 
 struct LiveAnswer {
   enum class Status { Frame, Superseded };
   Status status = Status::Superseded;
   LiveFrame frame;                      // index, camera, lens and input (the SHA-256 and shownNs are set where it is sent)
   std::shared_ptr<const Canvas> pixels;  // the frame as rendered
-  double renderMs = 0.0;                 // what it cost on the GL worker
+  StageTimes stagesMs;                   // what it cost on the GL worker
 };
 
 class LiveFrameQueue {

@@ -57,7 +57,8 @@ LoadResult runLoad(const LoadOptions& o) {
   }
   LoadResult r;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::vector<double> ack, requests, starts, frames, render, hash, encode;
+  std::vector<double> ack, requests, starts, frames, firstFrames;
+  std::vector<std::pair<std::string, std::vector<double>>> stages;
   for (const auto& run : runs) {
     (run.finished ? r.finished : r.failed) += 1;
     if (!run.finished && r.firstError.empty()) r.firstError = run.error;
@@ -67,9 +68,12 @@ LoadResult runLoad(const LoadOptions& o) {
     requests.insert(requests.end(), run.requestMs.begin(), run.requestMs.end());
     starts.insert(starts.end(), run.startMs.begin(), run.startMs.end());
     frames.insert(frames.end(), run.frameMs.begin(), run.frameMs.end());
-    render.insert(render.end(), run.renderMs.begin(), run.renderMs.end());
-    hash.insert(hash.end(), run.hashMs.begin(), run.hashMs.end());
-    encode.insert(encode.end(), run.encodeMs.begin(), run.encodeMs.end());
+    firstFrames.insert(firstFrames.end(), run.firstFrameMs.begin(), run.firstFrameMs.end());
+    for (const auto& [name, ms] : run.stageMs) {
+      auto at = std::find_if(stages.begin(), stages.end(), [&name = name](const auto& s) { return s.first == name; });
+      if (at == stages.end()) at = stages.insert(stages.end(), {name, {}});
+      at->second.insert(at->second.end(), ms.begin(), ms.end());
+    }
     if (run.liveSeconds > 0.0) r.framesPerSecond.push_back(double(run.frameMs.size()) / run.liveSeconds);
   }
   r.acknowledged = int(r.acked.size());
@@ -77,9 +81,8 @@ LoadResult runLoad(const LoadOptions& o) {
   r.requests = percentiles(std::move(requests));
   r.start = percentiles(std::move(starts));
   r.frame = percentiles(std::move(frames));
-  r.render = percentiles(std::move(render));
-  r.hash = percentiles(std::move(hash));
-  r.encode = percentiles(std::move(encode));
+  r.firstFrame = percentiles(std::move(firstFrames));
+  for (auto& [name, ms] : stages) r.stages.emplace_back(name, percentiles(std::move(ms)));
   return r;
 }
 

@@ -39,7 +39,8 @@ struct LoadResult {
   double seconds = 0.0;  // wall time of the whole run
   Percentiles ack, requests, start;  // answer → acknowledgement; every request; display report → first screen
   Percentiles frame;                 // live trials: input → frame
-  Percentiles render, hash, encode;  // live trials: each frame's cost on the server's GL worker
+  Percentiles firstFrame;            // live trials: a trial's start view (its renderer may be built for it)
+  std::vector<std::pair<std::string, Percentiles>> stages;  // live trials: each stage of a frame on the server
   std::vector<double> framesPerSecond;  // live trials: each participant's frames a second while exploring
   std::vector<AckedTrial> acked;  // every acknowledged trial, by participant
   std::string firstError;         // the first failed participant's error line

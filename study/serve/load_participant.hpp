@@ -59,7 +59,10 @@ struct ParticipantRun {
   std::vector<double> ackMs, requestMs;  // answer → acknowledgement; every request
   std::vector<double> startMs;           // display report → first screen (the server enrols and plans the session)
   std::vector<double> frameMs;           // live trials: input sent → its frame received
-  std::vector<double> renderMs, hashMs, encodeMs;  // live trials: what each frame cost on the server's GL worker
+  std::vector<double> firstFrameMs;      // live trials: the start view of each trial (its first frame)
+  // live trials: each stage of a frame on the server (Server-Timing: "wait", "render", "hash",
+  // "encode", "total", ...), in the order the server names them
+  std::vector<std::pair<std::string, std::vector<double>>> stageMs;
   double liveSeconds = 0.0;              // time spent exploring live trials (frames / liveSeconds: frames a second)
   int reconnects = 0;
 };
@@ -90,6 +93,7 @@ class LoadParticipant {
   nlohmann::json trial(const nlohmann::json& screen);
   // A live trial's views for `ms`: input after input, each sent when the previous frame arrived.
   void explore(const nlohmann::json& screen, double ms);
+  void noteStages(const std::string& timing);  // a live frame's Server-Timing into run_.stageMs
   // Sends a reply that ends `screen`; returns the next screen. `acknowledged`: the server took the
   // reply (200) and moved on to a later screen, which it does only after storing the reply.
   nlohmann::json finishing(const nlohmann::json& screen, nlohmann::json body, bool* acknowledged = nullptr);

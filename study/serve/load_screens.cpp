@@ -2,6 +2,7 @@
 // participant does on a message, consent, form, break and trial screen.
 #include <httplib.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <cstring>
 #include <stdexcept>
@@ -70,6 +71,23 @@ json LoadParticipant::finishing(const json& screen, json body, bool* acknowledge
   return pastWait(screenOf(r, "reply"));
 }
 
+// Server-Timing: "NAME;dur=MS, NAME;dur=MS, ..." (each stage of a live frame on the server).
+void LoadParticipant::noteStages(const std::string& timing) {
+  std::size_t at = 0;
+  while (at < timing.size()) {
+    const std::size_t end = std::min(timing.find(',', at), timing.size());
+    const std::string entry = timing.substr(at, end - at);
+    const std::size_t dur = entry.find(";dur=");
+    if (dur != std::string::npos) {
+      const std::string name = entry.substr(entry.find_first_not_of(' '), dur - entry.find_first_not_of(' '));
+      auto stage = std::find_if(run_.stageMs.begin(), run_.stageMs.end(), [&](const auto& s) { return s.first == name; });
+      if (stage == run_.stageMs.end()) stage = run_.stageMs.insert(run_.stageMs.end(), {name, {}});
+      stage->second.push_back(std::atof(entry.c_str() + dur + 5));
+    }
+    at = end + 1;
+  }
+}
+
 // Orbiting: a drag of 8 picture pixels (2.4°) right and 1 up per frame; walking: a step forward,
 // then a drag to look right, in turn. The first request has no input: the start view.
 void LoadParticipant::explore(const json& screen, double ms) {
@@ -87,8 +105,8 @@ void LoadParticipant::explore(const json& screen, double ms) {
     const Reply r = send("POST", path, &body);
     if (r.status == 200) {
       run_.frameMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - sent).count());
-      for (auto [name, into] : {std::pair{"render;dur=", &run_.renderMs}, {"hash;dur=", &run_.hashMs}, {"encode;dur=", &run_.encodeMs}})
-        if (const auto at = r.timing.find(name); at != std::string::npos) into->push_back(std::atof(r.timing.c_str() + at + std::strlen(name)));
+      if (n == 0) run_.firstFrameMs.push_back(run_.frameMs.back());
+      noteStages(r.timing);
       continue;
     }
     if (r.status == 409 && r.body.find("superseded") != std::string::npos) continue;

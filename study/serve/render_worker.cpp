@@ -1,80 +1,44 @@
 #include "study/serve/render_worker.hpp"
 
-#include <chrono>
+#include <algorithm>
 #include <filesystem>
+#include <utility>
 
 #include "core/image.hpp"
 #include "core/sha256.hpp"
 #include "study/run/camera_navigator.hpp"
 #include "study/run/live_view.hpp"
+#include "study/serve/gl_thread.hpp"
 
 namespace tlab::study {
 
-RenderWorker::RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online)
+RenderWorker::RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online, int liveRenderers)
     : directory_(std::move(directory)), catalog_(std::move(catalog)), online_(std::move(online)) {
-  std::promise<void> ready;
-  auto started = ready.get_future();
-  thread_ = std::thread([this, &ready] { loop(ready); });
-  try {
-    started.get();  // the context's error, if it could not be made
-  } catch (...) {
-    thread_.join();
-    throw;
-  }
+  if (online_.live)
+    for (int i = 0; i < std::max(1, liveRenderers); ++i) live_.push_back(std::make_unique<LiveRenderer>(kLiveFramesPerSecond));
+  thread_ = startGlThread(
+      [this](const gpu::GpuContext& context) {
+        info_ = context.info();
+        painter_ = std::make_unique<TextPainter>();
+        library_ = std::make_unique<StimulusLibrary>(directory_, catalog_, *painter_);
+      },
+      [this] { loop(); });
 }
 
-RenderWorker::~RenderWorker() {
-  {
-    std::lock_guard lock(mutex_);
-    stopping_ = true;
-  }
-  wake_.notify_one();
-  thread_.join();
-}
+RenderWorker::~RenderWorker() { stopGlThread(mutex_, stopping_, wake_, thread_); }
 
-void RenderWorker::loop(std::promise<void>& ready) {
-  std::unique_ptr<gpu::GpuContext> context;
-  try {
-    context = gpu::createHeadlessContext();
-    info_ = context->info();
-    painter_ = std::make_unique<TextPainter>();
-    library_ = std::make_unique<StimulusLibrary>(directory_, catalog_, *painter_);
-    ready.set_value();
-  } catch (...) {
-    ready.set_exception(std::current_exception());
-    return;
-  }
+void RenderWorker::loop() {
   for (;;) {
     std::function<void()> job;
-    std::optional<LiveFrameQueue::Taken> frame;
     {
       std::unique_lock lock(mutex_);
-      for (;;) {  // preparation first; then a live frame that is due; else wait for either
-        if (!jobs_.empty() || stopping_) break;
-        if ((frame = liveQueue_.take(LiveClock::now()))) break;
-        if (const auto due = liveQueue_.nextDue()) wake_.wait_until(lock, *due);
-        else wake_.wait(lock);
-      }
-      if (!frame && jobs_.empty()) break;
-      if (!frame) {
-        job = std::move(jobs_.front());
-        jobs_.pop_front();
-      }
+      wake_.wait(lock, [this] { return !jobs_.empty() || stopping_; });
+      if (jobs_.empty()) break;
+      job = std::move(jobs_.front());
+      jobs_.pop_front();
     }
-    if (job) job();
-    if (frame) {
-      try {
-        frame->answer.set_value(renderLive(frame->request));
-      } catch (...) {
-        frame->answer.set_exception(std::current_exception());
-      }
-    }
+    job();
   }
-  {
-    std::lock_guard lock(mutex_);
-    liveQueue_.clear();
-  }
-  liveSlots_.clear();  // their renderers' GL objects go while the context is current
   library_.reset();
   painter_.reset();
 }
@@ -129,73 +93,39 @@ Turntable RenderWorker::renderTurntable(const PlannedTrial& trial, const Prepare
   return t;
 }
 
+// A live trial's renderers are made here, ahead of its first frame: while the study is prepared
+// (the first time a stimulus is seen) every LiveRenderer makes them before the server listens;
+// later (a spare taken, a view dropped) they are made again when no frame is due.
 TrialImages RenderWorker::images(const PlannedTrial& trial, const PreparedTrial& prepared) {
-  return onGlThread([&] {
+  const auto [images, first] = onGlThread([&] {
     const std::string key = trial.stimulus.text();
-    if (const auto it = trialImages_.find(key); it != trialImages_.end()) return it->second;
+    if (const auto it = trialImages_.find(key); it != trialImages_.end()) return std::pair{it->second, false};
     TrialImages images;
     if (prepared.floorPlanImage) images.floorPlanSha256 = writeImage(prepared.floorPlanImage->toImage());
     if (trial.navigation != Navigation::None && online_.live) images.live = true;
     else if (trial.navigation == Navigation::Orbit) images.turntable = renderTurntable(trial, prepared);
-    return trialImages_.emplace(key, images).first->second;
+    return std::pair{trialImages_.emplace(key, images).first->second, true};
   });
+  if (images.live && prepared.scene) {
+    const LiveTrial live{prepared.scene, trial.stimulus, trial.navigation, prepared.camera};
+    std::vector<std::future<void>> made;
+    for (auto& renderer : live_) made.push_back(renderer->warm(live, first));
+    if (first)
+      for (auto& m : made) m.get();
+  }
+  return images;
 }
 
 LiveAnswer RenderWorker::liveFrame(LiveRequest request) {
-  std::future<LiveAnswer> answer;
+  LiveRenderer* renderer = nullptr;
   {
     std::lock_guard lock(mutex_);
-    if (stopping_) return LiveAnswer{};
-    answer = liveQueue_.submit(std::move(request));
+    if (stopping_ || live_.empty()) return LiveAnswer{};
+    auto [it, added] = liveOf_.emplace(request.session, nextLive_);  // sessions dealt to the renderers in turn
+    if (added) nextLive_ = (nextLive_ + 1) % live_.size();
+    renderer = live_[it->second].get();
   }
-  wake_.notify_one();
-  return answer.get();
-}
-
-namespace {
-
-double msSince(LiveClock::time_point start) { return std::chrono::duration<double, std::milli>(LiveClock::now() - start).count(); }
-
-}  // namespace
-
-// The participant's input moves the session's navigator (the window's arithmetic), each motion
-// kept only when the eye stays within the trial's bounds; then the frame from exactly that camera.
-// Its hash and PNG are made by the HTTP thread that sends it: the GL worker only renders.
-LiveAnswer RenderWorker::renderLive(const LiveRequest& request) {
-  LiveSlot& slot = liveSlots_[request.session];
-  if (slot.trial != request.trial) {
-    slot = LiveSlot{};
-    slot.trial = request.trial;
-  }
-  slot.used = ++liveUses_;
-  if (!slot.view) {
-    slot.view = std::make_unique<LiveView>(request.trial->scene, request.trial->stimulus, request.trial->navigation, request.trial->start);
-    if (slot.navigator) slot.view->navigator() = *slot.navigator;  // a view dropped for others: made again where it was
-    if (slot.lens) slot.view->pointAt(*slot.lens);
-  }
-  LiveView& view = *slot.view;
-  const ViewInput& in = request.input;
-  steer(view.navigator(), *request.trial, in);
-  slot.navigator = view.navigator();
-  if (in.point && view.pointAt(*in.point)) slot.lens = glm::clamp(*in.point, glm::vec2(0.0f), glm::vec2(1.0f));
-  LiveAnswer a;
-  a.status = LiveAnswer::Status::Frame;
-  a.frame.index = slot.next++;
-  a.frame.camera = view.navigator().camera();
-  a.frame.lens = slot.lens;
-  a.frame.input = in.describe();
-  const auto start = LiveClock::now();
-  a.pixels = std::make_shared<const Canvas>(view.frameFrom(a.frame.camera));  // never the cached frame(): the exact camera logged
-  a.renderMs = msSince(start);
-  std::size_t views = 0;
-  for (const auto& [session, other] : liveSlots_) views += other.view ? 1 : 0;
-  for (; views > kLiveViews; --views) {  // the least recently used view goes
-    LiveSlot* oldest = nullptr;
-    for (auto& [session, other] : liveSlots_)
-      if (other.view && (!oldest || other.used < oldest->used)) oldest = &other;
-    oldest->view.reset();
-  }
-  return a;
+  return renderer->frame(std::move(request));
 }
 
 std::optional<std::string> RenderWorker::imagePath(const std::string& sha256) const {

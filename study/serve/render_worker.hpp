@@ -4,9 +4,9 @@
 // thread-safe); every session thread asks through prepare(), which queues the call and waits.
 // Everything a study shows is prepared before the server listens, so during the study these calls
 // only look up what is cached. Images are indexed by SHA-256: the server serves nothing else.
-// Live trials (orbit, walk) are the exception: their frames are rendered during the study, from a
-// LiveView per session kept on this thread, when no preparation job waits (LiveFrameQueue: one
-// frame per session at a time, sessions in turn, at most kLiveFramesPerSecond each).
+// Live trials (orbit, walk) are the exception: their frames are rendered during the study by the
+// worker's LiveRenderers (live_renderer.hpp: threads with their own GL contexts, each session's
+// frames on one of them), whose renderers for a live trial are made while its screen is prepared.
 #include <condition_variable>
 #include <deque>
 #include <functional>
@@ -25,13 +25,15 @@
 #include "study/run/live_view.hpp"
 #include "study/run/stimulus_library.hpp"
 #include "study/serve/live_frames.hpp"
+#include "study/serve/live_renderer.hpp"
 #include "study/serve/trial_page.hpp"
 
 namespace tlab::study {
 
 class RenderWorker : public StimulusSource {
  public:
-  RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online);
+  // `liveRenderers`: how many threads render live frames at once (each its own GL context).
+  RenderWorker(std::string directory, std::vector<render::BuiltinSceneSpec> catalog, OnlineSpec online, int liveRenderers = 1);
   ~RenderWorker() override;
   RenderWorker(const RenderWorker&) = delete;
   RenderWorker& operator=(const RenderWorker&) = delete;
@@ -39,11 +41,10 @@ class RenderWorker : public StimulusSource {
   PreparedTrial prepare(const PlannedTrial& trial) override;
   // The floor plan and turntable of a trial (rendered once per stimulus key).
   TrialImages images(const PlannedTrial& trial, const PreparedTrial& prepared);
-  // The next frame of a live trial after `request.input`, rendered on the GL thread (waits for it);
-  // "superseded" when newer input of the same session came before it was begun.
+  // The next frame of a live trial after `request.input`, rendered by the session's LiveRenderer
+  // (waits for it); "superseded" when newer input of the same session came before it was begun.
   LiveAnswer liveFrame(LiveRequest request);
   static constexpr double kLiveFramesPerSecond = 30.0;
-  static constexpr std::size_t kLiveViews = 16;  // renderers kept at once; the least recently used goes first
   const gpu::GpuInfo& gpuInfo() const { return info_; }
   // The PNG file of an image this worker made or prepared, by SHA-256 name; nullopt otherwise.
   std::optional<std::string> imagePath(const std::string& sha256) const;
@@ -60,23 +61,9 @@ class RenderWorker : public StimulusSource {
     wake_.notify_one();
     return result.get();
   }
-  void loop(std::promise<void>& ready);
+  void loop();  // the GL thread's: jobs until stopped
   std::string writeImage(const core::Image& image);  // GL thread
   Turntable renderTurntable(const PlannedTrial& trial, const PreparedTrial& prepared);  // GL thread
-  LiveAnswer renderLive(const LiveRequest& request);  // GL thread
-  // One session's live trial on the GL thread: where its camera is, the next frame's index, the
-  // lens where the cursor last put it, and its view (a renderer; at most kLiveViews are kept, the
-  // least recently used dropped first and made again when its session asks: the camera, index
-  // and lens stay here).
-  struct LiveSlot {
-    std::shared_ptr<const LiveTrial> trial;
-    std::optional<CameraNavigator> navigator;
-    int next = 0;
-    std::optional<glm::vec2> lens;
-    std::unique_ptr<LiveView> view;
-    std::uint64_t used = 0;
-  };
-
   std::string directory_;
   std::vector<render::BuiltinSceneSpec> catalog_;
   OnlineSpec online_;
@@ -84,9 +71,9 @@ class RenderWorker : public StimulusSource {
   std::unique_ptr<TextPainter> painter_;      // GL thread
   std::unique_ptr<StimulusLibrary> library_;  // GL thread
   std::map<std::string, TrialImages> trialImages_;  // GL thread: stimulus key → images
-  std::map<std::string, LiveSlot> liveSlots_;        // GL thread: session token → its live trial
-  std::uint64_t liveUses_ = 0;                       // GL thread
-  LiveFrameQueue liveQueue_{kLiveFramesPerSecond};   // guarded by mutex_
+  std::vector<std::unique_ptr<LiveRenderer>> live_;
+  std::map<std::string, std::size_t> liveOf_;  // session token → its LiveRenderer (guarded by mutex_)
+  std::size_t nextLive_ = 0;                   // the next session's LiveRenderer (guarded by mutex_)
   mutable std::mutex mutex_;
   std::condition_variable wake_;
   std::deque<std::function<void()>> jobs_;

@@ -91,6 +91,20 @@ TEST(ExperimentFile, StimulusSizeDevicesAndCalibrationOnline) {
   EXPECT_EQ(errorOf(kBase + "[online]\ndevices = []\n"), "bad.toml:10: online.devices: at least one kind of device must be allowed");
 }
 
+// How live frames are sent (issue #30): lossless PNG unless the experiment chooses JPEG at a quality.
+TEST(ExperimentFile, LiveFramesArePngUnlessJpegIsChosen) {
+  const Experiment d = parseExperiment(kBase, "d.toml", StimulusChecks::Skip);
+  EXPECT_EQ(d.online.frames, "png");
+  const Experiment j = parseExperiment(kBase + "[online]\nframes = \"jpeg\"\njpeg_quality = 75\n", "j.toml", StimulusChecks::Skip);
+  EXPECT_EQ(j.online.frames, "jpeg");
+  EXPECT_EQ(j.online.jpegQuality, 75);
+  EXPECT_EQ(parseExperiment(kBase + "[online]\nframes = \"jpeg\"\n", "q.toml", StimulusChecks::Skip).online.jpegQuality, 90);
+  EXPECT_EQ(errorOf(kBase + "[online]\nframes = \"gif\"\n"), "bad.toml:10: online.frames: expected \"png\" (lossless) or \"jpeg\" (lossy), got 'gif'");
+  EXPECT_EQ(errorOf(kBase + "[online]\nframes = \"jpeg\"\njpeg_quality = 101\n"), "bad.toml:11: online.jpeg_quality: must be between 1 and 100");
+  EXPECT_EQ(errorOf(kBase + "[online]\nframes = \"jpeg\"\njpeg_quality = 0\n"), "bad.toml:11: online.jpeg_quality: must be >= 1");
+  EXPECT_EQ(errorOf(kBase + "[online]\njpeg_quality = 80\n"), "bad.toml:10: online.jpeg_quality: only with frames = \"jpeg\"");
+}
+
 TEST(ExperimentFile, ErrorsNameFileLineAndField) {
   EXPECT_EQ(errorOf("extra = 1\n" + kBase), "bad.toml:1: extra: unknown key (known: analysis, block_tasks, breaks, consent, counterbalancing, "
                                             "debrief, factors, goodbye, id, info, language, observer, online, participant_title, participants, "

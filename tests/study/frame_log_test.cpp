@@ -35,8 +35,19 @@ TEST(FrameLog, JsonReadsBackEveryFloatExactly) {
   EXPECT_EQ(g.input, f.input);
   EXPECT_EQ(g.shownNs, f.shownNs);
   EXPECT_EQ(g.sha256, f.sha256);
+  EXPECT_EQ(g.encoding, "") << "no encoding: shown as rendered (the window)";
+  EXPECT_EQ(frameJson(f).find("encoding"), std::string::npos);
   f.lens.reset();
   EXPECT_FALSE(parseFrameJson(frameJson(f)).lens.has_value());
+}
+
+// A frame sent lossy says so in its event ([online] frames = "jpeg"); its hash is still the pixels'.
+TEST(FrameLog, TheEncodingAFrameWasSentInReadsBack) {
+  LiveFrame f;
+  f.sha256 = std::string(64, 'b');
+  f.encoding = "jpeg quality=75";
+  EXPECT_NE(frameJson(f).find(R"("encoding":"jpeg quality=75")"), std::string::npos) << frameJson(f);
+  EXPECT_EQ(parseFrameJson(frameJson(f)).encoding, "jpeg quality=75");
 }
 
 TEST(FrameLog, BadJsonNamesTheField) {

@@ -86,7 +86,12 @@ TEST(ServeLoad, TwoParticipantsExploreLiveTrialsAndEveryFrameTheyGotIsLogged) {
   const long frames = std::stol(m[1]);
   EXPECT_GE(frames, 4) << "at least the start view of each live trial of each participant";
   EXPECT_NE(load.out.find("live input -> frame (ms, n=" + std::to_string(frames) + "): p50 "), std::string::npos) << load.out;
-  EXPECT_NE(load.out.find("live frame on the GL worker (ms, p50): render "), std::string::npos) << load.out;
+  EXPECT_NE(load.out.find("live first frame of a trial (ms, n=4): p50 "), std::string::npos) << "two participants, two live trials each" << load.out;
+  // Every stage of a frame on the server, in the order it runs (Server-Timing).
+  EXPECT_TRUE(std::regex_search(load.out, std::regex("live frame on the server \\(ms, p50/p95\\):  parse [0-9.]+/[0-9.]+  wait [0-9.]+/[0-9.]+  "
+                                                     "build [0-9.]+/[0-9.]+  steer [0-9.]+/[0-9.]+  render [0-9.]+/[0-9.]+  hash [0-9.]+/[0-9.]+  "
+                                                     "encode [0-9.]+/[0-9.]+  log [0-9.]+/[0-9.]+  total [0-9.]+/[0-9.]+\n")))
+      << load.out;
   const auto db = (dir / "study.db").string();
   EXPECT_EQ(queryCount(db, "SELECT COUNT(*) FROM events WHERE kind = 'frame'"), frames) << "every frame received is logged, no other";
 }
