@@ -5,11 +5,15 @@
 // `constant`); later styles provide their own per-fragment α.
 //
 // TLAB_FUSED (issue #29): the sort pass did not run; each invocation sorts its own pixel's list
-// and blends it, so no sorted buffer is written. Lists of up to 8 fragments are sorted in
+// and blends it, so no sorted buffer is written. Lists of up to 4 fragments are sorted in
 // registers by a fixed sorting network (every index a constant: no per-lane memory); longer ones
 // by insertion sort of their (depth, source) keys in the order buffer at the pixel's block, as
 // buffer/sort.comp sorts. The keys (depth bits, then triangle index) are unique within a pixel,
 // so both give sort.comp's order, and the blend's arithmetic is the same, term by term.
+// Measured on llvmpipe (issue #29): 4 registers beat 8 (a network of 8 made the compose pass
+// 18.5-166 ms against 16.4-110 ms on the teapot, bunny, torus, abstract scene and 16-layer stack,
+// best of 3 alternating rounds at load 5), and inserting each record into the registers as it is
+// read, in loops, was slower than either.
 // TLAB_SLOTS: the records sit in slots (buffer/fill_slots.frag: the i-th at i * uPixels + pixel),
 // else in the scatter pass's block [pixelHead, pixelHead + pixelCount).
 #include "frame/fragment_layout.glsl"
@@ -51,7 +55,7 @@ uvec3 loadRecord(uint record) {
 }
 bool before(uvec3 a, uvec3 b) { return a.x != b.x ? a.x < b.x : a.y < b.y; }
 
-const uint REGISTER_SORT = 8u;
+const uint REGISTER_SORT = 4u;
 uvec3 r[REGISTER_SORT];
 // Compare-exchange of two constant indices.
 #define CE(i, j) { uvec3 lo = before(r[j], r[i]) ? r[j] : r[i]; uvec3 hi = before(r[j], r[i]) ? r[i] : r[j]; r[i] = lo; r[j] = hi; }
@@ -59,10 +63,7 @@ uvec3 r[REGISTER_SORT];
 void blendInRegisters(uint pixel, uint base, uint n) {
   for (uint i = 0u; i < REGISTER_SORT; ++i)
     r[i] = i < n ? loadRecord(recordOf(pixel, base, i)) : uvec3(0xFFFFFFFFu);  // padding sorts last
-  if (n > 4u) {  // Batcher's odd-even merge sort of 8 (19 compare-exchanges)
-    CE(0, 1) CE(2, 3) CE(4, 5) CE(6, 7) CE(0, 2) CE(1, 3) CE(4, 6) CE(5, 7) CE(1, 2) CE(5, 6)
-    CE(0, 4) CE(1, 5) CE(2, 6) CE(3, 7) CE(2, 4) CE(3, 5) CE(1, 2) CE(3, 4) CE(5, 6)
-  } else if (n > 2u) {  // the optimal network of 4 (5 compare-exchanges)
+  if (n > 2u) {  // the optimal network of 4 (5 compare-exchanges)
     CE(0, 1) CE(2, 3) CE(0, 2) CE(1, 3) CE(1, 2)
   } else if (n == 2u) {
     CE(0, 1)

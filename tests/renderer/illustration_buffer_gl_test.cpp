@@ -188,7 +188,7 @@ TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByte
 }
 
 // Issue #29: `constant` leaves the sort to its compose pass, which sorts each list as it blends
-// (in registers up to 8 fragments, in the order buffer beyond). Its pictures must equal, float for
+// (in registers up to 4 fragments, in the order buffer beyond). Its pictures must equal, float for
 // float, those of the linked-list fill, whose lists the sort pass sorts before the compose pass
 // blends them: for lists of 1 to 20 fragments (2 to 12 of varied length in the nested spheres), from the slots (second frame) and from the scatter
 // pass (a first frame whose lists outgrow the 8 slots it starts with).
