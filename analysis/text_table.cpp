@@ -37,6 +37,12 @@ std::string escapeMarkdown(const std::string& s) {
 
 }  // namespace
 
+const std::string& cellLink(const TextTable& table, std::size_t row, std::size_t column) {
+  static const std::string none;
+  if (row >= table.links.size() || column >= table.links[row].size()) return none;
+  return table.links[row][column];
+}
+
 std::string renderPlainText(const TextTable& table) {
   std::vector<std::size_t> widths(table.header.size(), 0);
   for (std::size_t c = 0; c < table.header.size(); ++c) widths[c] = displayWidth(table.header[c]);
@@ -70,10 +76,14 @@ std::string renderHtmlTable(const TextTable& table) {
   out += "<thead><tr>";
   for (const auto& h : table.header) out += "<th>" + escapeHtml(h) + "</th>";
   out += "</tr></thead>\n<tbody>\n";
-  for (const auto& row : table.rows) {
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
+    const auto& row = table.rows[r];
     out += "<tr>";
-    for (std::size_t c = 0; c < row.size(); ++c)
-      out += std::string(c > 0 && looksNumeric(row[c]) ? "<td class=\"num\">" : "<td>") + escapeHtml(row[c]) + "</td>";
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      const std::string& href = cellLink(table, r, c);
+      const std::string cell = href.empty() ? escapeHtml(row[c]) : "<a href=\"" + escapeHtml(href) + "\">" + escapeHtml(row[c]) + "</a>";
+      out += std::string(c > 0 && looksNumeric(row[c]) ? "<td class=\"num\">" : "<td>") + cell + "</td>";
+    }
     out += "</tr>\n";
   }
   return out + "</tbody>\n</table>\n";
@@ -96,11 +106,12 @@ std::string renderMarkdownTable(const TextTable& table) {
     out += numeric ? " ---: |" : " --- |";
   }
   out += "\n";
-  for (const auto& row : table.rows) {
+  for (std::size_t r = 0; r < table.rows.size(); ++r) {
     out += "|";
-    for (const auto& cell : row) {
+    for (std::size_t c = 0; c < table.rows[r].size(); ++c) {
+      const std::string& href = cellLink(table, r, c);
       out += ' ';
-      out += escapeMarkdown(cell);
+      out += href.empty() ? escapeMarkdown(table.rows[r][c]) : "[" + escapeMarkdown(table.rows[r][c]) + "](" + href + ")";
       out += " |";
     }
     out += "\n";

@@ -43,12 +43,6 @@ struct ScratchFolder {
   }
 };
 
-void createFolder(const fs::path& folder) {
-  std::error_code error;
-  fs::create_directories(folder, error);
-  if (error) throw std::runtime_error(folder.string() + ": cannot create the folder (" + error.message() + ")");
-}
-
 void writeText(const fs::path& path, const std::string& text) {
   core::writeFileAtomically(path.string(), std::vector<std::uint8_t>(text.begin(), text.end()));
 }
@@ -66,17 +60,12 @@ void run(const ReplayOptions& o) {
   // Where the PNG frames go: --frames, the page's own folder, a scratch folder for the video.
   std::vector<fs::path> folders;
   if (!o.frames.empty()) folders.push_back(o.frames);
-  const fs::path pageFrames = o.html.empty() ? fs::path() : fs::path(o.html).parent_path() / (fs::path(o.html).stem().string() + "-frames");
+  const fs::path pageFrames = o.html.empty() ? fs::path() : study::pageFramesFolder(o.html);
   if (!o.html.empty()) folders.push_back(pageFrames);
   std::unique_ptr<ScratchFolder> scratch;
   if (!o.video.empty() && folders.empty()) folders.push_back((scratch = std::make_unique<ScratchFolder>())->path);
-  for (const auto& f : folders) createFolder(f);
 
-  const study::ReplayCheck check = study::replayTrial(trial, sceneCatalog(), self, [&](std::size_t i, const study::Canvas& picture, const study::FrameCheck&) {
-    if (folders.empty()) return;
-    const auto png = core::encodePng(picture.toImage());
-    for (const auto& f : folders) core::writeFileAtomically((f / study::frameFileName(i)).string(), png);
-  });
+  const study::ReplayCheck check = study::replayIntoFolders(trial, sceneCatalog(), self, folders);
   if (!o.frames.empty()) std::printf("wrote %zu frames to %s\n", trial.frames.size(), o.frames.c_str());
   if (!o.video.empty()) {
     study::writeReplayVideo(trial, folders.front(), o.video);

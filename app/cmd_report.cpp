@@ -1,9 +1,11 @@
 // tlab report FILE.csv --dv COL [--within A[,B] --subject S] [--between A] -o report.html
 // [--markdown report.md]: an HTML (and optionally Markdown) report with design, descriptives,
 // outlier screening, ANOVA, two-condition/rank tests and plots.
-// tlab report study.db -o report.html: the same for a study database, following the analysis plan
-// of the experiment file stored in it: one page with a section per [[analysis]] (and one Markdown
-// file when asked), every file written named on its own line.
+// tlab report study.db -o report.html [--replays]: the same for a study database, following the
+// analysis plan of the experiment file stored in it: one page with a section per [[analysis]] (and
+// one Markdown file when asked), every file written named on its own line. --replays renders every
+// interactive trial's logged frames again (as tlab replay --html does) into REPORT-replays/ beside
+// the report, and the report's table of interactive trials links each page with its check.
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -16,8 +18,13 @@
 #include "analysis/report_markdown.hpp"
 #include "app/commands.hpp"
 #include "study/analyze/study_analysis.hpp"
-#include "study/store/open_store.hpp"
+#include "app/scene_options.hpp"
+#include "renderer/gpu/gpu_context.hpp"
+#include "study/analyze/replay_listing.hpp"
 #include "study/analyze/study_record_tables.hpp"
+#include "study/replay/replay_outputs.hpp"
+#include "study/replay/trial_replay.hpp"
+#include "study/store/open_store.hpp"
 
 namespace tlab::app {
 
@@ -36,6 +43,7 @@ struct ReportOptions {
   std::string title;
   std::string ssType = "2";
   bool poolVersions = false;
+  bool replays = false;
 };
 
 // Creates the folder a report goes into (as export does), with one plain line if it cannot.
@@ -85,6 +93,33 @@ void writeMarkdown(const std::vector<an::Report>& reports, const std::string& ma
   std::cout << "wrote " << markdown << " and " << figures << " figure files\n";
 }
 
+// Every interactive trial with logged frames replayed into REPORT-replays/ beside the report: its
+// page (frames, inputs, timing, answer, the check of each frame) by participant and sequence.
+study::ReplayLinks writeReplays(study::Store& store, const study::StoredExperiment& stored, const std::filesystem::path& report) {
+  const auto trials = study::replayableTrials(store, stored.experiment.id);
+  if (trials.empty()) {
+    std::cout << "no interactive trial has frames logged: no replays to write\n";
+    return {};
+  }
+  const std::string folderName = report.stem().string() + "-replays";
+  const std::filesystem::path folder = report.parent_path() / folderName;
+  const auto context = gpu::createHeadlessContext();
+  const study::ReplayRenderer self{context->info().renderer, TLAB_VERSION "+" TLAB_GIT_REVISION};
+  study::ReplayLinks links;
+  std::size_t frames = 0, identical = 0;
+  for (const auto& t : trials) {
+    const study::LoggedTrial trial = study::loadLoggedTrial(store, stored.experiment.id, t.participant, t.sequence);
+    const std::string page = study::replayStem(t) + ".html";
+    const study::ReplayCheck check = study::writeReplayPage(trial, sceneCatalog(), self, folder / page);
+    links[{t.participant, t.sequence}] = {folderName + "/" + page, check.summary()};
+    frames += check.frames.size();
+    identical += std::size_t(check.identical());
+  }
+  std::cout << "wrote " << trials.size() << " replay " << (trials.size() == 1 ? "page" : "pages") << " to " << folder.string() << ": "
+            << identical << " of " << frames << " frames identical\n";
+  return links;
+}
+
 void runDatabase(const ReportOptions& o) {
   if (!o.dvs.empty() || !o.within.empty() || !o.between.empty() || !o.subject.empty())
     throw an::AnalysisError("a study database is reported by its experiment's analysis plan; --dv/--within/--between/--subject are for CSV files");
@@ -96,9 +131,11 @@ void runDatabase(const ReportOptions& o) {
   an::ReportPage page;
   const std::string& id = stored.experiment.title.empty() ? stored.experiment.id : stored.experiment.title;
   page.title = !o.title.empty() ? o.title : id;
+  createParentFolder(o.output);
+  const study::ReplayLinks replays = o.replays ? writeReplays(store, stored, o.output) : study::ReplayLinks{};
   for (const auto& analysis : analyses) {
     an::Report report = analysis.report;
-    study::appendStudyRecord(report, store, stored);
+    study::appendStudyRecord(report, store, stored, replays);
     page.reports.push_back(std::move(report));
   }
   if (page.reports.size() == 1 && !o.title.empty()) page.reports.front().title = o.title;
@@ -109,6 +146,7 @@ void runDatabase(const ReportOptions& o) {
 
 void run(const ReportOptions& o) {
   if (std::filesystem::path(o.file).extension() == ".db" || study::isServerLocation(o.file)) return runDatabase(o);
+  if (o.replays) throw an::AnalysisError("--replays renders the interactive trials of a study database; a CSV file has none");
   if (o.dvs.empty()) throw an::AnalysisError("--dv is required for a CSV file");
   if (!o.within.empty() && o.subject.empty())
     throw an::AnalysisError("--within needs --subject (the column naming the participant)");
@@ -137,6 +175,9 @@ void addReportCommand(CLI::App& app) {
   cmd->add_option("--markdown", o.markdown, "Also write Markdown (figures as SVG files next to it)");
   cmd->add_option("--title", o.title, "Report title");
   cmd->add_flag("--pool-versions", o.poolVersions, "report data of experiment versions whose designs differ together (databases)");
+  cmd->add_flag("--replays", o.replays,
+                "render every interactive trial's logged frames again into REPORT-replays/ beside the report (as tlab replay --html "
+                "does) and link each page, with its check, from the report (study databases)");
   cmd->add_option("--ss-type", o.ssType, "Sums of squares for unbalanced data: 2 or 3")->capture_default_str();
   cmd->callback([options] { run(*options); });
 }

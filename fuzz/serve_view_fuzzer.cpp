@@ -3,6 +3,7 @@
 // steered into a walking and an orbiting navigator of Elmqvist's WALKTHROUGH as the GL worker
 // does. Input must never crash the server nor move a camera outside the trial's bounds or to a
 // number that is not finite, however many messages it sends.
+// fuzz-sources: study/serve/view_input.cpp study/serve/live_frames.cpp study/run/camera_navigator.cpp
 #include <cmath>
 #include <cstddef>
 #include <cstdint>

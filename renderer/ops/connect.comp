@@ -10,7 +10,9 @@
 //  TLAB_PHASE 2: links kept only when both fragments chose each other (ε is not symmetric: εz
 //     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
 //     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
-//     boundary conditions of Sec. 5.3 on β and γ with their b flags.
+//     boundary conditions of Sec. 5.3 on β and γ with their b flags; with TLAB_LIST_SEEDS, the
+//     fragments where β and γ start above 0 (Eq. 9's seeds) in lists for the solve's frontier.
+// Over 300 lines: the three phases share ε, the searches and the fast path, so they stay one shader.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
@@ -37,6 +39,15 @@ layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 #if TLAB_PHASE != 2
 // The pixels whose links need the full search: a count, then the pixel indices.
 layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPixels[]; };
+#endif
+#if TLAB_PHASE == 2 && defined(TLAB_LIST_SEEDS)
+// The fragments Eq. 9 spreads from (value above 0), for the solve's frontier (ops/spread_frontier.comp).
+#ifdef TLAB_HAS_BETA
+FRONTIER_LIST(, BIND_SEEDS_BETA, SeedsBeta, betaSeeds);
+#endif
+#ifdef TLAB_HAS_GAMMA
+FRONTIER_LIST(, BIND_SEEDS_GAMMA, SeedsGamma, gammaSeeds);
+#endif
 #endif
 #if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
@@ -310,7 +321,11 @@ void main() {
     if (inside(q)) qHead[k] = pixelHead[uint(q.y * uWidth + q.x)];
     else ++outside;
   }
-  for (uint layer = 0u; layer < n; ++layer) {
+  // Seeds are listed 32 layers at a time (one atomic per list and chunk: on a CPU rasterizer
+  // every lane runs an atomic's loop, whether or not it appends).
+  for (uint chunk = 0u; chunk < n; chunk += 32u) {
+  uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
+  for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {
     uint f = head + layer;
     uvec4 link = links[f];
     uint found = 0u;
@@ -340,11 +355,22 @@ void main() {
     alpha[f] = alphaInit;
 #ifdef TLAB_HAS_BETA
     beta[f] = b;
+    if (b > 0.0) betaMask |= 1u << (layer - chunk);
 #endif
 #ifdef TLAB_HAS_GAMMA
     gamma[f] = g;
+    if (g > 0.0) gammaMask |= 1u << (layer - chunk);
 #endif
     flags[f] = free;
+  }
+#ifdef TLAB_LIST_SEEDS
+#ifdef TLAB_HAS_BETA
+  FRONTIER_APPEND_LAYERS(betaSeeds, betaMask, head + chunk);
+#endif
+#ifdef TLAB_HAS_GAMMA
+  FRONTIER_APPEND_LAYERS(gammaSeeds, gammaMask, head + chunk);
+#endif
+#endif
   }
 #endif
 }

@@ -18,6 +18,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   constexpr GLuint kConnectWork = 22;  // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
   constexpr GLint kSortedWordsUnit = 0;
+  constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = layout.defines();
@@ -44,9 +45,18 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
   }
+  // Eq. 9 spreads only from fragments above 0: phase 2 lists them for the solve's frontier.
+  const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
+  if (listSeeds)
+    for (Field f : {Field::Beta, Field::Gamma})
+      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) {
+        TransparencyFields::clearList(fields.frontier(f));
+        fields.frontier(f).bindBase(GL_SHADER_STORAGE_BUFFER, f == Field::Beta ? kSeedsBeta : kSeedsGamma);
+      }
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
+    if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
     program.use();
     glUniform1i(program.uniform("uWidth"), buffer.width());
@@ -70,6 +80,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   fields.swap(Field::Alpha);
   if (fields.hasBeta()) fields.swap(Field::Beta);
   if (fields.hasGamma()) fields.swap(Field::Gamma);
+  fields.setSeedsListed(listSeeds);
   gpu::checkGl("ops/connect.comp");
   return listed;
 }

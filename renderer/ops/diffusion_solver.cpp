@@ -12,6 +12,16 @@ namespace {
 constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/field_bindings.glsl
 constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;  // also the bits of the change record
 constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
+constexpr GLuint kLinks = 10, kFlags = 17;           // BIND_LINKS, BIND_FLAGS
+constexpr GLuint kFrontierIn = 23, kFrontierOut = 24, kFrontierValues = 25, kStamps = 26;
+
+// A frontier pass over the fragments of `list` (its header is the indirect dispatch).
+void runOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
+  program.use();
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.id());
+  glDispatchComputeIndirect(0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
 
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
   program.use();  // (callers may have set further uniforms on it already)
@@ -33,6 +43,8 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
       shaders_(shaders),
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
+      frontierStep_(&shaders.compute("ops/spread_frontier.comp")),
+      frontierApply_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FRONTIER_APPLY", "1"}})),
       changed_(sizeof(std::uint32_t)) {}
 
 const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
@@ -114,7 +126,10 @@ void DiffusionSolver::spread(TransparencyFields& fields, Field field, double lam
   }
 }
 
-void DiffusionSolver::step(TransparencyFields& fields) const { step(fields, {fields.hasBeta(), fields.hasGamma()}); }
+void DiffusionSolver::step(TransparencyFields& fields) const {
+  fields.setSeedsListed(false);  // β and γ move past their seeds
+  step(fields, {fields.hasBeta(), fields.hasGamma()});
+}
 
 void DiffusionSolver::step(TransparencyFields& fields, Spread spread) const {
   if (fields.fragments() == 0) return;
@@ -143,11 +158,59 @@ unsigned DiffusionSolver::takeChanges() const {
   return bits;
 }
 
+// Eq. 9 steps on the frontier only (ops/spread_frontier.comp), from the seeds the connect pass
+// listed: per step one pass evaluates the neighbours of the fragments the previous step changed
+// and lists those that change, a second writes their new values. Stops as the full steps do.
+int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps,
+                                    unsigned freeBit) const {
+  const gpu::Buffer* previous = &fields.frontier(field);  // step 1: the seeds
+  const gpu::Buffer* changed = &fields.frontier(Field::Alpha);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT);  // the connect pass wrote the seed list's header
+  fields.current(field).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
+  fields.links().bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
+  fields.flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
+  fields.scratch().bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierValues);
+  fields.stamps().bindBase(GL_SHADER_STORAGE_BUFFER, kStamps);
+  frontierStep_->use();
+  glUniform1f(frontierStep_->uniform("uLambda"), static_cast<float>(lambda));
+  glUniform1ui(frontierStep_->uniform("uFreeBit"), freeBit);
+  frontierApply_->use();
+  glUniform1ui(frontierApply_->uniform("uFreeBit"), freeBit);
+  changed_.clearToZero();
+  changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
+  int run = 0;
+  for (int i = 0; i < steps; ++i) {
+    TransparencyFields::clearList(*changed);
+    previous->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierIn);
+    changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
+    frontierStep_->use();
+    glUniform1ui(frontierStep_->uniform("uTag"), fields.nextTag());
+    runOnList(*frontierStep_, *previous);
+    runOnList(*frontierApply_, *changed);
+    ++run;
+    // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
+    // since the last check), so the same steps are run.
+    if ((i & (i + 1)) == 0 && (takeChanges() & freeBit) == 0) break;
+    std::swap(previous, changed);
+  }
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  gpu::checkGl("ops/spread_frontier.comp");
+  return run;
+}
+
 void DiffusionSolver::solve(TransparencyFields& fields) const {
   const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
   const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
-  bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was
   betaRun_ = gammaRun_ = 0;
+  if (fields.takeSeedsListed() && settings_.spreadByMax && fields.fragments() > 0) {
+    // The connect pass listed Eq. 9's seeds: α diffuses alone (if at all), β and γ spread on
+    // their frontiers — the fields of the full steps below, bit for bit.
+    for (int i = 0; settings_.diffusesAlpha() && i < settings_.iterations; ++i) step(fields, Spread{});
+    if (betaSteps > 0) betaRun_ = spreadFrontier(fields, Field::Beta, settings_.lambdaBeta, betaSteps, kFreeBeta);
+    if (gammaSteps > 0) gammaRun_ = spreadFrontier(fields, Field::Gamma, settings_.lambdaGamma, gammaSteps, kFreeGamma);
+    return;
+  }
+  bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was
   changed_.clearToZero();
   changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
   for (int i = 0; i < settings_.iterations; ++i) {

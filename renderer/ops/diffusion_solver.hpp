@@ -1,7 +1,8 @@
 #pragma once
 // The solve pass (Carnecky Sec. 5.4): n steps of α diffusion (Eq. 8; explicit, sub-stepped or
 // implicit — see ops/diffuse_alpha.comp for the stability bound) and β/γ spreading (Eq. 9 or
-// Eq. 8), each step a ping-pong compute pass over all fragments. What a scene does not need is
+// Eq. 8), each step a ping-pong compute pass over all fragments — or, for Eq. 9 from the seeds
+// the connect pass listed, passes over the frontier only (ops/spread_frontier.comp). What a scene does not need is
 // left out: no α diffusion when α starts uniform (Eq. 4), no γ with halos off, no β without
 // silhouettes.
 #include <string>
@@ -19,7 +20,9 @@ class DiffusionSolver {
   // One of the n steps (time λα) on all fields.
   void step(TransparencyFields& fields) const;
   // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps, or a
-  // step that changed nothing).
+  // step that changed nothing). Where the connect pass listed Eq. 9's seeds for these fields
+  // (and nothing changed them since), β and γ spread on the frontier only
+  // (ops/spread_frontier.comp): the same fields, bit for bit, for a fraction of the work.
   void solve(TransparencyFields& fields) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
@@ -43,11 +46,15 @@ class DiffusionSolver {
   const gpu::ShaderProgram& alphaProgram(bool jacobi, Spread fused) const;
   unsigned takeChanges() const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
+  // Up to `steps` Eq. 9 steps of `field` from its listed seeds; returns the steps run.
+  int spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
+  const gpu::ShaderProgram* frontierStep_;
+  const gpu::ShaderProgram* frontierApply_;
   mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
   mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };

@@ -11,9 +11,41 @@
 #define BIND_ALPHA_OLD 18
 #define BIND_CHANGED 19  // one word: bit 1 β changed, bit 2 γ changed (fused spreading)
 #define BIND_CONNECT_WORK 22  // the connect pass's work list: a count, then pixels (ops/connect.comp)
+// Sparse Eq. 9 spreading (ops/spread_frontier.comp): fragment lists, each a dispatch header
+// (groups, 1, 1, count) then fragment indices; the connect pass lists β's and γ's seeds.
+#define BIND_FRONTIER_IN 23
+#define BIND_FRONTIER_OUT 24
+#define BIND_SEEDS_BETA 23
+#define BIND_SEEDS_GAMMA 24
+#define BIND_FRONTIER_VALUES 25  // the new value of each fragment of the output list
+#define BIND_STAMPS 26           // per fragment: the tag of the last step that listed it
+#define FRONTIER_GROUP 64u       // invocations per group of a frontier dispatch
+#define FRONTIER_MAX_GROUPS 65535u
 
 #define NO_NEIGHBOR 0xFFFFFFFFu
 // Flag bits: set = free (b = 1 in the paper), clear = fixed by a boundary condition (b = 0).
 #define FREE_ALPHA 1u
 #define FREE_BETA 2u
 #define FREE_GAMMA 4u
+
+// A frontier list as a storage block (instance name `list`), and appending fragment F to it at
+// index AT: the header's group count stays ⌈count / FRONTIER_GROUP⌉ (up to the dispatch limit;
+// frontier passes loop over the rest), so the list is the next pass's indirect dispatch.
+#define FRONTIER_LIST(ACCESS, BINDING, NAME, list) \
+  layout(std430, binding = BINDING) ACCESS buffer NAME { uint groups; uint one_y; uint one_z; uint count; uint items[]; } list
+#define FRONTIER_APPEND(list, F, AT)                                             \
+  AT = atomicAdd(list.count, 1u);                                                 \
+  list.items[AT] = (F);                                                           \
+  if (AT % FRONTIER_GROUP == 0u && AT < FRONTIER_GROUP * FRONTIER_MAX_GROUPS)     \
+    atomicAdd(list.groups, 1u)
+// Appends fragment FIRST + i for each bit i of MASK, reserving their places with one atomic; the
+// group count grows by the multiples of FRONTIER_GROUP in the reserved range (up to the limit).
+#define FRONTIER_APPEND_LAYERS(list, MASK, FIRST)                                                 \
+  {                                                                                               \
+    uint at_ = atomicAdd(list.count, uint(bitCount(MASK)));                                       \
+    uint end_ = at_ + uint(bitCount(MASK));                                                       \
+    uint groups_ = min((end_ + FRONTIER_GROUP - 1u) / FRONTIER_GROUP, FRONTIER_MAX_GROUPS) -      \
+                   min((at_ + FRONTIER_GROUP - 1u) / FRONTIER_GROUP, FRONTIER_MAX_GROUPS);        \
+    if (groups_ > 0u) atomicAdd(list.groups, groups_);                                            \
+    for (uint m_ = (MASK); m_ != 0u; m_ &= m_ - 1u) list.items[at_++] = (FIRST) + uint(findLSB(m_)); \
+  }

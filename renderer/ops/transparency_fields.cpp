@@ -30,6 +30,50 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
     for (auto& b : beta_.copies) fit(b, floats);
   if (withGamma)
     for (auto& b : gamma_.copies) fit(b, floats);
+  seedsListed_ = false;
+  if (!withBeta && !withGamma) return;
+  const std::size_t list = (fragments + 4) * 4;
+  fit(frontier_[int(Field::Alpha)], list);
+  if (withBeta) fit(frontier_[int(Field::Beta)], list);
+  if (withGamma) fit(frontier_[int(Field::Gamma)], list);
+  if (!stamps_ || stamps_.size() < floats) {  // new stamps hold no tag yet
+    stamps_ = gpu::Buffer(floats);
+    stamps_.clearToZero();
+    lastTag_ = 0;
+  }
+}
+
+gpu::Buffer& TransparencyFields::frontier(Field field) {
+  gpu::Buffer& list = frontier_[int(field)];
+  if (!list) throw std::logic_error("no frontier lists: the fields have neither beta nor gamma");
+  return list;
+}
+
+void TransparencyFields::clearList(const gpu::Buffer& list) {
+  const std::uint32_t empty[4] = {0, 1, 1, 0};  // groups, 1, 1, count
+  glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
+}
+
+std::uint32_t TransparencyFields::listCount(const gpu::Buffer& list) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::uint32_t count = 0;
+  list.download(&count, sizeof count, 3 * sizeof count);
+  return count;
+}
+
+std::vector<std::uint32_t> TransparencyFields::readList(Field field) {
+  const gpu::Buffer& list = frontier(field);
+  std::vector<std::uint32_t> items(listCount(list));
+  list.download(items.data(), items.size() * 4, 4 * 4);
+  return items;
+}
+
+std::uint32_t TransparencyFields::nextTag() {
+  if (lastTag_ == 0xFFFFFFFFu) {  // after 2^32 − 1 steps: start over
+    stamps_.clearToZero();
+    lastTag_ = 0;
+  }
+  return ++lastTag_;
 }
 
 gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {

@@ -3,6 +3,7 @@
 // (Sec. 4.4), the fields α, β, γ with ping-pong copies (fragData/fragData2 of Sec. 4.5), and the
 // b flags. β exists only with silhouettes on, γ only with halos on.
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -42,6 +43,22 @@ class TransparencyFields {
   // The connect pass's work list (a count, then up to `pixels` pixel indices), kept likewise.
   gpu::Buffer& connectWork(std::size_t pixels);
 
+  // Sparse Eq. 9 spreading (ops/spread_frontier.comp): fragment lists, each a dispatch header
+  // (groups, 1, 1, count) then up to `fragments` indices. frontier(Beta) and frontier(Gamma) are
+  // where the connect pass lists each field's seeds, frontier(Alpha) a spare list.
+  gpu::Buffer& frontier(Field field);
+  static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
+  static std::uint32_t listCount(const gpu::Buffer& list);
+  // One word per fragment: the tag of the step that last listed it; nextTag() is one no stamp holds.
+  const gpu::Buffer& stamps() const { return stamps_; }
+  std::uint32_t nextTag();
+  // Whether the seed lists describe the current β and γ (set by the connect pass): true once,
+  // for the solve that spreads from them.
+  void setSeedsListed(bool listed) { seedsListed_ = listed; }
+  bool takeSeedsListed() { return std::exchange(seedsListed_, false); }
+  bool seedsListed() const { return seedsListed_; }
+  std::vector<std::uint32_t> readList(Field field);  // the fragments of frontier(field), as listed
+
   // Read-backs for tests, inspection and the diffusion benchmark.
   std::vector<float> read(Field field) const;
   std::vector<glm::uvec4> readLinks() const;
@@ -59,6 +76,9 @@ class TransparencyFields {
   bool withBeta_ = false, withGamma_ = false;
   gpu::Buffer links_, flags_, alphaOld_, connectWork_;
   PingPong alpha_, beta_, gamma_;
+  gpu::Buffer frontier_[3], stamps_;  // frontier_ by Field
+  std::uint32_t lastTag_ = 0;
+  bool seedsListed_ = false;
 };
 
 }  // namespace tlab::render

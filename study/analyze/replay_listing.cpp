@@ -16,22 +16,35 @@ std::string shellQuoted(const std::string& word) {
   return q + "'";
 }
 
-std::string replayCommand(const std::string& location, const ReplayableTrial& trial) {
+std::string replayStem(const ReplayableTrial& trial) {
   std::string name;  // a file name from any participant id
   for (unsigned char c : trial.participant) name += std::isalnum(c) || c == '-' || c == '_' ? char(c) : '_';
-  const std::string page = "replay-" + name + "-trial" + std::to_string(trial.sequence) + ".html";
+  return "replay-" + name + "-trial" + std::to_string(trial.sequence);
+}
+
+std::string replayCommand(const std::string& location, const ReplayableTrial& trial) {
+  const std::string page = replayStem(trial) + ".html";
   return "tlab replay " + shellQuoted(location) + " --participant " + shellQuoted(trial.participant) + " --trial " +
          std::to_string(trial.sequence) + " --html " + shellQuoted(page);
 }
 
-analysis::TextTable replayTable(Store& store, const std::string& location, const std::string& experimentId) {
+analysis::TextTable replayTable(Store& store, const std::string& location, const std::string& experimentId, const ReplayLinks& links) {
   analysis::TextTable t;
   t.caption = "Interactive trials with their live frames logged: each replays with the command beside it (every frame rendered again "
               "from its logged camera and checked against its logged SHA-256; --html writes a page with the frames, inputs, timing and "
               "answer, -o a video)";
+  t.caption += links.empty() ? "; tlab report --replays renders each and links its page here"
+                             : "; the replay page column links to the page tlab report --replays rendered, with its check";
   t.header = {"participant", "trial", "phase", "task", "frames", "replay"};
-  for (const auto& r : replayableTrials(store, experimentId))
+  if (!links.empty()) t.header.push_back("replay page");
+  for (const auto& r : replayableTrials(store, experimentId)) {
     t.rows.push_back({r.participant, std::to_string(r.sequence), r.phase, r.taskId, std::to_string(r.frames), replayCommand(location, r)});
+    if (links.empty()) continue;
+    const auto link = links.find({r.participant, r.sequence});
+    t.rows.back().push_back(link == links.end() ? "not rendered" : link->second.check);
+    t.links.resize(t.rows.size());
+    if (link != links.end()) t.links.back() = {"", "", "", "", "", "", link->second.href};
+  }
   return t;
 }
 

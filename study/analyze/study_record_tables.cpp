@@ -147,12 +147,12 @@ std::vector<analysis::ReportImage> stimulusImages(Store& store, const StoredExpe
   return images;
 }
 
-void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored) {
+void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored, const ReplayLinks& replays) {
   for (auto& table : questionnaireTables(store, stored)) report.appendices.push_back(std::move(table));
   report.appendices.push_back(stimulusTable(store, stored));
   report.appendices.push_back(sessionTimingTable(store, stored));
-  if (analysis::TextTable replays = replayTable(store, store.location(), stored.experiment.id); !replays.rows.empty())
-    report.appendices.push_back(std::move(replays));
+  if (analysis::TextTable table = replayTable(store, store.location(), stored.experiment.id, replays); !table.rows.empty())
+    report.appendices.push_back(std::move(table));
   for (auto& image : stimulusImages(store, stored)) report.images.push_back(std::move(image));
 }
 

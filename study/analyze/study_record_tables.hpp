@@ -8,6 +8,7 @@
 
 #include "analysis/report.hpp"
 #include "analysis/text_table.hpp"
+#include "study/analyze/replay_listing.hpp"
 #include "study/store/study_table.hpp"
 
 namespace tlab::study {
@@ -35,7 +36,8 @@ analysis::TextTable stimulusTable(Store& store, const StoredExperiment& stored);
 std::vector<analysis::ReportImage> stimulusImages(Store& store, const StoredExperiment& stored, std::size_t limit = 64);
 
 // The questionnaire tables, the stimulus table, the session timing, the interactive trials with
-// the command that replays each (when frames were logged) and the stimulus pictures appended to a report.
-void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored);
+// the command that replays each (when frames were logged; with a link to the pages `replays` names)
+// and the stimulus pictures appended to a report.
+void appendStudyRecord(analysis::Report& report, Store& store, const StoredExperiment& stored, const ReplayLinks& replays = {});
 
 }  // namespace tlab::study

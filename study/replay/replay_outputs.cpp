@@ -1,23 +1,19 @@
 #include "study/replay/replay_outputs.hpp"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
 #include "analysis/number_format.hpp"
+#include "core/child_process.hpp"
+#include "core/image.hpp"
 #include "renderer/scene/camera.hpp"
-
-extern char** environ;
 
 namespace tlab::study {
 
@@ -39,26 +35,6 @@ std::string lastLine(const std::string& text) {
   while (std::getline(in, line))
     if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
   return last;
-}
-
-// Runs `argv` (found on PATH) with stdout and stderr into `log`; its exit status (127: not found).
-int runProgram(const std::vector<std::string>& argv, const fs::path& log) {
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, 1, 2);
-  pid_t pid = -1;
-  const int spawned = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) return 127;
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0)
-    if (errno != EINTR) return 127;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
 std::vector<std::string> codecFor(const std::string& output) {
@@ -197,7 +173,7 @@ void writeReplayVideo(const LoggedTrial& trial, const fs::path& folder, const st
   std::vector<std::string> argv = {"ffmpeg", "-nostdin", "-v", "error", "-y", "-f", "concat", "-safe", "0", "-i", list.string(), "-fps_mode", "vfr"};
   for (auto& a : codecFor(output)) argv.push_back(a);
   argv.push_back(output);
-  const int status = runProgram(argv, log);
+  const int status = core::runProgram(argv, log);
   if (status == 127) throw std::runtime_error("ffmpeg not found: install Debian's ffmpeg (scripts/setup.sh) to write " + output);
   if (status != 0) throw std::runtime_error("ffmpeg failed to write " + output + ": " + lastLine(readFile(log)));
 }
@@ -233,6 +209,31 @@ std::string replayPage(const LoggedTrial& trial, const ReplayCheck& check, const
   html += frameRows(trial, check) + "</table>";
   html += "<script type=\"application/json\" id=\"frames\">" + frames + "</script>" + kPlayer + "</body></html>\n";
   return html;
+}
+
+fs::path pageFramesFolder(const fs::path& page) { return page.parent_path() / (page.stem().string() + "-frames"); }
+
+ReplayCheck replayIntoFolders(const LoggedTrial& trial, const std::vector<render::BuiltinSceneSpec>& catalog, const ReplayRenderer& self,
+                              const std::vector<fs::path>& frameFolders) {
+  for (const auto& folder : frameFolders) {
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error) throw std::runtime_error(folder.string() + ": cannot create the folder (" + error.message() + ")");
+  }
+  return replayTrial(trial, catalog, self, [&](std::size_t i, const Canvas& picture, const FrameCheck&) {
+    if (frameFolders.empty()) return;
+    const auto png = core::encodePng(picture.toImage());
+    for (const auto& folder : frameFolders) core::writeFileAtomically((folder / frameFileName(i)).string(), png);
+  });
+}
+
+ReplayCheck writeReplayPage(const LoggedTrial& trial, const std::vector<render::BuiltinSceneSpec>& catalog, const ReplayRenderer& self,
+                            const fs::path& page) {
+  const fs::path frames = pageFramesFolder(page);
+  const ReplayCheck check = replayIntoFolders(trial, catalog, self, {frames});
+  const std::string html = replayPage(trial, check, frames.filename().string());
+  core::writeFileAtomically(page.string(), std::vector<std::uint8_t>(html.begin(), html.end()));
+  return check;
 }
 
 }  // namespace tlab::study

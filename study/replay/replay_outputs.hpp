@@ -31,4 +31,17 @@ void writeReplayVideo(const LoggedTrial& trial, const std::filesystem::path& fol
 // The replay page; `framesFolder` is where the frames lie, relative to the page.
 std::string replayPage(const LoggedTrial& trial, const ReplayCheck& check, const std::string& framesFolder);
 
+// The folder beside a replay page that holds its frames: replay.html → replay-frames.
+std::filesystem::path pageFramesFolder(const std::filesystem::path& page);
+
+// Renders the trial again (replayTrial) and writes every frame as a PNG file into each of
+// `frameFolders` (created); the check of every frame.
+ReplayCheck replayIntoFolders(const LoggedTrial& trial, const std::vector<render::BuiltinSceneSpec>& catalog, const ReplayRenderer& self,
+                              const std::vector<std::filesystem::path>& frameFolders);
+
+// Renders the trial again and writes its page at `page` with the frames beside it (pageFramesFolder);
+// the check of every frame. What `tlab replay --html` and `tlab report --replays` write.
+ReplayCheck writeReplayPage(const LoggedTrial& trial, const std::vector<render::BuiltinSceneSpec>& catalog, const ReplayRenderer& self,
+                            const std::filesystem::path& page);
+
 }  // namespace tlab::study

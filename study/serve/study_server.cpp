@@ -1,6 +1,7 @@
 #include "study/serve/study_server.hpp"
 
 #include <cstdio>
+#include <filesystem>
 #include <stdexcept>
 
 #include "core/file_text.hpp"
@@ -47,7 +48,8 @@ StudyServer::StudyServer(ServedStudy study, ServeOptions options, std::string ad
       adminToken_(std::move(adminToken)),
       dispatcher_(DispatchLimits{options_.threads, options_.connectionsPerAddress, std::size_t(16 * options_.threads), std::chrono::milliseconds(10000),
                                  std::chrono::milliseconds(kIdleSeconds * 1000), 16 * 1024, options_.maxBodyBytes},
-                  [this](int fd, std::size_t bytes) { return http_.answer(fd, bytes, 10); }) {
+                  [this](int fd, std::size_t bytes) { return http_.answer(fd, bytes, 10); }),
+      replays_(std::filesystem::read_symlink("/proc/self/exe").string(), study_.store.location(), study_.experiment.id) {
   http_.set_payload_max_length(options_.maxBodyBytes);
   http_.set_keep_alive_timeout(kIdleSeconds);  // what the Keep-Alive header tells the browser: the dispatcher's idle time-out
   http_.set_default_headers({{"X-Content-Type-Options", "nosniff"},
@@ -205,6 +207,8 @@ void StudyServer::adminRoutes() {
     sendJson(res, 200, status());
   });
   http_.Post("/admin/(drop|extend)", [this](const httplib::Request& req, httplib::Response& res) { adminAction(req, res); });
+  http_.Get("/admin/replay", [this](const httplib::Request& req, httplib::Response& res) { adminReplay(req, res); });
+  http_.Get("/admin/replays/([0-9a-f]{32})/(.*)", [this](const httplib::Request& req, httplib::Response& res) { replayFile(req, res); });
   http_.Get("/admin/drop", [this](const httplib::Request& req, httplib::Response& res) {  // the confirmation before a drop
     if (!isAdmin(req)) {
       res.status = 403;

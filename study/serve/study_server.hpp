@@ -16,6 +16,7 @@
 
 #include "study/serve/connection_dispatcher.hpp"
 #include "study/serve/participant_session.hpp"
+#include "study/serve/replay_jobs.hpp"
 #include "study/serve/routing_server.hpp"
 
 namespace tlab::study {
@@ -52,6 +53,10 @@ class StudyServer {
   void view(ParticipantSession& session, const httplib::Request& req, httplib::Response& res);
   void admin(const httplib::Request& req, httplib::Response& res);
   void adminAction(const httplib::Request& req, httplib::Response& res);
+  // GET /admin/replay?participant=P&trial=N: starts (or finds) the trial's replay and sends the
+  // browser to it; GET /admin/replays/<key>/...: its progress, its page and its frames.
+  void adminReplay(const httplib::Request& req, httplib::Response& res);
+  void replayFile(const httplib::Request& req, httplib::Response& res);
   nlohmann::json status();
   std::shared_ptr<ParticipantSession> session(const std::string& token);
   // The session of an API request (its token in the path), when its browser may act on it; else
@@ -66,6 +71,7 @@ class StudyServer {
   ConnectionDispatcher dispatcher_;  // the event loop that holds every connection
   std::mutex mutex_;
   std::map<std::string, std::shared_ptr<ParticipantSession>> byToken_, byParticipant_;
+  ReplayJobs replays_;  // the admin page's replays, rendered by child processes
 };
 
 }  // namespace tlab::study

@@ -1,11 +1,16 @@
 // StudyServer's admin side: progress per slot against the target, what each live session shows
 // (screen, elapsed and idle time), answered and missing responses, drop (after a confirmation) and
-// extend, and the interactive trials with logged frames with the `tlab replay` command of each.
+// extend, and the interactive trials with logged frames, each with a link to its replay (rendered
+// on demand by a child process, study/serve/replay_jobs.hpp) and the `tlab replay` command that
+// makes it on the researcher's machine.
 #include <algorithm>
 #include <cmath>
+#include <cctype>
 #include <cstdio>
+#include <optional>
 
 #include "analysis/number_format.hpp"
+#include "core/file_text.hpp"
 #include "study/analyze/replay_listing.hpp"
 #include "study/run/session_wording.hpp"
 
@@ -49,7 +54,8 @@ void addLive(nlohmann::json& row, const ParticipantSession* session) {
 }
 
 // Per participant, the interactive trials whose live frames were logged, with the command that
-// replays each on the researcher's machine (the server renders no replays: its GL serves participants).
+// replays each on the researcher's machine (the admin page links each to a replay made here by a
+// child process at the lowest priority: the server's GL worker serves participants only).
 nlohmann::json replays(Store& store, const std::string& experimentId) {
   nlohmann::json out = nlohmann::json::array();
   for (const auto& t : replayableTrials(store, experimentId))
@@ -58,18 +64,38 @@ nlohmann::json replays(Store& store, const std::string& experimentId) {
   return out;
 }
 
+// "%41%20b": a query parameter's value as a URL carries it.
+std::string urlEncoded(const std::string& text) {
+  static constexpr char hex[] = "0123456789ABCDEF";
+  std::string out;
+  for (unsigned char c : text) {
+    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') out += char(c);
+    else out += {'%', hex[c >> 4], hex[c & 15]};
+  }
+  return out;
+}
+
+// The admin page's link that makes (or finds) a trial's replay and opens it.
+std::string replayLink(const nlohmann::json& r, const std::string& adminToken) {
+  return "/admin/replay?token=" + adminToken + "&participant=" + urlEncoded(r["participant"].get<std::string>()) +
+         "&trial=" + r["trial"].dump();
+}
+
 // The admin page's section of replays, placed before the end of its main part.
-std::string withReplays(std::string page, const nlohmann::json& replays) {
+std::string withReplays(std::string page, const nlohmann::json& replays, const std::string& adminToken) {
   using analysis::escapeHtml;
   std::string section = "<h2>Replays of interactive trials</h2><p>Every frame a participant was shown in an interactive trial is "
-                        "logged; each command renders them again, checks each against its logged SHA-256 and writes a page with "
-                        "the frames, the inputs, the timing and the answer (add <code>-o replay.webm</code> for a video).</p>"
-                        "<table id=\"replays\"><tr><th>participant</th><th>trial</th><th>phase</th><th>task</th><th>frames</th><th>replay</th></tr>";
+                        "logged. <em>replay</em> renders them again here (at the lowest priority, beside the participants' "
+                        "frames), checks each against its logged SHA-256 and shows a page with the frames, the inputs, the timing "
+                        "and the answer; the command does the same on your machine (add <code>-o replay.webm</code> for a video).</p>"
+                        "<table id=\"replays\"><tr><th>participant</th><th>trial</th><th>phase</th><th>task</th><th>frames</th><th>replay</th>"
+                        "<th>command</th></tr>";
   for (const auto& r : replays)
     section += "<tr><td>" + escapeHtml(r["participant"].get<std::string>()) + "</td><td>" + r["trial"].dump() + "</td><td>" +
                escapeHtml(r["phase"].get<std::string>()) + "</td><td>" + escapeHtml(r["task"].get<std::string>()) + "</td><td>" +
-               r["frames"].dump() + "</td><td><code>" + escapeHtml(r["command"].get<std::string>()) + "</code></td></tr>";
-  if (replays.empty()) section += "<tr><td colspan=\"6\">none yet</td></tr>";
+               r["frames"].dump() + "</td><td><a href=\"" + escapeHtml(replayLink(r, adminToken)) + "\">replay</a></td><td><code>" +
+               escapeHtml(r["command"].get<std::string>()) + "</code></td></tr>";
+  if (replays.empty()) section += "<tr><td colspan=\"7\">none yet</td></tr>";
   section += "</table>";
   const auto end = page.rfind("</main>");
   return end == std::string::npos ? page : page.insert(end, section);
@@ -137,7 +163,63 @@ void StudyServer::admin(const httplib::Request& req, httplib::Response& res) {
   }
   res.set_header("Cache-Control", "no-store");
   const nlohmann::json now = status();
-  res.set_content(withReplays(adminPage(now, adminToken_), now["replays"]), "text/html; charset=utf-8");
+  res.set_content(withReplays(adminPage(now, adminToken_), now["replays"], adminToken_), "text/html; charset=utf-8");
+}
+
+void StudyServer::adminReplay(const httplib::Request& req, httplib::Response& res) {
+  const auto page = [&](int status, const std::string& title, const std::string& text) {
+    res.status = status;
+    res.set_content(messagePage(title, text), "text/html; charset=utf-8");
+  };
+  if (!isAdmin(req)) return page(403, "Forbidden", "wrong or missing admin token");
+  const std::string participant = req.has_param("participant") ? req.get_param_value("participant") : "";
+  const std::string trial = req.has_param("trial") ? req.get_param_value("trial") : "";
+  std::optional<ReplayableTrial> found;
+  for (const auto& t : replayableTrials(study_.store, study_.experiment.id))
+    if (t.participant == participant && std::to_string(t.sequence) == trial) found = t;
+  if (!found) return page(404, "No such replay", "participant '" + participant + "' has no trial " + trial + " with live frames logged");
+  try {
+    const std::string key = replays_.request(found->participant, found->sequence, found->frames);
+    res.set_redirect("/admin/replays/" + key + "/", 303);
+  } catch (const ReplayBusy& busy) {
+    res.set_header("Retry-After", "5");
+    page(503, "Replays busy", busy.what());
+  }
+}
+
+void StudyServer::replayFile(const httplib::Request& req, httplib::Response& res) {
+  const std::string key = req.matches[1], name = req.matches[2];
+  const auto notFound = [&](const std::string& what) {
+    res.status = 404;
+    res.set_content(messagePage("Not found", what), "text/html; charset=utf-8");
+  };
+  const auto state = replays_.state(key);
+  if (!state) return notFound("no such replay");
+  res.set_header("Cache-Control", "no-store");
+  if (name.empty()) {  // the replay's own address: its progress until its page is there
+    const std::string what = "trial " + std::to_string(state->sequence) + " of participant '" + state->participant + "' (" +
+                             std::to_string(state->frames) + " frames)";
+    switch (state->kind) {
+      case ReplayJobState::Kind::Rendering:
+        res.set_header("Refresh", "2");
+        return res.set_content(messagePage("Rendering the replay", "Rendering " + what + " again at the lowest priority; this page "
+                                           "opens the replay when it is done."), "text/html; charset=utf-8");
+      case ReplayJobState::Kind::Failed:
+        res.status = 500;
+        return res.set_content(messagePage("The replay failed", "The replay of " + what + " failed: " + state->message), "text/html; charset=utf-8");
+      case ReplayJobState::Kind::Done:
+        return res.set_redirect("replay.html", 303);
+    }
+  }
+  const auto path = replays_.file(key, name);
+  const auto content = path ? core::readFileText(path->string()) : std::nullopt;
+  if (!content) return notFound("no such file of this replay");
+  const bool html = name == "replay.html";
+  if (html) {  // the replay page's player and its style are inline; it loads only its own frames
+    res.headers.erase("Content-Security-Policy");
+    res.set_header("Content-Security-Policy", "default-src 'none'; img-src 'self'; style-src 'unsafe-inline'; script-src 'unsafe-inline'");
+  }
+  res.set_content(*content, html ? "text/html; charset=utf-8" : "image/png");
 }
 
 void StudyServer::adminAction(const httplib::Request& req, httplib::Response& res) {

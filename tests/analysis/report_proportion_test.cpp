@@ -4,6 +4,7 @@
 #include "analysis/report_html.hpp"
 #include "analysis/report_markdown.hpp"
 #include "analysis/svg_plots.hpp"
+#include "analysis/text_table.hpp"
 #include "tests/analysis/test_support.hpp"
 
 namespace tlab::analysis {
@@ -61,6 +62,20 @@ TEST(ReportProportion, WarningsComeFirstAndAppendicesLast) {
   const std::string md = renderMarkdown(r, "fig").text;
   EXPECT_LT(md.find("SIMULATED DATA: not people"), md.find("|"));
   EXPECT_NE(md.find("a.png"), std::string::npos);
+}
+
+TEST(ReportProportion, ACellWithALinkIsALinkInHtmlAndMarkdownAndPlainTextElsewhere) {
+  TextTable t{"Replays", {"who", "page"}, {{"p<1>", "3 of 3 frames identical"}, {"p2", "not rendered"}}, {{"", "r/replay-p1.html"}}};
+  EXPECT_EQ(cellLink(t, 0, 1), "r/replay-p1.html");
+  EXPECT_EQ(cellLink(t, 0, 0), "");
+  EXPECT_EQ(cellLink(t, 1, 1), "") << "a row beyond the links has none";
+  const std::string html = renderHtmlTable(t);
+  EXPECT_NE(html.find("<td><a href=\"r/replay-p1.html\">3 of 3 frames identical</a></td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>p&lt;1&gt;</td>"), std::string::npos) << html;
+  EXPECT_NE(html.find("<td>not rendered</td>"), std::string::npos) << html;
+  const std::string md = renderMarkdownTable(t);
+  EXPECT_NE(md.find("| p<1> | [3 of 3 frames identical](r/replay-p1.html) |"), std::string::npos) << md;
+  EXPECT_EQ(renderPlainText(t).find("replay-p1.html"), std::string::npos);
 }
 
 }  // namespace

@@ -139,3 +139,73 @@ TEST(FieldSpreading, SettledSpreadingStopsWithoutChangingTheFields) {
   EXPECT_EQ(solver.operations()[2], "gamma spreading (Eq. 9 max, 1 of 20 steps: settled)");
 }
 
+
+// The connect pass lists Eq. 9's seeds — exactly the fragments where β and γ start above 0 — and
+// the solve spreads from them on the frontier only (ops/spread_frontier.comp): bit for bit the
+// fields of n full steps of every fragment, on scenes with silhouettes, halos, several
+// components, deep and shuffled stacks, lists longer than 32 layers, for both initial α (adaptive α diffuses alongside), for λ
+// that settles within n steps and λ that does not, and with halos off.
+TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
+  struct Case {
+    const char* source;
+    int size;
+    std::map<std::string, std::string> settings;
+    bool seeded = true;  // the scene has silhouettes or occluding edges to spread from
+    std::uint32_t deepSeed = 0;  // some seed lies at least this deep in its list
+  };
+  const std::vector<Case> cases = {
+      {"builtin:torus", 64, {}},
+      {"builtin:torus", 48, {{"alpha_init", "adaptive"}, {"iterations", "7"}}},
+      {"builtin:nested-spheres?n=3", 64, {{"lambda_beta", "0.02"}, {"lambda_gamma", "0.3"}}},
+      {"builtin:open-cylinders", 64, {{"iterations", "50"}, {"lambda_beta", "0.01"}}},
+      {"builtin:open-cylinders", 40, {{"halos", "off"}, {"lambda_beta", "0"}, {"iterations", "9"}}},
+      {"builtin:nested-spheres?n=2", 48, {{"lambda_gamma", "1"}}},
+      {"builtin:nested-spheres?n=20", 64, {}, true, 32},  // seeds listed 32 layers at a time
+      {"builtin:quad-stack?n=64", 24, {}, false},
+      {"builtin:quad-stack?n=16", 32, {}, false},
+      {"builtin:sphere?segments=8&rings=4", 24, {{"alpha_init", "adaptive"}, {"solver", "implicit"}}},
+  };
+  for (const auto& c : cases) {
+    const std::string what = std::string(c.source) + " " + std::to_string(c.settings.size()) + " settings";
+    SmartRig frontier(loadScene(c.source), c.size, c.size, c.settings), full(loadScene(c.source), c.size, c.size, c.settings);
+    ASSERT_TRUE(frontier.fields->seedsListed()) << what;
+    std::size_t seeds = 0;
+    std::vector<std::uint32_t> layerOf(frontier.buffer->fragmentCount());
+    for (std::size_t p = 0; p < frontier.counts.size(); ++p)
+      for (std::uint32_t k = 0; k < frontier.counts[p]; ++k) layerOf[frontier.heads[p] + k] = k;
+    std::uint32_t deepest = 0;
+    for (Field f : {Field::Beta, Field::Gamma}) {
+      if (f == Field::Gamma && !frontier.fields->hasGamma()) continue;
+      const auto values = frontier.fields->read(f);
+      std::vector<std::uint32_t> expected;
+      for (std::uint32_t i = 0; i < values.size(); ++i)
+        if (values[i] > 0.0f) expected.push_back(i);
+      auto listed = frontier.fields->readList(f);
+      std::sort(listed.begin(), listed.end());
+      EXPECT_EQ(listed, expected) << what << " field " << int(f);
+      seeds += listed.size();
+      for (auto i : listed) deepest = std::max(deepest, layerOf[i]);
+    }
+    EXPECT_EQ(seeds > 0u, c.seeded) << what;
+    EXPECT_GE(deepest, c.deepSeed) << what;
+    const DiffusionSolver solver(frontier.shaders, frontier.smart);
+    solver.solve(*frontier.fields);
+    EXPECT_FALSE(frontier.fields->seedsListed()) << what;
+    const DiffusionSolver stepper(full.shaders, full.smart);
+    for (int i = 0; i < full.smart.iterations; ++i) stepper.step(*full.fields);
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) {
+      if (f == Field::Gamma && !full.fields->hasGamma()) continue;
+      EXPECT_EQ(frontier.fields->read(f), full.fields->read(f)) << what << " field " << int(f);
+    }
+    // The same steps as the full solve, which checks for a settled field after steps 1, 2, 4, 8, ...
+    SmartRig again(loadScene(c.source), c.size, c.size, c.settings);
+    again.fields->setSeedsListed(false);
+    const DiffusionSolver reference(again.shaders, again.smart);
+    reference.solve(*again.fields);
+    EXPECT_EQ(solver.operations(), reference.operations()) << what;
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) {
+      if (f == Field::Gamma && !again.fields->hasGamma()) continue;
+      EXPECT_EQ(frontier.fields->read(f), again.fields->read(f)) << what << " field " << int(f);
+    }
+  }
+}

@@ -124,7 +124,7 @@ TEST(ReplayWindow, OrbitTrialReplaysIdenticallyAsFramesVideoAndPageAndATamperedH
   if (!haveTool("Xvfb") || !haveTool("xdotool") || !haveTool("ffmpeg"))
     GTEST_SKIP() << "needs Xvfb, xdotool and ffmpeg (scripts/setup.sh installs them)";
   const auto steps = readmeSteps();
-  ASSERT_EQ(steps.size(), 3u);
+  ASSERT_EQ(steps.size(), 4u);
   ASSERT_EQ(steps[0], "tlab run tests/study/data/live_replay.toml --participant R1 --db live.db --size 640x480") << "what the session runs";
   WindowSession session("replay_window", 600, "live_replay.toml", "R1");
   ASSERT_FALSE(session.window.empty()) << session.err();
@@ -169,12 +169,16 @@ TEST(ReplayWindow, OrbitTrialReplaysIdenticallyAsFramesVideoAndPageAndATamperedH
   fs::copy(out / "replay-frames", screenshots() / "replay-frames",
            fs::copy_options::overwrite_existing | fs::copy_options::recursive);
 
-  // The study's report names the replay of the trial.
-  const auto report = runCommand(commandLine({kTlab, "report", session.db, "-o", (out / "report.html").string()}));
-  ASSERT_EQ(report.exitCode, 0) << report.err;
+  // The study's report, as the README's last step writes it, names the replay of the trial and
+  // links the page it rendered, with its check.
+  const auto report = runStep(steps[3], session.db, out);
+  ASSERT_EQ(report.exitCode, 0) << report.out << report.err;
+  EXPECT_NE(report.out.find("wrote 1 replay page to report-replays: " + n + " of " + n + " frames identical"), std::string::npos) << report.out;
   const std::string reportPage = readText((out / "report.html").string());
   EXPECT_NE(reportPage.find("Interactive trials with their live frames logged"), std::string::npos);
   EXPECT_NE(reportPage.find("--participant 'R1' --trial 1 --html 'replay-R1-trial1.html'"), std::string::npos);
+  EXPECT_NE(reportPage.find("<a href=\"report-replays/replay-R1-trial1.html\">" + n + " of " + n + " frames identical</a>"), std::string::npos);
+  expectFramesHashToTheLog(out / "report-replays" / "replay-R1-trial1-frames", logged);
 
   // One hash changed in a copy: that frame is named, with why, and the replay exits 1.
   const std::string tampered = (session.dir / "tampered.db").string();
