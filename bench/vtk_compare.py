@@ -6,19 +6,19 @@ Run by hand, not in CI (it times things). Needs Debian's python3-vtk9 and an X d
 render window (Debian's VTK has no headless EGL window), e.g.:
 
     xvfb-run -a -s "-screen 0 1280x1024x24" /usr/bin/python3 bench/vtk_compare.py \
-        [--mesh FILE.gltf|FILE.off] [--camera "eye=... target=... up=... fovy=..."] [--size 512] [--rounds 3]
+        [--mesh FILE.gltf|FILE.off|torus ...] [--camera "eye=... target=... up=... fovy=..."] [--size 512] [--rounds 3]
 
 (Debian's python3, where python3-vtk9 installs the vtk module.)
 
 Any glTF or OFF mesh (bench/bench_meshes.py says where public ones come from; an OFF file is
-converted to glTF first, so both programs read the same file); without --mesh, a torus of
---triangles triangles. The camera is the same eye/target/up/fovy for both; without --camera it is
+converted to glTF first, so both programs read the same file), or `torus`, a torus of --triangles
+triangles (the default); --mesh may be repeated, and each round then times every mesh in turn. The camera is the same eye/target/up/fovy for both; without --camera it is
 fitted to the mesh's bounding sphere as tlab fits it (from +z, or --view-from X,Y,Z). Every layer
 has the same opacity (tlab: constant alpha; VTK: actor opacity). The two programs are timed in
 alternation, --rounds times (the machine may be shared: each side's best round counts), each round
 the median of --frames frames after a warm-up: tlab constant, VTK dual depth peeling (exact:
-unlimited peels, occlusion ratio 0) and VTK weighted-average OIT. Prints every round, the best of
-each, the ratio tlab / VTK dual peeling, and the load average."""
+unlimited peels, occlusion ratio 0) and VTK weighted-average OIT. Prints every round, then a
+table: each mesh's best of each side, the ratio tlab / VTK dual peeling, and the load average."""
 import argparse
 import json
 import math
@@ -116,86 +116,106 @@ def gltf_positions(path):
     return [flat[i:i + 3] for i in range(0, len(flat), 3)]
 
 
-def prepare_mesh(a, tmp):
-    """The glTF file both programs read, and a description of it."""
-    if not a.mesh:
+def prepare_mesh(a, name, tmp):
+    """The glTF file both programs read, a description of it, and its camera."""
+    if name == "torus":
         path = os.path.join(tmp, "torus.gltf")
         pos, nrm, tris = bench_meshes.torus(a.triangles)
         n = bench_meshes.write_gltf(path, pos, tris, nrm)
-        return path, f"generated torus, {n} triangles"
-    if a.mesh.lower().endswith(".off"):
-        path = os.path.join(tmp, os.path.splitext(os.path.basename(a.mesh))[0] + ".gltf")
-        pos, tris = bench_meshes.weld(*bench_meshes.read_off(a.mesh))
+        return path, f"generated torus, {n} triangles", a.camera or "eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40"
+    path, what = name, name
+    if name.lower().endswith(".off"):
+        path = os.path.join(tmp, os.path.splitext(os.path.basename(name))[0] + ".gltf")
+        pos, tris = bench_meshes.weld(*bench_meshes.read_off(name))
         n = bench_meshes.write_gltf(path, pos, tris)
-        return path, f"{a.mesh} as glTF, {n} triangles"
-    return a.mesh, a.mesh
+        what = f"{name} as glTF, {n} triangles"
+    camera = a.camera or fitted_camera(gltf_positions(path), direction=[float(x) for x in a.view_from.split(",")])
+    return path, what, camera
 
 
-def tlab_frame(a, mesh, exe):
-    out = subprocess.run([exe, "bench", "render", "--scene", mesh, "--camera", a.camera, "--style", "constant",
+def tlab_frame(a, mesh, camera, exe):
+    out = subprocess.run([exe, "bench", "render", "--scene", mesh, "--camera", camera, "--style", "constant",
                           "--set", f"alpha={a.opacity}", "--size", f"{a.size}x{a.size}", "--frames", str(a.frames),
                           "--gl", a.gl, "--json"], check=True, capture_output=True, text=True).stdout
     tlab = json.loads(out)
     return tlab["rows"][0], tlab["gl"]
 
 
+def parse_camera(text):
+    camera = {}
+    for item in text.split():
+        k, v = item.split("=")
+        camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
+    return camera
+
+
+def time_round(a, r, mesh, camera, best, fragments):
+    """One round on one mesh: tlab (and the baseline), then each VTK mode; keeps each side's best."""
+    for label, exe in [("tlab", a.tlab)] + ([("baseline", a.baseline)] if a.baseline else []):
+        row, gl = tlab_frame(a, mesh, camera, exe)
+        best[label] = min(best.get(label, math.inf), row["frame_ms"])
+        fragments[mesh] = row["fragments"]
+        passes = ", ".join(f"{k} {v:.1f}" for k, v in row["pass_ms"].items())
+        print(f"round {r + 1}: {os.path.basename(mesh)}: {label} constant ({gl['backend']}, {gl['renderer']}): "
+              f"{row['frame_ms']:.1f} ms/frame, {row['fragments']} fragments ({passes})", flush=True)
+    for mode in a.modes.split(","):
+        png = os.path.join(a.images, f"{os.path.basename(mesh)}-vtk-{mode}.png") if a.images and r == 0 else None
+        if png:
+            os.makedirs(a.images, exist_ok=True)
+        ms, renderer = vtk_frame_ms(mesh, a.size, parse_camera(camera), a.opacity, a.frames, mode, png)
+        best[mode] = min(best.get(mode, math.inf), ms)
+        print(f"round {r + 1}: {os.path.basename(mesh)}: VTK {mode} ({renderer}): {ms:.1f} ms/frame", flush=True)
+
+
+def print_table(a, meshes, best, fragments, loads):
+    """Each mesh's best times and the ratios to VTK dual peeling, as a Markdown table."""
+    labels = ["tlab"] + (["baseline"] if a.baseline else []) + a.modes.split(",")
+    print(f"\nbest of {a.rounds} rounds (median of {a.frames} frames each), {a.size}x{a.size}, "
+          f"load average {min(loads):.1f}-{max(loads):.1f}:")
+    ratios = [l for l in ("tlab", "baseline") if l in labels] if "dual-peeling" in labels else []
+    print("| mesh | fragments | " + " | ".join(f"{l} ms" for l in labels) + "".join(f" | {l} / dual peeling" for l in ratios) + " |")
+    print("|---" * (2 + len(labels) + len(ratios)) + "|")
+    for mesh, what, _ in meshes:
+        b = best[mesh]
+        cells = [f"{b[l]:.1f}" for l in labels] + [f"{b[l] / b['dual-peeling']:.2f}" for l in ratios]
+        print(f"| {what} | {fragments[mesh]} | " + " | ".join(cells) + " |")
+    if ratios:
+        print("(goal: tlab / VTK dual peeling <= 0.5)")
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tlab", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "tlab"))
     ap.add_argument("--baseline", help="another tlab executable (e.g. a build before a change), timed in the same rounds")
-    ap.add_argument("--mesh", help="a glTF or OFF mesh (default: a generated torus)")
+    ap.add_argument("--mesh", action="append", help="a glTF or OFF mesh, or 'torus' (the generated torus); repeat it "
+                    "to time several meshes in one run, round by round (default: the torus)")
     ap.add_argument("--triangles", type=int, default=100000)
     ap.add_argument("--size", type=int, default=512)
     ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--rounds", type=int, default=3, help="alternating rounds; each side's best counts")
     ap.add_argument("--opacity", type=float, default=0.3)
-    ap.add_argument("--camera", help="eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG (default: the torus view "
-                    "'eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40' without --mesh, else fitted)")
+    ap.add_argument("--camera", help="eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG for every mesh (default: the torus "
+                    "view 'eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40' for the torus, else fitted)")
     ap.add_argument("--view-from", default="0,0,1", help="direction of the fitted camera")
     ap.add_argument("--modes", default="dual-peeling,weighted-oit", help="VTK modes to time")
     ap.add_argument("--gl", default="auto", help="tlab's --gl")
-    ap.add_argument("--images", help="also write tlab.png and vtk-MODE.png of the view into this folder")
+    ap.add_argument("--images", help="also write MESH-tlab.png and MESH-vtk-MODE.png of each view into this folder")
     a = ap.parse_args()
-    modes = a.modes.split(",")
     with tempfile.TemporaryDirectory() as tmp:
-        mesh, what = prepare_mesh(a, tmp)
-        print(f"mesh: {what}")
-        if not a.camera:
-            a.camera = ("eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40" if not a.mesh else
-                        fitted_camera(gltf_positions(mesh), direction=[float(x) for x in a.view_from.split(",")]))
-        print(f"camera: {a.camera}")
-        camera = {}
-        for item in a.camera.split():
-            k, v = item.split("=")
-            camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
-        best = {}
-        loads = []
+        meshes = [prepare_mesh(a, name, tmp) for name in (a.mesh or ["torus"])]
+        for mesh, what, camera in meshes:
+            print(f"mesh: {what}; camera: {camera}")
+        best = {mesh: {} for mesh, _, _ in meshes}
+        fragments, loads = {}, []
         for r in range(a.rounds):
-            for label, exe in [("tlab", a.tlab)] + ([("baseline", a.baseline)] if a.baseline else []):
-                row, gl = tlab_frame(a, mesh, exe)
-                best[label] = min(best.get(label, math.inf), row["frame_ms"])
-                passes = ", ".join(f"{k} {v:.1f}" for k, v in row["pass_ms"].items())
-                print(f"round {r + 1}: {label} constant ({gl['backend']}, {gl['renderer']}): {row['frame_ms']:.1f} ms/frame, "
-                      f"{row['fragments']} fragments ({passes})")
-            for mode in modes:
-                png = os.path.join(a.images, f"vtk-{mode}.png") if a.images and r == 0 else None
-                if png:
-                    os.makedirs(a.images, exist_ok=True)
-                ms, renderer = vtk_frame_ms(mesh, a.size, camera, a.opacity, a.frames, mode, png)
-                best[mode] = min(best.get(mode, math.inf), ms)
-                print(f"round {r + 1}: VTK {mode} ({renderer}): {ms:.1f} ms/frame")
-            loads.append(os.getloadavg()[0])
-        if a.images:
-            subprocess.run([a.tlab, "render", mesh, "--camera", a.camera, "--style", "constant", "--set", f"alpha={a.opacity}",
-                            "--size", f"{a.size}x{a.size}", "--gl", a.gl, "-o", os.path.join(a.images, "tlab.png")],
-                           check=True, capture_output=True)
-        summary = ", ".join(f"{k} {v:.1f} ms" for k, v in best.items())
-        print(f"best of {a.rounds} rounds (median of {a.frames} frames each): {summary}")
-        if "dual-peeling" in best:
-            for label in ("tlab", "baseline"):
-                if label in best:
-                    print(f"ratio {label} constant / VTK dual peeling = {best[label] / best['dual-peeling']:.2f} (goal <= 0.5)")
-            print(f"at {a.size}x{a.size}, {row['fragments']} fragments, load average {min(loads):.1f}-{max(loads):.1f}")
+            for mesh, _, camera in meshes:
+                time_round(a, r, mesh, camera, best[mesh], fragments)
+                loads.append(os.getloadavg()[0])
+        for mesh, _, camera in meshes if a.images else []:
+            subprocess.run([a.tlab, "render", mesh, "--camera", camera, "--style", "constant", "--set", f"alpha={a.opacity}",
+                            "--size", f"{a.size}x{a.size}", "--gl", a.gl,
+                            "-o", os.path.join(a.images, f"{os.path.basename(mesh)}-tlab.png")], check=True, capture_output=True)
+        print_table(a, meshes, best, fragments, loads)
 
 
 if __name__ == "__main__":

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Hashes the pictures the renderer produces — every style on the six built-in scenes, smart
 # transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, several
-# components), `--fill list`, 512² `constant` and `smart` on the timing scenes, any glTF meshes
+# components), `--fill list`, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
+# the live views' `builtin:abstract?seed=1`, any glTF meshes
 # given in $TLAB_HASH_MESHES, and every PNG of `tlab figures` — so that a change to the fills,
 # the sort, the connect pass or the compositors can prove its pictures byte-identical:
 #   bash scripts/hash_render_outputs.sh OLD_TLAB > before.txt; bash scripts/hash_render_outputs.sh NEW_TLAB > after.txt
@@ -37,6 +38,8 @@ done
 for scene in 'torus?triangles=100000' 'quad-stack?n=16'; do
   for style in constant smart; do render "$style-512-$scene" "builtin:$scene" --style "$style" --size 512x512; done
 done
+# the live views' scene (issue #30), whose lists run up to 18 long: both paths of compose/blend.comp's sort
+render "constant-512-abstract" "builtin:abstract?seed=1" --style constant --size 512x512
 for mesh in ${TLAB_HASH_MESHES:-}; do
   for style in constant smart; do render "$style-$(basename "$mesh")" "$mesh" --style "$style" --size 384x384; done
 done

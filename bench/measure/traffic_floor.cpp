@@ -36,7 +36,9 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   s.pixels = std::uint64_t(stats.width) * std::uint64_t(stats.height);
   s.fragments = stats.fragments;
   s.recordWords = render::FragmentLayout(propertiesNamed(stats.fragmentProperties)).stride;
-  s.composeWords = style == "constant" ? 1 : s.recordWords;  // constant blends the colour word alone
+  // Every compositor reads whole records; constant's, which sorts each list as it blends (issue #29),
+  // its depth and triangle for the sort and its colour.
+  s.composeWords = s.recordWords;
   if (style == "smart") {
     const auto smart = render::SmartSettings::from(params);
     s.fieldsPerFragment = 1 + (smart.silhouettes ? 1 : 0) + (smart.halos ? 1 : 0);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/frame/frame_context.hpp"
@@ -139,7 +140,6 @@ std::uint32_t FragmentBuffer::slotsForThisFrame() {
 void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer) {
   timer.time("fill", [&] {
     pixelCount_.clearToZero();
-    pixelCursor_.clearToZero();
     counters_.clearToZero();
     slotsUsed_ = slotsForThisFrame();
     pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
@@ -155,6 +155,7 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
     }
     ensureCapacity(fragmentCount_);
     if (slotsUsed_ > 0) return;
+    pixelCursor_.clearToZero();
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
     fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
@@ -189,29 +190,47 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   rerenders_ = 0;
   poolGrowths_ = 0;
   slotsUsed_ = 0;
+  sorted_ = false;
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
-  timer.time("sort", [&] {
-    pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
-    pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
-    pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
-    if (listNext_) listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
-    (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
-    fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
-    order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
-    const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
-    program.use();
-    glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
-    gpu::dispatchLinear(pixels());
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  });
+  if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { sortLists(); });
   gpu::checkGl("building the illustration buffer");
 }
 
+void FragmentBuffer::sortLists() {
+  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+  pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
+  if (listNext_) listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
+  (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+  fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+  order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
+  const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
+  program.use();
+  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
+  gpu::dispatchLinear(pixels());
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  sorted_ = true;
+}
+
+void FragmentBuffer::bindSorted() {
+  if (!sorted_) sortLists();
+  std::as_const(*this).bindSorted();
+}
+
 void FragmentBuffer::bindSorted() const {
+  if (!sorted_) throw std::logic_error("a pass bound the sorted lists of a frame whose sort was left to the compose pass");
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
   fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+}
+
+bool FragmentBuffer::bindUnsorted() const {
+  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+  (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+  order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
+  return slotsUsed_ > 0;
 }
 
 const gpu::Buffer& FragmentBuffer::composeOutput() const {
@@ -231,7 +250,8 @@ std::vector<std::uint32_t> FragmentBuffer::pixelHeads() const {
   return v;
 }
 
-std::vector<std::uint32_t> FragmentBuffer::sortedRecords(std::size_t first, std::size_t count) const {
+std::vector<std::uint32_t> FragmentBuffer::sortedRecords(std::size_t first, std::size_t count) {
+  if (!sorted_) sortLists();
   std::vector<std::uint32_t> v(count * layout_.stride);
   fragsSorted_.download(v.data(), v.size() * 4, first * layout_.stride * 4);
   return v;

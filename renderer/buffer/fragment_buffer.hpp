@@ -42,12 +42,24 @@ class FragmentBuffer final : public Fill {
   FragmentBuffer(gpu::ShaderCache& shaders, int width, int height, FragmentLayout layout, FillMethod method,
                  std::size_t initialCapacity = 0, std::size_t maxBytes = 0);
 
-  // Fill (rasterize all layers) and sort. Timed as passes "fill" and "sort".
+  // Fill (rasterize all layers) and sort, unless the style's compositor sorts (setSortInCompose).
+  // Timed as passes "fill" and "sort".
   void build(const GpuScene& scene, const RasterUniforms& uniforms, PassTimer& timer);
   void build(FrameContext& frame, PassTimer& timer) override;  // Fill: the frame's scene and camera
+  // When on, build() leaves the lists unsorted for a compositor that sorts each list as it blends
+  // (compose/blend.comp, TLAB_FUSED; FillSpec::sortsInCompose): no sorted buffer is written.
+  void setSortInCompose(bool on) { sortInCompose_ = on; }
+  bool sorted() const { return sorted_; }
 
-  // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes.
-  void bindSorted() const;
+  // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes,
+  // sorting them first when this frame's build left them unsorted.
+  void bindSorted();
+  void bindSorted() const;  // the same where the lists are sorted; throws where they are not
+  // Binds pixelCount, pixelHead, the unsorted records (binding FRAGS_UNSORTED) and the order
+  // buffer (ORDER, room for one key per fragment at the pixel's block) for a compositor that
+  // sorts; true when the records sit in slots (record i of a pixel at i * pixels + pixel, as
+  // buffer/fill_slots.frag stores them), false when in the pixel's block.
+  bool bindUnsorted() const;
   // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
   // each frame costs page faults whose price varies with the machine's load).
   const gpu::Buffer& composeOutput() const;
@@ -67,7 +79,7 @@ class FragmentBuffer final : public Fill {
   // Read-backs, in GL pixel order (row 0 = bottom): per-pixel counts and heads, sorted records.
   std::vector<std::uint32_t> pixelCounts() const;
   std::vector<std::uint32_t> pixelHeads() const;
-  std::vector<std::uint32_t> sortedRecords(std::size_t firstFragment, std::size_t count) const;
+  std::vector<std::uint32_t> sortedRecords(std::size_t firstFragment, std::size_t count);  // sorts first if needed
 
  private:
   void ensureCapacity(std::size_t fragments);
@@ -75,6 +87,7 @@ class FragmentBuffer final : public Fill {
   std::uint32_t prefixSum();
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();
+  void sortLists();
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
   int width_, height_;
@@ -88,6 +101,8 @@ class FragmentBuffer final : public Fill {
   std::uint32_t slotsWanted_ = 8;  // the largest list seen so far (slots to try next frame)
   std::uint32_t slotsUsed_ = 0;
   std::uint32_t overflowMax_ = 0;  // of the last count: the largest list beyond the slots (0: none)
+  bool sortInCompose_ = false;
+  bool sorted_ = false;  // this frame's lists are in fragsSorted_
 
   gpu::Framebuffer emptyFbo_;
   gpu::Buffer pixelCount_, pixelHead_, pixelCursor_, counters_, blockSums_;

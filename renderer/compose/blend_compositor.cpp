@@ -5,11 +5,19 @@
 
 namespace tlab::render {
 
+// The lists sorted by the fill's sort pass, or, when the fill left them unsorted (FillSpec::
+// sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED).
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
-  const auto& program = frame.shaders.compute("compose/blend.comp", buffer.layout().defines());
+  gpu::ShaderDefines defines = buffer.layout().defines();
+  if (!buffer.sorted()) {
+    defines.emplace_back("TLAB_FUSED", "1");
+    if (buffer.bindUnsorted()) defines.emplace_back("TLAB_SLOTS", "1");
+  } else {
+    buffer.bindSorted();
+  }
+  const auto& program = frame.shaders.compute("compose/blend.comp", defines);
   const gpu::Buffer& output = buffer.composeOutput();
-  buffer.bindSorted();
   output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));

@@ -66,7 +66,9 @@ Fill* Renderer::prepareFill(const Style& style, const StyleParams& params, const
   };
   if (!reusableFill<FragmentBuffer>(fits))
     fill_ = std::make_unique<FragmentBuffer>(shaders_, w, h, FragmentLayout(props), request.fill, request.initialPoolFragments);
-  return fill_.get();
+  auto* const buffer = static_cast<FragmentBuffer*>(fill_.get());
+  buffer->setSortInCompose(spec.sortsInCompose);
+  return buffer;
 }
 
 core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
@@ -131,8 +133,8 @@ void Renderer::describeFill(RenderStats& stats) const {
   stats.meanCoveredListLength = covered ? double(stats.fragments) / double(covered) : 0.0;
 }
 
-const FragmentBuffer& Renderer::listsOrThrow(const std::string& what) const {
-  const auto* buffer = dynamic_cast<const FragmentBuffer*>(fill_.get());
+FragmentBuffer& Renderer::listsOrThrow(const std::string& what) const {
+  auto* const buffer = dynamic_cast<FragmentBuffer*>(fill_.get());
   if (!buffer) throw std::logic_error(what + " a style with fragment lists (not 'opaque')");
   return *buffer;
 }
@@ -149,7 +151,7 @@ std::vector<std::uint16_t> Renderer::layerCounts() const {
 }
 
 std::vector<FragmentRecord> Renderer::fragmentsAt(int x, int y) const {
-  const FragmentBuffer& buffer = listsOrThrow("inspecting fragments needs");
+  FragmentBuffer& buffer = listsOrThrow("inspecting fragments needs");  // sorts a list left to the compose pass
   if (x < 0 || y < 0 || x >= buffer.width() || y >= buffer.height())
     throw std::invalid_argument("pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
                                 std::to_string(buffer.width()) + "x" + std::to_string(buffer.height()) + " image");

@@ -89,7 +89,7 @@ class Renderer {
   // The fill of the last frame as T when it is one, and when `fits` says it suits this frame.
   template <typename T, typename Fits>
   T* reusableFill(Fits&& fits) const;
-  const FragmentBuffer& listsOrThrow(const std::string& what) const;
+  FragmentBuffer& listsOrThrow(const std::string& what) const;
   void describeFill(RenderStats& stats) const;
 
   Scene scene_;

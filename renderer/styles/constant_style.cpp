@@ -8,6 +8,12 @@ std::vector<ParamSpec> ConstantStyle::params() const {
   return {ParamSpec::number("alpha", 0.25, 0.0, 1.0, "opacity of every layer")};
 }
 
+FillSpec ConstantStyle::fill(const StyleParams&) const {
+  FillSpec spec;
+  spec.sortsInCompose = true;
+  return spec;
+}
+
 FragmentProperties ConstantStyle::properties(const StyleParams&, const SceneFacts&) const {
   FragmentProperties p;
   p |= FragmentProperty::Color;

@@ -10,6 +10,7 @@ class ConstantStyle final : public Style {
   std::string name() const override { return "constant"; }
   std::string description() const override { return "constant opacity alpha on every layer, front-to-back blending"; }
   std::vector<ParamSpec> params() const override;
+  FillSpec fill(const StyleParams&) const override;  // the compose pass sorts (compose/blend.comp)
   FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const override;
   std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const override;
 };

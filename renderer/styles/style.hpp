@@ -23,6 +23,10 @@ struct FillSpec {
   enum class Kind { None, FragmentBuffer, BucketedKBuffer };
   Kind kind = Kind::FragmentBuffer;
   KBufferSettings kBuffer{};  // for Kind::BucketedKBuffer
+  // For Kind::FragmentBuffer: the style's compositor sorts each pixel's list itself (issue #29,
+  // compose/blend.comp), so the fill may leave the lists unsorted; a pass that binds the sorted
+  // lists all the same gets them sorted then.
+  bool sortsInCompose = false;
 };
 
 // Facts about the scene a style may use to leave out what it does not need.

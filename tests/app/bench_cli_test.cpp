@@ -81,13 +81,11 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
     if (row["style"] == "constant") constant[row["pass"]] = row;
     if (row["style"] == "smart" && row["pass"] == "connect") smartConnect = row["bytes_written"].get<double>() > 0;
   }
-  ASSERT_EQ(constant.size(), 3u) << j;
+  ASSERT_EQ(constant.size(), 2u) << j;  // fill and compose: constant's compose pass sorts (issue #29)
   const double pixels = 32 * 24, fragments = 3072, record = 12;
   EXPECT_EQ(constant["fill"]["bytes_read"].get<double>(), 0.0);
   EXPECT_EQ(constant["fill"]["bytes_written"].get<double>(), fragments * record + pixels * 8);
-  EXPECT_EQ(constant["sort"]["bytes_read"].get<double>(), fragments * record + pixels * 8);
-  EXPECT_EQ(constant["sort"]["bytes_written"].get<double>(), fragments * record);
-  EXPECT_EQ(constant["compose"]["bytes_read"].get<double>(), pixels * 24 + fragments * 4);
+  EXPECT_EQ(constant["compose"]["bytes_read"].get<double>(), pixels * 24 + fragments * record);
   EXPECT_EQ(constant["compose"]["bytes_written"].get<double>(), pixels * 32);
   EXPECT_GT(constant["compose"]["floor_ms"].get<double>(), 0.0);
   EXPECT_TRUE(smartConnect) << j;

@@ -186,3 +186,34 @@ TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByte
   const auto second = tlab::core::encodePng(renderer.render(request(96, 80)));  // slots sized to the longest list
   EXPECT_EQ(first, second);
 }
+
+// Issue #29: `constant` leaves the sort to its compose pass, which sorts each list as it blends
+// (in registers up to 4 fragments, in the order buffer beyond). Its pictures must equal, float for
+// float, those of the linked-list fill, whose lists the sort pass sorts before the compose pass
+// blends them: for lists of 1 to 20 fragments (2 to 12 of varied length in the nested spheres), from the slots (second frame) and from the scatter
+// pass (a first frame whose lists outgrow the 8 slots it starts with).
+TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
+  for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:quad-stack?n=5&m=3", "builtin:open-cylinders",
+                             "builtin:nested-spheres?n=6", "builtin:torus"}) {
+    SCOPED_TRACE(source);
+    Renderer sortPass(loadScene(source));
+    const tlab::core::Image expected = sortPass.render(request(72, 60, FillMethod::LinkedList));
+    Renderer fused(loadScene(source));
+    for (int frame = 0; frame < 2; ++frame) {
+      const tlab::core::Image image = fused.render(request(72, 60));
+      ASSERT_EQ(image.pixels.size(), expected.pixels.size());
+      for (std::size_t i = 0; i < image.pixels.size(); ++i) ASSERT_EQ(image.pixels[i], expected.pixels[i]) << "pixel " << i << ", frame " << frame;
+    }
+  }
+}
+
+// A pass that asks for the sorted lists of a frame whose sort was left to the compose pass gets
+// them sorted then (here `tlab inspect`'s read-back after a `constant` frame).
+TEST(IllustrationBuffer, SortedListsOfAFrameLeftUnsortedAreSortedWhenRead) {
+  Renderer renderer(loadScene("builtin:quad-stack?n=12&m=2"));
+  renderer.render(request(40, 40));
+  const auto list = renderer.fragmentsAt(20, 20);
+  ASSERT_EQ(list.size(), 12u);
+  for (std::size_t i = 1; i < list.size(); ++i) EXPECT_LT(list[i - 1].depth, list[i].depth);
+  EXPECT_NE(list.front().color, glm::vec4(0.0f)) << "the records carry their colour";
+}
