@@ -13,4 +13,12 @@ std::optional<std::string> readFileText(const std::string& path) {
   return s.str();
 }
 
+std::string lastNonEmptyLine(const std::string& text) {
+  std::string last, line;
+  std::istringstream in(text);
+  while (std::getline(in, line))
+    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
+  return last;
+}
+
 }  // namespace tlab::core

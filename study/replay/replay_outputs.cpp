@@ -12,6 +12,7 @@
 
 #include "analysis/number_format.hpp"
 #include "core/child_process.hpp"
+#include "core/file_text.hpp"
 #include "core/image.hpp"
 #include "renderer/scene/camera.hpp"
 
@@ -20,22 +21,6 @@ namespace tlab::study {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string readFile(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-// The last non-empty line of a program's messages.
-std::string lastLine(const std::string& text) {
-  std::string last, line;
-  std::istringstream in(text);
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
-}
 
 std::vector<std::string> codecFor(const std::string& output) {
   const std::string ext = fs::path(output).extension().string();
@@ -175,7 +160,7 @@ void writeReplayVideo(const LoggedTrial& trial, const fs::path& folder, const st
   argv.push_back(output);
   const int status = core::runProgram(argv, log);
   if (status == 127) throw std::runtime_error("ffmpeg not found: install Debian's ffmpeg (scripts/setup.sh) to write " + output);
-  if (status != 0) throw std::runtime_error("ffmpeg failed to write " + output + ": " + lastLine(readFile(log)));
+  if (status != 0) throw std::runtime_error("ffmpeg failed to write " + output + ": " + core::lastNonEmptyLine(core::readFileText(log.string()).value_or("")));
 }
 
 std::string replayPage(const LoggedTrial& trial, const ReplayCheck& check, const std::string& framesFolder) {

@@ -2,10 +2,10 @@
 
 #include <fstream>
 #include <regex>
-#include <sstream>
 
 #include <unistd.h>
 
+#include "core/file_text.hpp"
 #include "study/serve/participant_session.hpp"
 
 namespace tlab::study {
@@ -13,15 +13,6 @@ namespace tlab::study {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The last non-empty line of a replay's messages: its verdict, or why it failed.
-std::string lastLine(const fs::path& log) {
-  std::ifstream in(log);
-  std::string line, last;
-  while (std::getline(in, line))
-    if (line.find_first_not_of(" \t\r") != std::string::npos) last = line;
-  return last;
-}
 
 // The line of tlab replay's output that gives its verdict ("7 of 7 frames identical").
 std::string verdict(const fs::path& log) {
@@ -66,7 +57,7 @@ void ReplayJobs::update(Job& job) {
     job.state.message = said;
   } else {
     job.state.kind = ReplayJobState::Kind::Failed;
-    const std::string last = lastLine(log);
+    const std::string last = core::lastNonEmptyLine(core::readFileText(log.string()).value_or(""));
     job.state.message = last.empty() ? "tlab replay ended with status " + std::to_string(*status) : last;
   }
   job.process.reset();

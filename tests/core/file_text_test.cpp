@@ -14,3 +14,9 @@ TEST(FileText, ReadsEveryByteAndSaysWhenAFileIsMissing) {
   std::filesystem::remove(path);
   EXPECT_FALSE(tlab::core::readFileText(path.string()).has_value());
 }
+
+TEST(FileText, TheLastNonEmptyLineIsWhatALogSaysLast) {
+  EXPECT_EQ(tlab::core::lastNonEmptyLine("frame 1\nerror: no GL\n  \n\t\r\n"), "error: no GL");
+  EXPECT_EQ(tlab::core::lastNonEmptyLine("one line"), "one line");
+  EXPECT_EQ(tlab::core::lastNonEmptyLine(" \n\n"), "");
+}
