@@ -29,7 +29,9 @@ std::int64_t wholeNumber(const tasks::Widget& widget, const json& v) {
   const std::int64_t n = v.get<std::int64_t>();
   if (n < widget.minimum || n > widget.maximum) {
     const std::string min = std::to_string(widget.minimum), max = std::to_string(widget.maximum);
-    if (widget.maximum >= tasks::Widget{}.maximum)  // no bound a participant needs to hear of
+    // Below the minimum with no upper bound of the task's own: the participant needs to hear of the
+    // minimum only; above the maximum, of the range ("0 or more" would not say what was wrong).
+    if (n < widget.minimum && widget.maximum >= tasks::Widget{}.maximum)
       throw tasks::AnswerFormatError("expected a whole number from " + min + " to " + max, "refusal.whole_number_min", {{"min", min}});
     throw tasks::AnswerFormatError("expected a whole number from " + min + " to " + max, "refusal.whole_number_range", {{"min", min}, {"max", max}});
   }

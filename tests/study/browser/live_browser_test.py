@@ -110,6 +110,12 @@ def walk(p, server):
         words = p.find("#navigation").text  # how to move, from the text table
         check(("arrow keys walk" in words) == (live["navigation"] == "walk") and ("lens follows" in words) == live["lens"],
               f"the {live['navigation']} trial says how to move: {words!r}")
+        # A refused answer (more than the 1,000,000 a count may be), then the corrected one.
+        p.type_number(2000000, select_all=True)
+        error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text], "the refused answer's message")[0]
+        check("from 0 to 1000000" in error.text, f"the refusal in the live trial says: {error.text!r}")
+        check(p.state()["seq"] == seq, "the refused answer left the live trial")
+        p.screenshot(f"trial-{live['navigation']}-refused")
         p.type_number(2, select_all=True)
 
     base.walk_trials(p, server, answer)
