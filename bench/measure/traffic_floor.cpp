@@ -8,6 +8,7 @@
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/ops/smart_settings.hpp"
+#include "renderer/ops/transparency_fields.hpp"
 
 namespace tlab::bench {
 
@@ -29,9 +30,47 @@ render::FragmentProperties propertiesNamed(const std::vector<std::string>& names
   return p;
 }
 
+constexpr std::uint32_t kFreeBeta = 2, kFreeGamma = 4;  // FREE_BETA, FREE_GAMMA of ops/field_bindings.glsl
+
+SolveShape solveShape(const render::SmartSettings& smart, const render::TransparencyFields* fields) {
+  SolveShape s;
+  s.alphaSweeps = smart.iterations * smart.alphaDispatchesPerStep();
+  s.alphaImplicit = smart.scheme == render::DiffusionScheme::Implicit;
+  if (!smart.spreadByMax) {
+    const auto sweeps = [&](bool on, double lambda) {
+      return on ? smart.iterations * render::substepsFor(lambda, render::kExplicitStableLambdaSum) : 0;
+    };
+    s.betaSweeps = sweeps(smart.silhouettes, smart.lambdaBeta);
+    s.gammaSweeps = sweeps(smart.halos, smart.lambdaGamma);
+    return s;
+  }
+  if (!fields || fields->fragments() == 0) return s;
+  const std::vector<std::uint32_t> flags = fields->readFlags();
+  if (fields->hasBeta()) {
+    const SpreadCount c = countSpread(fields->read(render::Field::Beta), flags, kFreeBeta);
+    s.betaSeeds = c.seeds, s.betaReached = c.reached;
+  }
+  if (fields->hasGamma()) {
+    const SpreadCount c = countSpread(fields->read(render::Field::Gamma), flags, kFreeGamma);
+    s.gammaSeeds = c.seeds, s.gammaReached = c.reached;
+  }
+  return s;
+}
+
 }  // namespace
 
-FrameShape frameShape(const render::RenderStats& stats, const std::string& style, const render::StyleParams& params) {
+SpreadCount countSpread(const std::vector<float>& values, const std::vector<std::uint32_t>& flags, std::uint32_t freeBit) {
+  SpreadCount c;
+  for (std::size_t i = 0; i < values.size() && i < flags.size(); ++i) {
+    if (!(values[i] > 0.0f)) continue;
+    if (flags[i] & freeBit) ++c.reached;
+    else ++c.seeds;
+  }
+  return c;
+}
+
+FrameShape frameShape(const render::RenderStats& stats, const std::string& style, const render::StyleParams& params,
+                      const render::TransparencyFields* fields) {
   FrameShape s;
   s.pixels = std::uint64_t(stats.width) * std::uint64_t(stats.height);
   s.fragments = stats.fragments;
@@ -42,6 +81,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   if (style == "smart") {
     const auto smart = render::SmartSettings::from(params);
     s.fieldsPerFragment = 1 + (smart.silhouettes ? 1 : 0) + (smart.halos ? 1 : 0);
+    s.solve = solveShape(smart, fields);
   }
   return s;
 }
@@ -70,6 +110,22 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.bytesWritten = fr * (16 + 16 + 4.0 * s.fieldsPerFragment + 4);
       t.model = "two phases: each record once, links written, read and rewritten, " +
                 std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
+    } else if (name == "solve") {
+      // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and
+      // value are read and its value written (its neighbours' values are other fragments' own,
+      // counted once with perfect caches). Eq. 9 on the frontier: the links and value of every
+      // seed and every fragment reached, the flags of those reached, and their values written.
+      const SolveShape& v = s.solve;
+      const double sweepRead = fr * (16 + 4 + 4), sweepWrite = fr * 4;
+      const int sweeps = v.alphaSweeps + v.betaSweeps + v.gammaSweeps;
+      const double seeds = double(v.betaSeeds + v.gammaSeeds), reached = double(v.betaReached + v.gammaReached);
+      t.bytesRead = sweeps * sweepRead + (v.alphaImplicit ? v.alphaSweeps * fr * 4 : 0) + (seeds + reached) * (16 + 4) +
+                    reached * 4;
+      t.bytesWritten = sweeps * sweepWrite + reached * 4;
+      t.model = std::to_string(sweeps) + " full sweep(s) of links, flags and value" +
+                (v.alphaImplicit ? " (Jacobi: and alpha before the step)" : "") + "; Eq. 9 on the frontier: " +
+                std::to_string(v.betaSeeds + v.gammaSeeds) + " seeds and " + std::to_string(v.betaReached + v.gammaReached) +
+                " fragments reached (beta and gamma), links and value read, flags and value written for those reached";
     } else {
       continue;
     }

@@ -20,6 +20,22 @@ struct PassTraffic {
   std::string model;                       // what was counted, per pixel and per fragment
 };
 
+// What smart's solve pass works on.
+struct SolveShape {
+  int alphaSweeps = 0;  // Eq. 8 sweeps of α over every fragment (steps × dispatches per step)
+  bool alphaImplicit = false;  // Jacobi sweeps, which also read α before the step
+  int betaSweeps = 0, gammaSweeps = 0;  // Eq. 8 spreading sweeps over every fragment (spread=diffusion)
+  // Eq. 9 spreading on the frontier (spread=max): per field, the fragments it spreads from and those it reached.
+  std::uint64_t betaSeeds = 0, betaReached = 0, gammaSeeds = 0, gammaReached = 0;
+};
+
+// Eq. 9's seeds of a field (fixed by the boundary conditions, above 0) and the fragments its
+// spreading reached (free, above 0), from the field's values and the flags (`freeBit` of the field).
+struct SpreadCount {
+  std::uint64_t seeds = 0, reached = 0;
+};
+SpreadCount countSpread(const std::vector<float>& values, const std::vector<std::uint32_t>& flags, std::uint32_t freeBit);
+
 // What the traffic of a frame depends on.
 struct FrameShape {
   std::uint64_t pixels = 0;
@@ -27,11 +43,13 @@ struct FrameShape {
   std::uint32_t recordWords = 2;   // words per fragment record (render::FragmentLayout::stride)
   std::uint32_t composeWords = 2;  // words of each record the style's compositor reads
   int fieldsPerFragment = 1;       // smart: α plus β (silhouettes) plus γ (halos)
-  int solveDispatches = 0;         // smart: compute dispatches of the solve pass
+  SolveShape solve;                // smart
 };
 
-// The shape of the frame `stats` describes, rendered with `style` and its resolved parameters.
-FrameShape frameShape(const render::RenderStats& stats, const std::string& style, const render::StyleParams& params);
+// The shape of the frame `stats` describes, rendered with `style` and its resolved parameters;
+// for smart, `fields` are the renderer's fields after that frame (the solve's spreading is counted there).
+FrameShape frameShape(const render::RenderStats& stats, const std::string& style, const render::StyleParams& params,
+                      const render::TransparencyFields* fields = nullptr);
 
 // The floor of each modelled pass of `passes` (the names the Renderer timed); passes the model
 // does not know are left out.

@@ -66,12 +66,7 @@ const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fuse
   return program;
 }
 
-int DiffusionSolver::alphaDispatches() const {
-  if (!settings_.diffusesAlpha()) return 0;
-  if (settings_.scheme == DiffusionScheme::Implicit) return settings_.jacobiSweeps;
-  if (settings_.scheme == DiffusionScheme::Explicit) return 1;
-  return substepsFor(settings_.lambdaAlpha, settings_.explicitBound());
-}
+int DiffusionSolver::alphaDispatches() const { return settings_.alphaDispatchesPerStep(); }
 
 void DiffusionSolver::diffuseAlpha(TransparencyFields& fields, Spread fused) const {
   const std::size_t n = fields.fragments();

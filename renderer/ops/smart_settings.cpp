@@ -18,6 +18,13 @@ double SmartSettings::explicitBound() const {
   return normalizedLaplacian ? kExplicitStableLambdaNormalized : kExplicitStableLambdaSum;
 }
 
+int SmartSettings::alphaDispatchesPerStep() const {
+  if (!diffusesAlpha()) return 0;
+  if (scheme == DiffusionScheme::Implicit) return jacobiSweeps;
+  if (scheme == DiffusionScheme::Explicit) return 1;
+  return substepsFor(lambdaAlpha, explicitBound());
+}
+
 SmartSettings SmartSettings::from(const StyleParams& params) {
   SmartSettings s;
   s.iterations = static_cast<int>(std::lround(params.number("iterations")));

@@ -30,6 +30,9 @@ struct SmartSettings {
   // Whether the α field can change at all: not when every fragment starts at the same α (Eq. 4),
   // since a uniform field is a fixed point of Eq. 8 with Neumann boundaries.
   bool diffusesAlpha() const { return iterations > 0 && lambdaAlpha > 0 && adaptiveAlpha; }
+  // Dispatches of the α diffusion per step: Jacobi sweeps (implicit), 1 (explicit) or the
+  // sub-steps; 0 when α cannot change.
+  int alphaDispatchesPerStep() const;
 
   static SmartSettings from(const StyleParams& params);
 };

@@ -83,6 +83,8 @@ class Renderer {
   std::vector<FragmentRecord> fragmentsAt(int x, int y) const;
   // After render() with a style that fills with the bucketed k-buffer: that buffer, else null.
   const BucketedKBuffer* kBuffer() const { return dynamic_cast<const BucketedKBuffer*>(fill_.get()); }
+  // After render() with smart transparency: its fields (links, flags, α, β, γ) as the frame left them.
+  const TransparencyFields& transparencyFields() const { return fields_; }
 
  private:
   Fill* prepareFill(const Style& style, const StyleParams& params, const RenderRequest& request, const Camera& camera);

@@ -2,6 +2,7 @@
 // GPU (structure only: speed is never asserted).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 
 #include <nlohmann/json.hpp>
@@ -89,4 +90,65 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   EXPECT_EQ(constant["compose"]["bytes_written"].get<double>(), pixels * 32);
   EXPECT_GT(constant["compose"]["floor_ms"].get<double>(), 0.0);
   EXPECT_TRUE(smartConnect) << j;
+  // The streaming rate of a copying compute shader, and each row's time over it.
+  EXPECT_GT(j["gl_copy_bandwidth"].get<double>(), 0.0);
+  const int words = j["gl_copy_words_per_invocation"];
+  EXPECT_TRUE(words == 1 || words == 4 || words == 16) << words;
+  EXPECT_GT(constant["compose"]["gl_ratio"].get<double>(), 0.0);
+}
+
+// The solve's row (issue #29): full-screen quads have no silhouette, so Eq. 9 has no seed and the
+// solve moves nothing (no ratio); on a sphere the silhouette ring seeds β, and λβ = 1 lets the
+// spreading reach nothing (1 − λ = 0), so only the seeds' links and values are read; with the
+// defaults the fragments it reached are written once each. α diffusion (Eq. 5's adaptive α)
+// counts full sweeps: 20 steps, 1 explicit dispatch each at λα = 1 with the normalized Laplacian,
+// 4 sub-steps with the sum (λ ≤ 1/4); Eq. 8 spreading likewise for β and γ.
+TEST(BenchCli, FloorCountsTheSolveFromWhatItSpreadFromAndReached) {
+  const auto solveRow = [](const std::string& args) {
+    const auto r = runCommand(kTlab + " bench floor --styles smart --size 48x40 --frames 1 --copy-mib 16 --gl osmesa --json " + args);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    for (const auto& row : j["rows"])
+      if (row["pass"] == "solve") return row;
+    ADD_FAILURE() << "no solve row: " << r.out;
+    return nlohmann::json();
+  };
+  const auto quads = solveRow("--scenes 'builtin:quad-stack?n=4&m=4'");
+  EXPECT_EQ(quads["solve"]["beta_seeds"], 0);
+  EXPECT_EQ(quads["bytes_read"].get<double>() + quads["bytes_written"].get<double>(), 0.0);
+  EXPECT_TRUE(quads["ratio"].is_null()) << quads;
+
+  const auto stopped = solveRow("--scenes builtin:sphere --set lambda_beta=1 --set lambda_gamma=1");
+  const double seeds = stopped["solve"]["beta_seeds"];
+  EXPECT_GT(seeds, 0.0);
+  EXPECT_EQ(stopped["solve"]["beta_reached"], 0);
+  EXPECT_EQ(stopped["bytes_read"].get<double>(), seeds * 20);  // links and value of each seed
+  EXPECT_EQ(stopped["bytes_written"].get<double>(), 0.0);
+
+  const auto spread = solveRow("--scenes builtin:sphere");
+  EXPECT_EQ(spread["solve"]["beta_seeds"].get<double>(), seeds);
+  const double reached = spread["solve"]["beta_reached"];
+  EXPECT_GT(reached, 0.0);
+  EXPECT_LT(reached, spread["fragments"].get<double>());
+  EXPECT_EQ(spread["bytes_read"].get<double>(), (seeds + reached) * 20 + reached * 4);
+  EXPECT_EQ(spread["bytes_written"].get<double>(), reached * 4);
+
+  const double fragments = spread["fragments"];
+  const auto adaptive = solveRow("--scenes builtin:sphere --set alpha_init=adaptive --set silhouettes=off --set halos=off");
+  EXPECT_EQ(adaptive["solve"]["alpha_sweeps"], 20);
+  EXPECT_EQ(adaptive["bytes_read"].get<double>(), 20 * fragments * 24);
+  EXPECT_EQ(adaptive["bytes_written"].get<double>(), 20 * fragments * 4);
+  const auto sum = solveRow("--scenes builtin:sphere --set alpha_init=adaptive --set laplacian=sum --set silhouettes=off --set halos=off");
+  EXPECT_EQ(sum["solve"]["alpha_sweeps"], 80);
+  const auto diffusion = solveRow("--scenes builtin:sphere --set spread=diffusion");
+  EXPECT_EQ(diffusion["solve"]["beta_sweeps"], 20);
+  EXPECT_EQ(diffusion["solve"]["gamma_sweeps"], 20);
+  EXPECT_EQ(diffusion["bytes_written"].get<double>(), 40 * fragments * 4);
+}
+
+TEST(BenchCli, FloorRefusesASettingAStyleDoesNotHave) {
+  const auto r = runCommand(kTlab + " bench floor --styles constant,smart --set lambda_beta=1 --gl osmesa");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("'constant' has no parameter 'lambda_beta'"), std::string::npos) << r.err;
 }
