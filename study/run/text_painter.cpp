@@ -75,8 +75,8 @@ int TextPainter::drawLine(Canvas& canvas, std::string_view text, int x, int y, f
   return pen - x;
 }
 
-int TextPainter::drawParagraph(Canvas& canvas, std::string_view text, int x, int y, int width, float pixelHeight, Rgba color) {
-  int cy = y;
+std::vector<std::string> TextPainter::wrapLines(std::string_view text, int width, float pixelHeight) {
+  std::vector<std::string> lines;
   std::size_t start = 0;
   while (start <= text.size()) {
     const std::size_t newline = text.find('\n', start);
@@ -88,8 +88,7 @@ int TextPainter::drawParagraph(Canvas& canvas, std::string_view text, int x, int
       const std::string_view word = para.substr(p, space == std::string_view::npos ? std::string_view::npos : space - p);
       const std::string candidate = line.empty() ? std::string(word) : line + " " + std::string(word);
       if (!line.empty() && lineWidth(candidate, pixelHeight) > width) {
-        drawLine(canvas, line, x, cy, pixelHeight, color);
-        cy += lineHeight(pixelHeight);
+        lines.push_back(line);
         line = std::string(word);
       } else {
         line = candidate;
@@ -97,10 +96,18 @@ int TextPainter::drawParagraph(Canvas& canvas, std::string_view text, int x, int
       if (space == std::string_view::npos) break;
       p = space + 1;
     }
-    drawLine(canvas, line, x, cy, pixelHeight, color);
-    cy += lineHeight(pixelHeight);
+    lines.push_back(line);
     if (newline == std::string_view::npos) break;
     start = newline + 1;
+  }
+  return lines;
+}
+
+int TextPainter::drawParagraph(Canvas& canvas, std::string_view text, int x, int y, int width, float pixelHeight, Rgba color) {
+  int cy = y;
+  for (const auto& line : wrapLines(text, width, pixelHeight)) {
+    drawLine(canvas, line, x, cy, pixelHeight, color);
+    cy += lineHeight(pixelHeight);
   }
   return cy - y;
 }

@@ -24,6 +24,9 @@ class TextPainter {
   // Draws one line with its top-left corner at (x, y); returns the width drawn.
   int drawLine(Canvas& canvas, std::string_view text, int x, int y, float pixelHeight, Rgba color);
   int lineWidth(std::string_view text, float pixelHeight);
+  // The lines `text` word-wraps into at `width` (its own newlines kept; a word wider than `width`
+  // stays whole on its own line).
+  std::vector<std::string> wrapLines(std::string_view text, int width, float pixelHeight);
   // Word-wraps into `width`; returns the height used.
   int drawParagraph(Canvas& canvas, std::string_view text, int x, int y, int width, float pixelHeight, Rgba color);
   int lineHeight(float pixelHeight) const;

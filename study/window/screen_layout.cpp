@@ -13,13 +13,16 @@ glm::dvec2 ScreenLayout::toStimulus(glm::dvec2 s) const {
   return {(s.x - stimulus.x) * stimulusWidth / double(stimulus.width), (s.y - stimulus.y) * stimulusHeight / double(stimulus.height)};
 }
 
-ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight) {
+int defaultHeaderHeight(int height) { return std::max(48, height / 12); }
+
+ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeightWanted) {
   ScreenLayout l;
   l.width = width;
   l.height = height;
   l.stimulusWidth = std::max(stimulusWidth, 1);
   l.stimulusHeight = std::max(stimulusHeight, 1);
-  const int headerHeight = std::max(48, height / 12), answerHeight = std::max(96, height / 7), margin = 12;
+  const int headerHeight = std::max(defaultHeaderHeight(height), headerHeightWanted);
+  const int answerHeight = std::max(96, height / 7), margin = 12;
   l.header = {0, 0, width, headerHeight};
   l.answer = {0, height - answerHeight, width, answerHeight};
   const Rect area{margin, headerHeight + margin, width - 2 * margin, height - headerHeight - answerHeight - 2 * margin};
@@ -32,9 +35,9 @@ ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stim
   return l;
 }
 
-ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight) {
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight) {
   constexpr int gap = 12;
-  ScreenLayout l = makeScreenLayout(width, height, 2 * std::max(stimulusWidth, 1) + gap, std::max(stimulusHeight, 1));
+  ScreenLayout l = makeScreenLayout(width, height, 2 * std::max(stimulusWidth, 1) + gap, std::max(stimulusHeight, 1), headerHeight);
   const int half = (l.stimulus.width - gap * l.stimulus.width / l.stimulusWidth) / 2;
   l.plan = Rect{l.stimulus.x + l.stimulus.width - half, l.stimulus.y, half, l.stimulus.height};
   l.stimulus.width = half;

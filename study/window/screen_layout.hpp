@@ -31,9 +31,12 @@ struct ScreenLayout {
   glm::dvec2 toStimulus(glm::dvec2 screenPixel) const;
 };
 
-ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight);
+// The header is max(48, height / 12) pixels tall, or `headerHeight` when that is more (a long question).
+ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0);
 // The stimulus on the left, a floor plan of the same size on the right.
-ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight);
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0);
+// The header's height without a long question.
+int defaultHeaderHeight(int height);
 
 // A row of equal buttons centred in `band`.
 std::vector<Button> buttonRow(const Rect& band, const std::vector<std::string>& labels, int buttonWidth = 64, int gap = 12);

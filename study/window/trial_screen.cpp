@@ -7,6 +7,7 @@
 #include "study/run/session_wording.hpp"
 #include "study/window/window_style.hpp"
 #include "study/window/gauge_drawing.hpp"
+#include "study/window/trial_header.hpp"
 
 namespace tlab::study {
 
@@ -33,8 +34,12 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
   const tasks::Question& q = view.prepared.question;
   const Canvas& stimulus = *view.prepared.stimulus;
   const bool plan = hasFloorPlan(view, widget_);
-  layout_ = plan ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height())
-                 : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height());
+  const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",
+                                           {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
+  const TrialHeader header =
+      layoutTrialHeader(painter_, questionWording(q, texts), counter, base_.width(), defaultHeaderHeight(base_.height()));
+  layout_ = plan ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height)
+                 : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height);
   // Interactive trials render the scene live in the stimulus area (Elmqvist: orbit / walk).
   if (view.plan.navigation != Navigation::None && view.prepared.scene)
     live_.emplace(view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera);
@@ -48,14 +53,14 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     base_.strokeRect(*layout_.plan, kInk, 1);
     layoutJson_["plan"] = {layout_.plan->x, layout_.plan->y, layout_.plan->width, layout_.plan->height};
   }
-  painter_.drawLine(base_, questionWording(q, texts), 16, 12, 22.0f, kInk);
+  for (std::size_t i = 0; i < header.questionLines.size(); ++i)
+    painter_.drawLine(base_, header.questionLines[i], kHeaderMargin, kHeaderTop + int(i) * painter_.lineHeight(kQuestionPixels),
+                      kQuestionPixels, kInk);
+  painter_.drawLine(base_, counter, header.counterX, kHeaderTop, kCounterPixels, kMuted);
   // How to answer here (the window also takes typed labels), by the answer's kind.
   painter_.drawLine(base_, texts.text(std::string("window_answer.") + form_.name()), 16, layout_.answer.y + 8, 18.0f, kMuted);
   if (live_)  // how to move in the scene, below how to answer
     painter_.drawLine(base_, texts.text(std::string("live.") + navigationName(view.plan.navigation)), 16, layout_.answer.y + 32, 16.0f, kMuted);
-  const std::string counter = texts.format(view.plan.phase == Phase::Training ? "trial.progress_practice" : "trial.progress_test",
-                                           {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
-  painter_.drawLine(base_, counter, base_.width() - 260, 12, 18.0f, kMuted);
   for (const auto& p : widget_.marks) {
     labels_.push_back(p.label);
     screenPoints_.push_back(layout_.toScreen(p.pixel));
@@ -81,7 +86,8 @@ std::string TrialScreen::selectedText() const {
 Canvas TrialScreen::frame(double secondsLeft) {
   Canvas c = base_;
   if (live_) c.drawCanvas(live_->frame(), layout_.stimulus);
-  painter_.drawLine(c, formatCountdown(secondsLeft), base_.width() - 100, 12, 24.0f, secondsLeft < 10 ? kWarn : kInk);
+  painter_.drawLine(c, formatCountdown(secondsLeft), base_.width() - kCountdownReserve, kHeaderTop, kCountdownPixels,
+                    secondsLeft < 10 ? kWarn : kInk);
   for (std::size_t i = 0; i < labels_.size(); ++i)
     if (selected_.count(labels_[i])) c.strokeCircle(screenPoints_[i].x, screenPoints_[i].y, 10.0, 3.0, kAccent);
   for (const auto& b : buttons_) drawButton(c, painter_, b, false);

@@ -13,7 +13,6 @@
 #include "renderer/scene/scene_source.hpp"
 #include "stimuli/scenes/stimulus_scenes.hpp"
 #include "study/run/floor_plan.hpp"
-#include "study/window/screen_layout.hpp"
 #include "study/store/sqlite_database.hpp"
 #include "tests/study/study_test_support.hpp"
 #include "tests/study/window_session.hpp"
@@ -31,30 +30,31 @@ void clickAt(const WindowSession& session, int x, int y) {
   session.xdo("click --window " + session.window + " 1");
 }
 
-// Clicks each label met along the boundary at its place on the screen, then Enter; the labels.
-std::vector<std::string> clickBoundaryLabels(const WindowSession& session, const StoredTrial& trial) {
-  const tlab::study::ScreenLayout layout = tlab::study::makeScreenLayout(640, 480, 160, 160);
+// Clicks each label met along the boundary where the window logged it at the trial's onset, then
+// Enter; the labels.
+std::vector<std::string> clickBoundaryLabels(const WindowSession& session, const StoredTrial& trial, const nlohmann::json& layout) {
   std::vector<std::string> expected;
   for (const auto& label : trial.question["truth"]) expected.push_back(label.get<std::string>());
   for (const auto& point : trial.question["points"]) {
     const std::string label = point["label"];
     if (std::find(expected.begin(), expected.end(), label) == expected.end()) continue;
-    const glm::dvec2 screen = layout.toScreen({point["pixel"][0].get<double>(), point["pixel"][1].get<double>()});
-    clickAt(session, int(screen.x), int(screen.y));
+    const auto& at = layout["labels"][label];
+    clickAt(session, int(at[0].get<double>()), int(at[1].get<double>()));
     pause(200);
   }
   press(session, "Return", 400);
   return expected;
 }
 
-// Clicks the target's floor position on the plan beside the stimulus.
-void clickFloorTarget(const WindowSession& session, const nlohmann::json& truth) {
-  const tlab::study::ScreenLayout planLayout = tlab::study::makeScreenLayoutWithPlan(640, 480, 160, 160);
+// Clicks the target's floor position on the plan beside the stimulus, where the window logged the
+// plan at the trial's onset.
+void clickFloorTarget(const WindowSession& session, const nlohmann::json& truth, const nlohmann::json& layout) {
+  const auto& rect = layout["plan"];  // x, y, width, height
   const auto scene = tlab::render::loadScene("builtin:walkthrough?seed=5", tlab::stimuli::allSceneSpecs());
   const tlab::study::FloorPlan plan = tlab::study::makeFloorPlan(scene, 160, 160);
   const glm::dvec2 planPixel = plan.pixelOf({truth[0].get<double>(), plan.floorY, truth[1].get<double>()});
-  const int clickX = int(planLayout.plan->x + planPixel.x * planLayout.plan->width / 160.0);
-  const int clickY = int(planLayout.plan->y + planPixel.y * planLayout.plan->height / 160.0);
+  const int clickX = int(rect[0].get<double>() + planPixel.x * rect[2].get<double>() / 160.0);
+  const int clickY = int(rect[1].get<double>() + planPixel.y * rect[3].get<double>() / 160.0);
   clickAt(session, clickX, clickY);
   pause(400);
 }
@@ -128,10 +128,14 @@ TEST(WindowRun, ParticipantAnswersByKeyboardAndClicksUnderXvfb) {
   session.xdo("type --window " + window + " " + layer);
   press(session, "Return", 400);
   press(session, "space", 400);  // next task's instructions
-  const std::vector<std::string> expected = clickBoundaryLabels(session, trials[1]);
+  const nlohmann::json boundaryLayout = waitForOnsetLayout(db, 1);
+  ASSERT_TRUE(boundaryLayout.contains("labels")) << boundaryLayout;
+  const std::vector<std::string> expected = clickBoundaryLabels(session, trials[1], boundaryLayout);
   press(session, "space", 400);  // next task's instructions
   const auto truth = trials[2].question["truth"];
-  clickFloorTarget(session, truth);
+  const nlohmann::json planLayout = waitForOnsetLayout(db, 2);
+  ASSERT_TRUE(planLayout.contains("plan")) << planLayout;
+  clickFloorTarget(session, truth, planLayout);
   press(session, "4", 400);       // questionnaire
   press(session, "Return", 400);  // confirm the answers
   session.xdo("key --window " + window + " space");  // debrief
@@ -204,13 +208,14 @@ TEST(WindowRun, ParticipantTurnsAGaugeByDragAndArrowKeysUnderXvfb) {
   ASSERT_FALSE(session.window.empty()) << session.err();
   const auto trials = waitForTrials(session.db);
   ASSERT_EQ(trials.size(), 1u) << session.err();
-  const nlohmann::json& q = trials[0].question;
-  const tlab::study::ScreenLayout layout = tlab::study::makeScreenLayout(640, 480, 160, 160);
-  const glm::dvec2 centre = layout.toScreen({q["points"][0]["pixel"][0].get<double>(), q["points"][0]["pixel"][1].get<double>()});
   pause(500);
   xdo("key --window " + session.window + " space");  // welcome
   pause(400);
   xdo("key --window " + session.window + " space");  // task instructions
+  const nlohmann::json& q = trials[0].question;
+  const nlohmann::json layout = waitForOnsetLayout(session.db, 0);  // where the window drew the gauge
+  ASSERT_TRUE(layout.contains("gauge")) << layout;
+  const glm::dvec2 centre(layout["gauge"]["centre"][0].get<double>(), layout["gauge"]["centre"][1].get<double>());
   pause(600);
   const std::string w = " --window " + session.window + " ";
   xdo("key" + w + "space");  // a stray Space in the trial: blanks are no typed answer, Enter still gives the gauge

@@ -42,6 +42,23 @@ inline std::vector<StoredTrial> waitForTrials(const std::string& db) {
   return {};
 }
 
+// The screen layout the window logged at the onset of its `index`-th trial (0-based, in the
+// order of the session): where it drew the stimulus, each label, the plan and the gauge. Waits
+// until the onset is committed (it is, before the trial takes any answer); null if it never is.
+inline nlohmann::json waitForOnsetLayout(const std::string& db, int index) {
+  for (int i = 0; i < 200; ++i) {
+    try {
+      study::Database d(db, false);
+      auto s = d.prepare("SELECT e.detail FROM events e JOIN trials t ON t.id = e.trial WHERE e.kind = 'onset' "
+                         "ORDER BY t.sequence LIMIT 1 OFFSET " + std::to_string(index));
+      if (s.step()) return nlohmann::json::parse(s.text(0));
+    } catch (const std::exception&) {
+    }
+    pause(100);
+  }
+  return nullptr;
+}
+
 // `tlab run EXPERIMENT` for one participant on its own Xvfb display (apart from window_cli_test's
 // 90..189), with xdotool driving its window.
 struct WindowSession {
