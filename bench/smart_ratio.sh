@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# Smart transparency against exact `constant` (issue #29's goals: smart ≤ 1.5× constant on the
+# torus, ≤ 2.5× on the 16-layer stack), timed by `tlab bench render` in alternating rounds for one
+# or more builds, so that every build meets the same load; prints each round's passes and ratio and
+# each build's best ratio per scene. Run by hand (speed is never a test):
+#
+#   bash bench/smart_ratio.sh [ROUNDS] [TLAB ...]     # default 3 rounds of build/bin/tlab
+#
+# Environment: SCENES (default the torus of 100,000 triangles and the 16-layer stack), SIZE (512x512),
+# FRAMES (3, the median of which each round takes).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+rounds=${1:-3}
+shift || true
+builds=("$@")
+[ ${#builds[@]} -eq 0 ] && builds=(build/bin/tlab)
+scenes=${SCENES:-"builtin:torus?triangles=100000 builtin:quad-stack?n=16"}
+size=${SIZE:-512x512}
+frames=${FRAMES:-3}
+echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
+declare -A best
+for r in $(seq 1 "$rounds"); do
+  for scene in $scenes; do
+    for b in "${builds[@]}"; do
+      json=$("$b" bench render --scene "$scene" --style constant,smart --size "$size" --frames "$frames" --json)
+      line=$(python3 -c '
+import json, sys
+rows = {r["style"]: r for r in json.loads(sys.argv[1])["rows"]}
+c, s = rows["constant"], rows["smart"]
+passes = lambda r: ", ".join(f"{k} {v:.1f}" for k, v in r["pass_ms"].items())
+cm, sm = c["frame_ms"], s["frame_ms"]
+print(f"{sm / cm:.2f}\tconstant {cm:.1f} ms ({passes(c)})\tsmart {sm:.1f} ms ({passes(s)})")
+' "$json")
+      ratio=${line%%$'\t'*}
+      echo -e "round $r\t$scene\t$b\tsmart/constant $line\tload $(cut -d' ' -f1 /proc/loadavg)"
+      key="$scene|$b"
+      if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if $ratio < ${best[$key]} else 1)"; then best[$key]=$ratio; fi
+    done
+  done
+done
+echo "best smart/constant of $rounds round(s):"
+for scene in $scenes; do
+  for b in "${builds[@]}"; do echo -e "  $scene\t$b\t${best[$scene|$b]}"; done
+done
