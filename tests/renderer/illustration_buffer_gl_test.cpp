@@ -71,8 +71,10 @@ TEST_P(BothFillMethods, ListsAreSortedFrontToBackWithFacingAndIds) {
   EXPECT_EQ(list[0].component, list[5].component);
 }
 
+// 20 layers: the count-scatter fill's first frame outgrows its 8 slots and scatters into the pool
+// (a frame whose lists fit the slots needs no pool: AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem).
 TEST_P(BothFillMethods, ForcedOverflowGivesTheSameImage) {
-  const Scene scene = loadScene("builtin:open-cylinders");
+  const Scene scene = loadScene("builtin:quad-stack?n=20&m=4");
   Renderer large(scene), tiny(scene);
   RenderRequest big = request(96, 80, GetParam());
   big.initialPoolFragments = 1u << 20;
@@ -205,6 +207,42 @@ TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
       for (std::size_t i = 0; i < image.pixels.size(); ++i) ASSERT_EQ(image.pixels[i], expected.pixels[i]) << "pixel " << i << ", frame " << frame;
     }
   }
+}
+
+// Issue #29: a frame whose lists all fit their slots, for a compositor that sorts, runs no prefix
+// sum and uses no pool; the heads and the fragment count, summed on the host when read, equal the
+// prefix sum's, which runs when a reader needs the sorted lists, and the sorted lists equal those
+// of a fill that sorts in its own pass.
+TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour;
+  colour |= FragmentProperty::Color;
+  const Scene scene = loadScene("builtin:nested-spheres?n=3");  // lists of 0 to 6 fragments
+  GpuScene gpu(scene);
+  const Camera camera = fitCamera(scene.boundingSphere(), 48.0f / 40.0f);
+  RasterUniforms u;
+  u.view = camera.view();
+  u.projection = camera.projection(48.0f / 40.0f);
+  PassTimer timer(false);
+  FragmentBuffer reference(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter);
+  reference.build(gpu, u, timer);  // sorts in its own pass, so runs the prefix sum in the fill
+  const std::uint64_t n = reference.fragmentCount();
+  ASSERT_GT(n, 48u * 40u / 2);
+
+  FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter, 16);
+  buffer.setSortInCompose(true);
+  buffer.build(gpu, u, timer);
+  ASSERT_GT(buffer.slotsUsed(), 0u);
+  EXPECT_FALSE(buffer.sorted());
+  EXPECT_EQ(buffer.capacity(), 16u) << "the pool of 16 fragments was left alone";
+  EXPECT_EQ(buffer.poolGrowths(), 0);
+  EXPECT_EQ(buffer.pixelCounts(), reference.pixelCounts());
+  EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads()) << "summed on the host";
+  EXPECT_EQ(buffer.fragmentCount(), n) << "summed on the host";
+  EXPECT_EQ(buffer.sortedRecords(0, n), reference.sortedRecords(0, n)) << "the prefix sum ran for the sort";
+  EXPECT_EQ(buffer.capacity(), n);
+  EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads()) << "the prefix sum's";
+  EXPECT_EQ(buffer.fragmentCount(), n) << "the prefix sum's";
 }
 
 // A pass that asks for the sorted lists of a frame whose sort was left to the compose pass gets
