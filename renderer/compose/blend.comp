@@ -14,6 +14,8 @@
 // 18.5-166 ms against 16.4-110 ms on the teapot, bunny, torus, abstract scene and 16-layer stack,
 // best of 3 alternating rounds at load 5), and inserting each record into the registers as it is
 // read, in loops, was slower than either.
+// One invocation per pixel of uRect (x0, y0, width, height; frame/frame_context.hpp's
+// sceneFootprint): the pixels around it have no fragment, and the host paints them.
 // TLAB_SLOTS: the records sit in slots (buffer/fill_slots.frag: the i-th at i * uPixels + pixel),
 // and so do the keys in the order buffer (the fill then needs no prefix sum: issue #29), else in
 // the scatter pass's block [pixelHead, pixelHead + pixelCount).
@@ -29,6 +31,8 @@ layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
 #endif
 uniform uint uPixels;
+uniform int uWidth;
+uniform ivec4 uRect;
 uniform vec4 uBackground;
 uniform float uAlpha;
 
@@ -100,8 +104,9 @@ void blendInOrderBuffer(uint pixel, uint base, uint n) {
 #endif
 
 void main() {
-  uint pixel = linearInvocation();
-  if (pixel >= uPixels) return;
+  uint i = linearInvocation();
+  if (i >= uint(uRect.z * uRect.w)) return;
+  uint pixel = uint(uRect.y + int(i) / uRect.z) * uint(uWidth) + uint(uRect.x + int(i) % uRect.z);
   uint n = pixelCount[pixel];
 #if defined(TLAB_FUSED) && defined(TLAB_SLOTS)
   uint base = 0u;  // slots need no block
