@@ -1,6 +1,7 @@
 #include "renderer/buffer/fragment_buffer.hpp"
 
 #include <algorithm>
+#include <numeric>
 #include <sstream>
 #include <stdexcept>
 #include <utility>
@@ -122,18 +123,28 @@ std::uint32_t FragmentBuffer::prefixSum() {
     gpu::dispatchLinear(phase == 1 ? 1 : blocks);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
-  std::uint32_t counters[3] = {0, 0, 0};
+  std::uint32_t counters[2] = {0, 0};
   counters_.download(counters, sizeof(counters));
-  overflowMax_ = counters[2];
   return counters[1];
+}
+
+void FragmentBuffer::ensureHeads() {
+  if (headsReady_) return;
+  fragmentCount_ = prefixSum();
+  fragmentCountKnown_ = true;
+  headsReady_ = true;
+  ensureCapacity(fragmentCount_);
 }
 
 // Slots per pixel for this frame's count pass: as many as the largest list seen so far, when
 // that many fit the memory budget for every pixel; else 0 (count, then scatter).
+// A compositor that sorts keeps its keys beside the slots, within the same budget.
 std::uint32_t FragmentBuffer::slotsForThisFrame() {
   const std::size_t bytes = pixels() * slotsWanted_ * std::size_t(layout_.stride) * 4;
-  if (slotsWanted_ == 0 || bytes > std::min(maxBytes_, kSlotBudgetBytes)) return 0;
+  const std::size_t orderBytes = sortInCompose_ ? pixels() * slotsWanted_ * 8 : 0;
+  if (slotsWanted_ == 0 || std::max(bytes, orderBytes) > maxBytes_ || bytes + orderBytes > kSlotBudgetBytes) return 0;
   if (slots_.size() < bytes) slots_ = gpu::Buffer(bytes);
+  if (slotOrder_.size() < orderBytes) slotOrder_ = gpu::Buffer(orderBytes);
   return slotsWanted_;
 }
 
@@ -148,13 +159,18 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
       slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
     }
     rasterize(slotsUsed_ > 0 ? *slotProgram_ : *countProgram_, scene, u);
-    fragmentCount_ = prefixSum();
-    if (overflowMax_ > 0) {  // some list outgrew the slots: scatter this frame, more slots next
-      slotsWanted_ = overflowMax_;
+    if (slotsUsed_ > 0) {
+      std::uint32_t counters[3] = {0, 0, 0};
+      counters_.download(counters, sizeof(counters));
+      const std::uint32_t overflowMax = counters[2];  // the largest list beyond the slots (0: none)
+      if (overflowMax == 0) {
+        if (!sortInCompose_) ensureHeads();  // the sort pass writes each list at its head
+        return;
+      }
+      slotsWanted_ = overflowMax;  // some list outgrew the slots: scatter this frame, more slots next
       slotsUsed_ = 0;
     }
-    ensureCapacity(fragmentCount_);
-    if (slotsUsed_ > 0) return;
+    ensureHeads();
     pixelCursor_.clearToZero();
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
@@ -180,7 +196,7 @@ void FragmentBuffer::fillLinkedList(const GpuScene& scene, const RasterUniforms&
       ensureCapacity(written);  // Sec. 4.2: resize to the required size and repeat the rendering
       ++rerenders_;
     }
-    fragmentCount_ = prefixSum();
+    ensureHeads();
   });
 }
 
@@ -191,10 +207,18 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   poolGrowths_ = 0;
   slotsUsed_ = 0;
   sorted_ = false;
+  headsReady_ = false;
+  fragmentCountKnown_ = false;
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
-  if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { sortLists(); });
+  if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { ensureSorted(); });
   gpu::checkGl("building the illustration buffer");
+}
+
+void FragmentBuffer::ensureSorted() {
+  if (sorted_) return;
+  ensureHeads();
+  sortLists();
 }
 
 void FragmentBuffer::sortLists() {
@@ -214,7 +238,7 @@ void FragmentBuffer::sortLists() {
 }
 
 void FragmentBuffer::bindSorted() {
-  if (!sorted_) sortLists();
+  ensureSorted();
   std::as_const(*this).bindSorted();
 }
 
@@ -227,10 +251,15 @@ void FragmentBuffer::bindSorted() const {
 
 bool FragmentBuffer::bindUnsorted() const {
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  if (slotsUsed_ > 0) {
+    slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+    slotOrder_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
+    return true;
+  }
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
-  (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
+  fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
-  return slotsUsed_ > 0;
+  return false;
 }
 
 const gpu::Buffer& FragmentBuffer::composeOutput() const {
@@ -244,14 +273,28 @@ std::vector<std::uint32_t> FragmentBuffer::pixelCounts() const {
   return v;
 }
 
+std::uint64_t FragmentBuffer::fragmentCount() const {
+  if (!fragmentCountKnown_) {
+    const auto counts = pixelCounts();
+    fragmentCount_ = std::accumulate(counts.begin(), counts.end(), std::uint64_t(0));
+    fragmentCountKnown_ = true;
+  }
+  return fragmentCount_;
+}
+
 std::vector<std::uint32_t> FragmentBuffer::pixelHeads() const {
   std::vector<std::uint32_t> v(pixels());
-  pixelHead_.download(v.data(), v.size() * 4);
+  if (headsReady_) {
+    pixelHead_.download(v.data(), v.size() * 4);
+  } else {  // buffer/prefix_sum.comp's exclusive prefix sum, here
+    const auto counts = pixelCounts();
+    std::exclusive_scan(counts.begin(), counts.end(), v.begin(), std::uint32_t(0));
+  }
   return v;
 }
 
 std::vector<std::uint32_t> FragmentBuffer::sortedRecords(std::size_t first, std::size_t count) {
-  if (!sorted_) sortLists();
+  ensureSorted();
   std::vector<std::uint32_t> v(count * layout_.stride);
   fragsSorted_.download(v.data(), v.size() * 4, first * layout_.stride * 4);
   return v;

@@ -9,7 +9,9 @@
 //    pass also stores each pixel's first K records in slots (buffer/fill_slots.frag: one
 //    rasterization instead of two); a pixel with more than K fragments makes that frame fall
 //    back to the scatter pass, which the exact counts already prepared (issue #29). The sorted
-//    buffer is the same either way.
+//    buffer is the same either way. A frame whose lists all fit their slots and whose compositor
+//    sorts (setSortInCompose) skips the prefix sum: nothing it draws needs the heads, and
+//    whoever asks for them (sorting, read-backs, the fragment count) gets them then.
 //  - LinkedList: the paper's Alg. 1 (a global counter and per-pixel linked lists); when the pool
 //    overflows it grows to the required size and the scene is re-rendered (Sec. 4.2).
 // Measured on llvmpipe (`tlab bench render --fill`), CountScatter is the faster and the default.
@@ -55,10 +57,10 @@ class FragmentBuffer final : public Fill {
   // sorting them first when this frame's build left them unsorted.
   void bindSorted();
   void bindSorted() const;  // the same where the lists are sorted; throws where they are not
-  // Binds pixelCount, pixelHead, the unsorted records (binding FRAGS_UNSORTED) and the order
-  // buffer (ORDER, room for one key per fragment at the pixel's block) for a compositor that
-  // sorts; true when the records sit in slots (record i of a pixel at i * pixels + pixel, as
-  // buffer/fill_slots.frag stores them), false when in the pixel's block.
+  // Binds pixelCount, the unsorted records (binding FRAGS_UNSORTED) and the order buffer (ORDER)
+  // for a compositor that sorts; true when the records sit in slots (record i of a pixel at
+  // i * pixels + pixel, as buffer/fill_slots.frag stores them, and so does the order buffer its
+  // keys), false when in the pixel's block (pixelHead bound, a key per fragment at the block).
   bool bindUnsorted() const;
   // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
   // each frame costs page faults whose price varies with the machine's load).
@@ -69,14 +71,15 @@ class FragmentBuffer final : public Fill {
   std::size_t pixels() const { return std::size_t(width_) * height_; }
   const FragmentLayout& layout() const { return layout_; }
   FillMethod method() const { return method_; }
-  std::uint64_t fragmentCount() const { return fragmentCount_; }
+  std::uint64_t fragmentCount() const;  // the sum of the counts (summed here when the fill skipped the prefix sum)
   std::size_t capacity() const { return capacity_; }
   int rerenders() const { return rerenders_; }      // full re-renders after an overflow (LinkedList)
   int poolGrowths() const { return poolGrowths_; }  // times the pool was enlarged
   // Slots per pixel the last build stored its records in (0: it ran the scatter pass).
   std::uint32_t slotsUsed() const { return slotsUsed_; }
 
-  // Read-backs, in GL pixel order (row 0 = bottom): per-pixel counts and heads, sorted records.
+  // Read-backs, in GL pixel order (row 0 = bottom): per-pixel counts and heads (the exclusive
+  // prefix sum of the counts, summed here when the fill skipped it), sorted records.
   std::vector<std::uint32_t> pixelCounts() const;
   std::vector<std::uint32_t> pixelHeads() const;
   std::vector<std::uint32_t> sortedRecords(std::size_t firstFragment, std::size_t count);  // sorts first if needed
@@ -85,8 +88,10 @@ class FragmentBuffer final : public Fill {
   void ensureCapacity(std::size_t fragments);
   void rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
+  void ensureHeads();  // this frame's prefix sum (heads, fragment count) and a pool that holds it
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();
+  void ensureSorted();  // the heads, then sortLists(), unless this frame's lists are sorted
   void sortLists();
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
@@ -95,18 +100,20 @@ class FragmentBuffer final : public Fill {
   FillMethod method_;
   std::size_t capacity_ = 0;
   std::size_t maxBytes_;
-  std::uint64_t fragmentCount_ = 0;
+  mutable std::uint64_t fragmentCount_ = 0;
+  mutable bool fragmentCountKnown_ = false;
+  bool headsReady_ = false;  // this frame's prefix sum ran: pixelHead_ and fragmentCount_ are set
   int rerenders_ = 0;
   int poolGrowths_ = 0;
   std::uint32_t slotsWanted_ = 8;  // the largest list seen so far (slots to try next frame)
   std::uint32_t slotsUsed_ = 0;
-  std::uint32_t overflowMax_ = 0;  // of the last count: the largest list beyond the slots (0: none)
   bool sortInCompose_ = false;
   bool sorted_ = false;  // this frame's lists are in fragsSorted_
 
   gpu::Framebuffer emptyFbo_;
   gpu::Buffer pixelCount_, pixelHead_, pixelCursor_, counters_, blockSums_;
   gpu::Buffer listNext_, fragsUnsorted_, fragsSorted_, order_, slots_;
+  gpu::Buffer slotOrder_;  // a compositor's sort keys beside the slots (i * pixels + pixel)
   mutable gpu::Buffer composeOutput_;
   const gpu::ShaderProgram* countProgram_ = nullptr;
   const gpu::ShaderProgram* scatterProgram_ = nullptr;

@@ -14,8 +14,11 @@
 // 18.5-166 ms against 16.4-110 ms on the teapot, bunny, torus, abstract scene and 16-layer stack,
 // best of 3 alternating rounds at load 5), and inserting each record into the registers as it is
 // read, in loops, was slower than either.
+// One invocation per pixel of uRect (x0, y0, width, height; frame/frame_context.hpp's
+// sceneFootprint): the pixels around it have no fragment, and the host paints them.
 // TLAB_SLOTS: the records sit in slots (buffer/fill_slots.frag: the i-th at i * uPixels + pixel),
-// else in the scatter pass's block [pixelHead, pixelHead + pixelCount).
+// and so do the keys in the order buffer (the fill then needs no prefix sum: issue #29), else in
+// the scatter pass's block [pixelHead, pixelHead + pixelCount).
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
@@ -28,6 +31,8 @@ layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
 #endif
 uniform uint uPixels;
+uniform int uWidth;
+uniform ivec4 uRect;
 uniform vec4 uBackground;
 uniform float uAlpha;
 
@@ -42,11 +47,13 @@ void blendFragment(uint colorWord) {
 }
 
 #ifdef TLAB_FUSED
+// Where the i-th record of a pixel, and the i-th key of its order, sit.
 #ifdef TLAB_SLOTS
 uint recordOf(uint pixel, uint base, uint i) { return i * uPixels + pixel; }
 #else
 uint recordOf(uint pixel, uint base, uint i) { return base + i; }
 #endif
+#define KEY(i) order[recordOf(pixel, base, i)]
 
 // One record in registers: (depth bits, triangle index, colour word).
 uvec3 loadRecord(uint record) {
@@ -81,27 +88,28 @@ bool keyBefore(uvec2 a, uvec2 b) {
 void blendInOrderBuffer(uint pixel, uint base, uint n) {
   for (uint i = 0u; i < n; ++i) {
     uint src = recordOf(pixel, base, i);
-    order[base + i] = uvec2(frags[fragWord(src, OFF_DEPTH)], src);
+    KEY(i) = uvec2(frags[fragWord(src, OFF_DEPTH)], src);
   }
   for (uint i = 1u; i < n; ++i) {
-    uvec2 key = order[base + i];
+    uvec2 key = KEY(i);
     uint j = i;
-    while (j > 0u && keyBefore(key, order[base + j - 1u])) {
-      order[base + j] = order[base + j - 1u];
+    while (j > 0u && keyBefore(key, KEY(j - 1u))) {
+      KEY(j) = KEY(j - 1u);
       --j;
     }
-    order[base + j] = key;
+    KEY(j) = key;
   }
-  for (uint i = 0u; i < n; ++i) blendFragment(frags[fragWord(order[base + i].y, TLAB_OFF_COLOR)]);
+  for (uint i = 0u; i < n; ++i) blendFragment(frags[fragWord(KEY(i).y, TLAB_OFF_COLOR)]);
 }
 #endif
 
 void main() {
-  uint pixel = linearInvocation();
-  if (pixel >= uPixels) return;
+  uint i = linearInvocation();
+  if (i >= uint(uRect.z * uRect.w)) return;
+  uint pixel = uint(uRect.y + int(i) / uRect.z) * uint(uWidth) + uint(uRect.x + int(i) % uRect.z);
   uint n = pixelCount[pixel];
 #if defined(TLAB_FUSED) && defined(TLAB_SLOTS)
-  uint base = n > REGISTER_SORT ? pixelHead[pixel] : 0u;  // short lists need no block
+  uint base = 0u;  // slots need no block
 #else
   uint base = pixelHead[pixel];
 #endif

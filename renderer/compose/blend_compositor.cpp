@@ -6,7 +6,10 @@
 namespace tlab::render {
 
 // The lists sorted by the fill's sort pass, or, when the fill left them unsorted (FillSpec::
-// sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED).
+// sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED). Only the
+// pixels the scene can reach are composed and read back; the others are the background
+// (c = 0, T = 1: c + T·c_background), painted here (issue #29: most of a 512² frame of the
+// teapot is background).
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   gpu::ShaderDefines defines = buffer.layout().defines();
@@ -20,10 +23,16 @@ void composeBlend(FrameContext& frame, float alpha) {
   const gpu::Buffer& output = buffer.composeOutput();
   output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
   program.use();
+  const PixelRect rect = sceneFootprint(frame);
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
+  glUniform1i(program.uniform("uWidth"), buffer.width());
+  glUniform4i(program.uniform("uRect"), rect.x0, rect.y0, rect.width(), rect.height());
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uAlpha"), alpha);
-  dispatchCompose(frame, output, buffer.pixels(), "compose/blend.comp");
+  gpu::dispatchLinear(rect.pixels());
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  readOutputRect(output, frame.image, rect, glm::vec4(glm::vec3(frame.background), 1.0f));
+  gpu::checkGl("compose/blend.comp");
 }
 
 }  // namespace tlab::render

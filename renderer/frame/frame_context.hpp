@@ -47,6 +47,20 @@ struct FrameContext {
 // flipping so that row 0 is the top.
 void readOutputBuffer(const gpu::Buffer& output, core::Image& image);
 
+// Pixels [x0, x1) x [y0, y1) in GL order (row 0 = bottom).
+struct PixelRect {
+  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  int width() const { return x1 - x0; }
+  int height() const { return y1 - y0; }
+  std::size_t pixels() const { return std::size_t(width()) * std::size_t(height()); }
+};
+// Every pixel a fragment of the frame's scene can land on, and maybe more: the window
+// rectangle of the scene's bounding box seen through the frame's camera, a pixel wider on each
+// side; the whole image when the box reaches behind the eye. Pixels outside it have no fragment.
+PixelRect sceneFootprint(const FrameContext& frame);
+// readOutputBuffer for the texels inside `rect` only; the image's other pixels become `outside`.
+void readOutputRect(const gpu::Buffer& output, core::Image& image, PixelRect rect, glm::vec4 outside);
+
 // The end of every compositor: its compute program (bound, uniforms set) run once per pixel, a
 // barrier, the output read into frame.image, and a GL error check naming `shader`.
 void dispatchCompose(FrameContext& frame, const gpu::Buffer& output, std::size_t pixels, const char* shader,

@@ -1,6 +1,7 @@
 // The illustration buffer against analytic layer counts, its overflow handling and determinism.
 #include <gtest/gtest.h>
 
+#include "renderer/frame/frame_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "tests/support/gl_fixture.hpp"
@@ -71,8 +72,10 @@ TEST_P(BothFillMethods, ListsAreSortedFrontToBackWithFacingAndIds) {
   EXPECT_EQ(list[0].component, list[5].component);
 }
 
+// 20 layers: the count-scatter fill's first frame outgrows its 8 slots and scatters into the pool
+// (a frame whose lists fit the slots needs no pool: AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem).
 TEST_P(BothFillMethods, ForcedOverflowGivesTheSameImage) {
-  const Scene scene = loadScene("builtin:open-cylinders");
+  const Scene scene = loadScene("builtin:quad-stack?n=20&m=4");
   Renderer large(scene), tiny(scene);
   RenderRequest big = request(96, 80, GetParam());
   big.initialPoolFragments = 1u << 20;
@@ -207,6 +210,42 @@ TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
   }
 }
 
+// Issue #29: a frame whose lists all fit their slots, for a compositor that sorts, runs no prefix
+// sum and uses no pool; the heads and the fragment count, summed on the host when read, equal the
+// prefix sum's, which runs when a reader needs the sorted lists, and the sorted lists equal those
+// of a fill that sorts in its own pass.
+TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour;
+  colour |= FragmentProperty::Color;
+  const Scene scene = loadScene("builtin:nested-spheres?n=3");  // lists of 0 to 6 fragments
+  GpuScene gpu(scene);
+  const Camera camera = fitCamera(scene.boundingSphere(), 48.0f / 40.0f);
+  RasterUniforms u;
+  u.view = camera.view();
+  u.projection = camera.projection(48.0f / 40.0f);
+  PassTimer timer(false);
+  FragmentBuffer reference(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter);
+  reference.build(gpu, u, timer);  // sorts in its own pass, so runs the prefix sum in the fill
+  const std::uint64_t n = reference.fragmentCount();
+  ASSERT_GT(n, 48u * 40u / 2);
+
+  FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter, 16);
+  buffer.setSortInCompose(true);
+  buffer.build(gpu, u, timer);
+  ASSERT_GT(buffer.slotsUsed(), 0u);
+  EXPECT_FALSE(buffer.sorted());
+  EXPECT_EQ(buffer.capacity(), 16u) << "the pool of 16 fragments was left alone";
+  EXPECT_EQ(buffer.poolGrowths(), 0);
+  EXPECT_EQ(buffer.pixelCounts(), reference.pixelCounts());
+  EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads()) << "summed on the host";
+  EXPECT_EQ(buffer.fragmentCount(), n) << "summed on the host";
+  EXPECT_EQ(buffer.sortedRecords(0, n), reference.sortedRecords(0, n)) << "the prefix sum ran for the sort";
+  EXPECT_EQ(buffer.capacity(), n);
+  EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads()) << "the prefix sum's";
+  EXPECT_EQ(buffer.fragmentCount(), n) << "the prefix sum's";
+}
+
 // A pass that asks for the sorted lists of a frame whose sort was left to the compose pass gets
 // them sorted then (here `tlab inspect`'s read-back after a `constant` frame).
 TEST(IllustrationBuffer, SortedListsOfAFrameLeftUnsortedAreSortedWhenRead) {
@@ -216,4 +255,95 @@ TEST(IllustrationBuffer, SortedListsOfAFrameLeftUnsortedAreSortedWhenRead) {
   ASSERT_EQ(list.size(), 12u);
   for (std::size_t i = 1; i < list.size(); ++i) EXPECT_LT(list[i - 1].depth, list[i].depth);
   EXPECT_NE(list.front().color, glm::vec4(0.0f)) << "the records carry their colour";
+}
+
+namespace {
+
+// The cube (edge 1 at the origin) in three views: small in the lower left of the picture, all
+// around a camera inside it, and out of the picture to the left.
+struct CubeView {
+  const char* name;
+  Camera camera;
+};
+std::vector<CubeView> cubeViews() {
+  Camera aside, inside, away;
+  aside.eye = {0.0f, 0.0f, 6.0f};
+  aside.target = {1.6f, 1.3f, 0.0f};
+  inside.eye = {0.1f, 0.2f, 0.1f};
+  inside.target = {0.0f, 0.0f, -1.0f};
+  away.eye = {0.0f, 0.0f, 6.0f};
+  away.target = {6.0f, 0.0f, 0.0f};
+  return {{"aside", aside}, {"inside", inside}, {"away", away}};
+}
+
+}  // namespace
+
+// Issue #29: constant's compose pass runs on the scene's footprint only. It holds every pixel
+// with a fragment; it is a small part of the picture when the scene is, the whole picture when
+// the camera stands inside the scene's box, and empty when the scene is out of the picture.
+TEST(IllustrationBuffer, TheSceneFootprintHoldsEveryFragment) {
+  const Scene scene = loadScene("builtin:cube");
+  GpuScene gpu(scene);
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour;
+  colour |= FragmentProperty::Color;
+  const int w = 96, h = 80;
+  FragmentBuffer buffer(shaders, w, h, FragmentLayout(colour), FillMethod::CountScatter);
+  const StyleParams params;
+  tlab::core::Image image(w, h);
+  PassTimer timer(false);
+  for (const auto& [name, camera] : cubeViews()) {
+    SCOPED_TRACE(name);
+    RasterUniforms u;
+    u.view = camera.view();
+    u.projection = camera.projection(float(w) / float(h));
+    FrameContext frame{scene, gpu, u, camera, params, w, h, scene.background, &buffer, image, shaders};
+    const PixelRect r = sceneFootprint(frame);
+    buffer.build(gpu, u, timer);
+    const auto counts = buffer.pixelCounts();  // row 0 = bottom, as the footprint's
+    std::size_t covered = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x)
+        if (counts[std::size_t(y) * w + x] > 0) {
+          ++covered;
+          ASSERT_TRUE(x >= r.x0 && x < r.x1 && y >= r.y0 && y < r.y1) << "pixel " << x << "," << y << " outside the footprint";
+        }
+    if (std::string(name) == "aside") {
+      EXPECT_GT(covered, 20u);
+      EXPECT_LT(r.pixels(), std::size_t(w) * h / 8) << "a small footprint";
+      EXPECT_GT(r.x0, 0);
+      EXPECT_GT(r.y0, 0);
+    } else if (std::string(name) == "inside") {
+      EXPECT_EQ(covered, std::size_t(w) * h);
+      EXPECT_EQ(r.pixels(), std::size_t(w) * h) << "the whole picture";
+    } else {
+      EXPECT_EQ(covered, 0u);
+      EXPECT_EQ(r.pixels(), 0u) << "nothing to compose";
+    }
+  }
+}
+
+// ... and every pixel of constant's picture with a fragment is composed (not the background),
+// every other is exactly the background (opaque), for the slot fill and the scatter pass.
+TEST(IllustrationBuffer, ConstantComposesEveryCoveredPixelAndPaintsTheRestBackground) {
+  const Scene scene = loadScene("builtin:cube");
+  const glm::vec4 background(glm::vec3(scene.background), 1.0f);
+  for (const auto& [name, camera] : cubeViews()) {
+    for (FillMethod fill : {FillMethod::CountScatter, FillMethod::LinkedList}) {
+      SCOPED_TRACE(std::string(name) + " " + fillMethodName(fill));
+      Renderer renderer(scene);
+      RenderRequest r = request(96, 80, fill);
+      r.camera = camera;
+      const tlab::core::Image image = renderer.render(r);
+      const auto counts = renderer.layerCounts();  // row 0 = top, as the image's
+      ASSERT_EQ(counts.size(), image.pixels.size());
+      for (std::size_t i = 0; i < counts.size(); ++i) {
+        if (counts[i] == 0) {
+          ASSERT_EQ(image.pixels[i], background) << "pixel " << i;
+        } else {
+          ASSERT_NE(image.pixels[i], background) << "pixel " << i;
+        }
+      }
+    }
+  }
 }
