@@ -66,6 +66,14 @@ uvec4 linksOf(uint f) { return links[f]; }
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
 #endif
+#if TLAB_PHASE == 1 && defined(TLAB_LINK_IMAGE)
+// Phase 1 stores a fragment's 4 links as one texel of an RGBA32UI image over the links buffer
+// (one store a lane, where a storage buffer is written lane by lane and word by word).
+layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uLinkImage;
+void storeLinks(uint f, uvec4 link) { imageStore(uLinkImage, int(f), link); }
+#else
+void storeLinks(uint f, uvec4 link) { links[f] = link; }
+#endif
 
 uniform int uWidth;
 uniform int uHeight;
@@ -312,7 +320,7 @@ void main() {
     }
 #endif
     unresolved = unresolved || any(equal(link, uvec4(UNRESOLVED)));
-    links[f] = link;
+    storeLinks(f, link);
   }
   if (unresolved) workPixels[atomicAdd(workCount, 1u)] = pixel;
 #elif TLAB_PHASE == 3
