@@ -122,6 +122,16 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram* sortProgram_ = nullptr;
   const gpu::ShaderProgram* slotProgram_ = nullptr;
   const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
+
+ public:
+  // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
+  // in the order buffer (off): the same sorted buffer either way (tests compare the two).
+  void setRegisterSort(bool on) { registerSort_ = on; }
+
+ private:
+  bool registerSort_ = true;
+  bool sortTexels_ = false;        // the sort pass reads the unsorted records as a buffer texture
+  gpu::Texture unsortedWords_;     // that texture, made per sort (it views this frame's pool)
 };
 
 }  // namespace tlab::render

@@ -49,9 +49,30 @@ FRONTIER_LIST(, BIND_SEEDS_BETA, SeedsBeta, betaSeeds);
 FRONTIER_LIST(, BIND_SEEDS_GAMMA, SeedsGamma, gammaSeeds);
 #endif
 #endif
+#if TLAB_PHASE == 2 && defined(TLAB_LINK_TEXELS)
+// Phase 2 reads the links as a buffer texture (a fragment's 4 links a texel: one fetch for all
+// lanes, where llvmpipe reads a storage buffer lane by lane and word by word). It rewrites links
+// of that buffer meanwhile, but only a link f -> x (direction k) that x does not return, to
+// NO_NEIGHBOR; the one other reader of that word is the invocation of a fragment g with a link
+// g -> f, testing whether the word is g. Had it been g, g's link would return it (g's own test
+// fails only when the word is not g), so f would have kept it: a word that changes is not g
+// before nor after the change, and no result depends on when the word is read.
+uniform usamplerBuffer uLinkTexels;
+uvec4 linksOf(uint f) { return texelFetch(uLinkTexels, int(f)); }
+#else
+uvec4 linksOf(uint f) { return links[f]; }
+#endif
 #if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
+#endif
+#if TLAB_PHASE == 1 && defined(TLAB_LINK_IMAGE)
+// Phase 1 stores a fragment's 4 links as one texel of an RGBA32UI image over the links buffer
+// (one store a lane, where a storage buffer is written lane by lane and word by word).
+layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uLinkImage;
+void storeLinks(uint f, uvec4 link) { imageStore(uLinkImage, int(f), link); }
+#else
+void storeLinks(uint f, uvec4 link) { links[f] = link; }
 #endif
 
 uniform int uWidth;
@@ -299,7 +320,7 @@ void main() {
     }
 #endif
     unresolved = unresolved || any(equal(link, uvec4(UNRESOLVED)));
-    links[f] = link;
+    storeLinks(f, link);
   }
   if (unresolved) workPixels[atomicAdd(workCount, 1u)] = pixel;
 #elif TLAB_PHASE == 3
@@ -327,14 +348,15 @@ void main() {
   uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
   for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {
     uint f = head + layer;
-    uvec4 link = links[f];
+    const uvec4 chosen = linksOf(f);
+    uvec4 link = chosen;
     uint found = 0u;
     bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {
       uint j = link[k];
       if (j == NO_NEIGHBOR) continue;
       // Directions come in pairs (0,1), (2,3): k ^ 1 is the way back.
-      if (links[j][k ^ 1] != f) {
+      if (linksOf(j)[k ^ 1] != f) {
         link[k] = NO_NEIGHBOR;
         continue;
       }
@@ -343,7 +365,7 @@ void main() {
       nextToSilhouette = nextToSilhouette || layer < neighborLayer;
       underSilhouette = underSilhouette || layer > neighborLayer;
     }
-    links[f] = link;
+    if (any(notEqual(link, chosen))) links[f] = link;  // (mutual links stay as they are)
     // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
     float b = 0.0, g = 0.0;
     uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;

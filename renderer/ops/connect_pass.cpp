@@ -53,10 +53,22 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
         TransparencyFields::clearList(fields.frontier(f));
         fields.frontier(f).bindBase(GL_SHADER_STORAGE_BUFFER, f == Field::Beta ? kSeedsBeta : kSeedsGamma);
       }
+  // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
+  constexpr GLint kLinkTexelsUnit = 1;
+  constexpr GLuint kLinkImageUnit = 0;  // and phase 1 writes them as an image of those texels (TLAB_LINK_IMAGE)
+  gpu::Texture linkTexels;
+  if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
+    linkTexels = gpu::makeTexture(GL_TEXTURE_BUFFER);
+    glTextureBufferRange(linkTexels.id(), GL_RGBA32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
+    glBindTextureUnit(kLinkTexelsUnit, linkTexels.id());
+    glBindImageTexture(kLinkImageUnit, linkTexels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
+  }
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
+    if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
+    if (linkTexels && phase[0] == '1') phaseDefines.emplace_back("TLAB_LINK_IMAGE", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
     program.use();
     glUniform1i(program.uniform("uWidth"), buffer.width());
@@ -67,8 +79,10 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
+    glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
     gpu::dispatchLinear(items);
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
   };
   // Phase 1 settles most links; phase 3 searches the pixels it listed; phase 2 keeps mutual links.
   run("1", buffer.pixels());
