@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Smart transparency against exact `constant` (issue #29's goals: smart ≤ 1.5× constant on the
 # torus, ≤ 2.5× on the 16-layer stack), timed by `tlab bench render` in alternating rounds for one
-# or more builds, so that every build meets the same load; prints each round's passes and ratio and
-# each build's best ratio per scene. Run by hand (speed is never a test):
+# or more builds, so that every build meets the same load; prints each round's passes and ratio, and
+# per scene and build the best frame of each style over the rounds and their ratio (a round's own
+# ratio moves with whichever style the load hit harder in it). Run by hand (speed is never a test):
 #
 #   bash bench/smart_ratio.sh [ROUNDS] [TLAB ...]     # default 3 rounds of build/bin/tlab
 #
@@ -29,16 +30,23 @@ rows = {r["style"]: r for r in json.loads(sys.argv[1])["rows"]}
 c, s = rows["constant"], rows["smart"]
 passes = lambda r: ", ".join(f"{k} {v:.1f}" for k, v in r["pass_ms"].items())
 cm, sm = c["frame_ms"], s["frame_ms"]
-print(f"{sm / cm:.2f}\tconstant {cm:.1f} ms ({passes(c)})\tsmart {sm:.1f} ms ({passes(s)})")
+print(f"{cm:.3f} {sm:.3f}\t{sm / cm:.2f}\tconstant {cm:.1f} ms ({passes(c)})\tsmart {sm:.1f} ms ({passes(s)})")
 ' "$json")
-      ratio=${line%%$'\t'*}
-      echo -e "round $r\t$scene\t$b\tsmart/constant $line\tload $(cut -d' ' -f1 /proc/loadavg)"
+      times=${line%%$'\t'*}
+      echo -e "round $r\t$scene\t$b\tsmart/constant ${line#*$'\t'}\tload $(cut -d' ' -f1 /proc/loadavg)"
       key="$scene|$b"
-      if [ -z "${best[$key]:-}" ] || python3 -c "import sys; sys.exit(0 if $ratio < ${best[$key]} else 1)"; then best[$key]=$ratio; fi
+      best[$key]=$(python3 -c "
+import sys
+c, s = map(float, sys.argv[1].split()); old = sys.argv[2].split()
+if old: c, s = min(c, float(old[0])), min(s, float(old[1]))
+print(c, s)" "$times" "${best[$key]:-}")
     done
   done
 done
-echo "best smart/constant of $rounds round(s):"
+echo "best frame of each style over $rounds round(s), and smart / constant of the two:"
 for scene in $scenes; do
-  for b in "${builds[@]}"; do echo -e "  $scene\t$b\t${best[$scene|$b]}"; done
+  for b in "${builds[@]}"; do
+    read -r c s <<< "${best[$scene|$b]}"
+    python3 -c "import sys; c, s = float(sys.argv[3]), float(sys.argv[4]); print(f'  {sys.argv[1]}\t{sys.argv[2]}\tconstant {c:.1f} ms\tsmart {s:.1f} ms\t{s / c:.2f}')" "$scene" "$b" "$c" "$s"
+  done
 done
