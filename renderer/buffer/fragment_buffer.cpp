@@ -68,13 +68,8 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
     scatterProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_scatter.frag", defines);
     slotProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_slots.frag", defines);
-    // The sort reads the unsorted records as a buffer texture where any pool (at most maxBytes_) fits one.
-    GLint maxTexels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-    sortTexels_ = double(maxTexels) * 4.0 >= double(maxBytes_);
-    const auto sortDefines = sortTexels_ ? with(defines, "TLAB_UNSORTED_TEXELS", "1") : defines;
-    sortProgram_ = &shaders.compute("buffer/sort.comp", sortDefines);
-    sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(sortDefines, "TLAB_SLOTS", "1"));
+    sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
+    sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
   } else {
     listProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_list.frag", defines);
     sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
@@ -238,15 +233,6 @@ void FragmentBuffer::sortLists() {
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   glUniform1ui(program.uniform("uRegisterSortMax"), registerSort_ ? 16u : 0u);
-  const std::size_t words = (slotsUsed_ > 0 ? pixels() * slotsUsed_ : fragmentCount_) * layout_.stride;
-  if (sortTexels_ && words > 0) {  // (TLAB_UNSORTED_TEXELS: the records as one word a texel)
-    constexpr GLint kUnit = 0;
-    unsortedWords_ = gpu::makeTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(unsortedWords_.id(), GL_R32UI, (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).id(), 0,
-                         GLsizeiptr(words * 4));
-    glBindTextureUnit(kUnit, unsortedWords_.id());
-    glUniform1i(program.uniform("uUnsortedWords"), kUnit);
-  }
   gpu::dispatchLinear(pixels());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;

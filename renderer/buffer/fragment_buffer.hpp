@@ -130,8 +130,6 @@ class FragmentBuffer final : public Fill {
 
  private:
   bool registerSort_ = true;
-  bool sortTexels_ = false;        // the sort pass reads the unsorted records as a buffer texture
-  gpu::Texture unsortedWords_;     // that texture, made per sort (it views this frame's pool)
 };
 
 }  // namespace tlab::render

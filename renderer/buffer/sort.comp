@@ -5,21 +5,16 @@
 // never depends on thread scheduling.
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
 // TLAB_SLOTS: they sit in uSlots slots (buffer/fill_slots.frag): the i-th at i * uPixels + pixel.
-// TLAB_UNSORTED_TEXELS: the unsorted records are read as a buffer texture (one word a texel):
-// llvmpipe fetches a texel for all lanes at once, a storage buffer word lane by lane.
+// (Reading the unsorted records as a buffer texture instead was tried, issue #29: no faster on the
+// 16-layer stack, 0.7 ms slower on the torus.)
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint listHead[]; };
 layout(std430, binding = BIND_LIST_NEXT) readonly buffer ListNext { uint listNext[]; };
-#ifdef TLAB_UNSORTED_TEXELS
-uniform usamplerBuffer uUnsortedWords;
-uint unsortedWord(uint i) { return texelFetch(uUnsortedWords, int(i)).x; }
-#else
 layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer Frags { uint frags[]; };
 uint unsortedWord(uint i) { return frags[i]; }
-#endif
 layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer Sorted { uint sorted[]; };
 // Per fragment: (depth bits, source index). Positive floats order like their bit patterns, so
 // the keys compare as integers, and each pixel's keys sit together in memory.
