@@ -125,7 +125,8 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = std::to_string(sweeps) + " full sweep(s) of links, flags and value" +
                 (v.alphaImplicit ? " (Jacobi: and alpha before the step)" : "") + "; Eq. 9 on the frontier: " +
                 std::to_string(v.betaSeeds + v.gammaSeeds) + " seeds and " + std::to_string(v.betaReached + v.gammaReached) +
-                " fragments reached (beta and gamma), links and value read, flags and value written for those reached";
+                " fragments reached (beta and gamma): the links and value of each read, the flags of those reached read and "
+                  "their values written";
     } else {
       continue;
     }

@@ -52,6 +52,9 @@ class FragmentBuffer final : public Fill {
   // (compose/blend.comp, TLAB_FUSED; FillSpec::sortsInCompose): no sorted buffer is written.
   void setSortInCompose(bool on) { sortInCompose_ = on; }
   bool sorted() const { return sorted_; }
+  // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
+  // in the order buffer (off): the same sorted buffer either way (tests compare the two).
+  void setRegisterSort(bool on) { registerSort_ = on; }
 
   // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes,
   // sorting them first when this frame's build left them unsorted.
@@ -122,13 +125,6 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram* sortProgram_ = nullptr;
   const gpu::ShaderProgram* slotProgram_ = nullptr;
   const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
-
- public:
-  // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
-  // in the order buffer (off): the same sorted buffer either way (tests compare the two).
-  void setRegisterSort(bool on) { registerSort_ = on; }
-
- private:
   bool registerSort_ = true;
 };
 

@@ -37,13 +37,9 @@ void readOutputRect(const gpu::Buffer& output, core::Image& image, PixelRect rec
 
 PixelRect sceneFootprint(const FrameContext& frame) {
   const PixelRect whole{0, 0, frame.width, frame.height};
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
-  for (const auto& object : frame.scene.objects)
-    for (const auto& p : object.mesh.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
-    }
-  if (lo.x > hi.x) return PixelRect{};  // no vertex: no fragment
+  const std::optional<BoundingBox>& box = frame.gpuScene.bounds();  // computed once, at upload
+  if (!box) return PixelRect{};  // no vertex: no fragment
+  const glm::vec3 lo = box->lo, hi = box->hi;
   // The box is convex and, when in front of the eye (w > 0) everywhere, so is its perspective
   // image: the corners' window positions bound every vertex's, hence every triangle's.
   const glm::mat4 clip = frame.raster.projection * frame.raster.view;

@@ -20,7 +20,7 @@ gpu::Buffer makeBuffer(const std::vector<T>& v) {
 }
 }  // namespace
 
-GpuScene::GpuScene(const Scene& scene) {
+GpuScene::GpuScene(const Scene& scene) : bounds_(scene.boundingBox()) {
   std::vector<glm::vec3> pos, nor;
   std::vector<glm::vec2> st;
   std::vector<std::uint32_t> obj, comp, idx;

@@ -12,19 +12,25 @@ std::size_t Scene::triangleCount() const {
   return n;
 }
 
-BoundingSphere Scene::boundingSphere() const {
-  // Centre of the axis-aligned box, radius to the farthest vertex: simple and deterministic.
-  glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+std::optional<BoundingBox> Scene::boundingBox() const {
+  BoundingBox box{glm::vec3(std::numeric_limits<float>::max()), glm::vec3(std::numeric_limits<float>::lowest())};
   bool any = false;
   for (const auto& o : objects)
     for (const auto& p : o.mesh.positions) {
-      lo = glm::min(lo, p);
-      hi = glm::max(hi, p);
+      box.lo = glm::min(box.lo, p);
+      box.hi = glm::max(box.hi, p);
       any = true;
     }
-  if (!any) return {};
+  if (!any) return std::nullopt;
+  return box;
+}
+
+BoundingSphere Scene::boundingSphere() const {
+  // Centre of the axis-aligned box, radius to the farthest vertex: simple and deterministic.
+  const std::optional<BoundingBox> box = boundingBox();
+  if (!box) return {};
   BoundingSphere s;
-  s.center = 0.5f * (lo + hi);
+  s.center = 0.5f * (box->lo + box->hi);
   float r2 = 0.0f;
   for (const auto& o : objects)
     for (const auto& p : o.mesh.positions) r2 = std::max(r2, glm::dot(p - s.center, p - s.center));

@@ -25,6 +25,10 @@ enum class Role : std::uint32_t {
 constexpr Role operator|(Role a, Role b) { return Role(std::uint32_t(a) | std::uint32_t(b)); }
 constexpr bool hasRole(Role set, Role r) { return (std::uint32_t(set) & std::uint32_t(r)) != 0; }
 
+struct BoundingBox {
+  glm::vec3 lo{0.0f}, hi{0.0f};
+};
+
 struct SceneObject {
   std::string name;
   TriangleMesh mesh;                       // world space
@@ -45,6 +49,8 @@ struct Scene {
   bool revealAllObjects = false;
 
   std::size_t triangleCount() const;
+  // The axis-aligned box of every vertex; nothing when the scene has no vertex.
+  std::optional<BoundingBox> boundingBox() const;
   BoundingSphere boundingSphere() const;
 };
 

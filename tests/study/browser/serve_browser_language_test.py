@@ -6,7 +6,8 @@ the English ones, and the overridden key shows the file's text.
 The expected texts are the table `tlab texts` prints for the file (German, with the override);
 the English table (`tlab texts FILE --language en`) gives the words that must not appear. The
 participant really clicks and types: welcome, consent, the instructions, a refused answer (0) and
-the corrected one (1), the debrief with its completion code. Uses the helpers of serve_browser_test.py.
+the corrected one (1), the debrief with its completion code; the database then holds the
+corrected answer (1) and the refused reply. Uses the helpers of serve_browser_test.py.
 
     tests/study/browser/serve_browser_language_test.py --tlab build/bin/tlab
 """
@@ -105,9 +106,26 @@ def german_session(tlab, experiment, p, server):
     p.screenshot("de-already-completed")
 
 
+def check_stored(tlab, server, db, work):
+    """The refused 0 is an event, the corrected 1 the trial's answer."""
+    server.stop()
+    result = subprocess.run([tlab, "export", db, "--csv", str(work / "csv")], capture_output=True, text=True, timeout=120)
+    check(result.returncode == 0, f"tlab export failed: {result.stderr}")
+    trials = base.read_csv(work / "csv", "trials.csv")
+    check([(t["participant"], t["raw_answer"], t["answered"]) for t in trials] == [("teilnehmer-1", "1", "1")],
+          f"the stored trial: {trials}")
+    refused = [e for e in base.read_csv(work / "csv", "events.csv") if e["kind"] == "refused-reply"]
+    check(len(refused) == 1, f"refused replies (expected the 0): {refused}")
+
+
+def german(args, p, server, db, work):
+    german_session(args.tlab, args.experiment, p, server)
+    check_stored(args.tlab, server, db, work)
+
+
 def main():
     args = base.parse_arguments(__doc__.split("\n")[0], "online_de.toml")
-    return base.run_in_browser(args, lambda p, server, db, work: german_session(args.tlab, args.experiment, p, server))
+    return base.run_in_browser(args, lambda p, server, db, work: german(args, p, server, db, work))
 
 
 if __name__ == "__main__":
