@@ -14,15 +14,17 @@ glm::dvec2 ScreenLayout::toStimulus(glm::dvec2 s) const {
 }
 
 int defaultHeaderHeight(int height) { return std::max(48, height / 12); }
+int defaultAnswerHeight(int height) { return std::max(96, height / 7); }
 
-ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeightWanted) {
+ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeightWanted,
+                              int answerHeightWanted) {
   ScreenLayout l;
   l.width = width;
   l.height = height;
   l.stimulusWidth = std::max(stimulusWidth, 1);
   l.stimulusHeight = std::max(stimulusHeight, 1);
   const int headerHeight = std::max(defaultHeaderHeight(height), headerHeightWanted);
-  const int answerHeight = std::max(96, height / 7), margin = 12;
+  const int answerHeight = std::max(defaultAnswerHeight(height), answerHeightWanted), margin = 12;
   l.header = {0, 0, width, headerHeight};
   l.answer = {0, height - answerHeight, width, answerHeight};
   const Rect area{margin, headerHeight + margin, width - 2 * margin, height - headerHeight - answerHeight - 2 * margin};
@@ -35,9 +37,11 @@ ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stim
   return l;
 }
 
-ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight) {
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight,
+                                      int answerHeight) {
   constexpr int gap = 12;
-  ScreenLayout l = makeScreenLayout(width, height, 2 * std::max(stimulusWidth, 1) + gap, std::max(stimulusHeight, 1), headerHeight);
+  ScreenLayout l = makeScreenLayout(width, height, 2 * std::max(stimulusWidth, 1) + gap, std::max(stimulusHeight, 1), headerHeight,
+                                    answerHeight);
   const int half = (l.stimulus.width - gap * l.stimulus.width / l.stimulusWidth) / 2;
   l.plan = Rect{l.stimulus.x + l.stimulus.width - half, l.stimulus.y, half, l.stimulus.height};
   l.stimulus.width = half;

@@ -31,12 +31,16 @@ struct ScreenLayout {
   glm::dvec2 toStimulus(glm::dvec2 screenPixel) const;
 };
 
-// The header is max(48, height / 12) pixels tall, or `headerHeight` when that is more (a long question).
-ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0);
+// The header is max(48, height / 12) pixels tall, or `headerHeight` when that is more (a long
+// question); the answer band max(96, height / 7), or `answerHeight` when that is more (long hints).
+ScreenLayout makeScreenLayout(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0,
+                              int answerHeight = 0);
 // The stimulus on the left, a floor plan of the same size on the right.
-ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0);
-// The header's height without a long question.
+ScreenLayout makeScreenLayoutWithPlan(int width, int height, int stimulusWidth, int stimulusHeight, int headerHeight = 0,
+                                      int answerHeight = 0);
+// The header's and the answer band's heights without long texts.
 int defaultHeaderHeight(int height);
+int defaultAnswerHeight(int height);
 
 // A row of equal buttons centred in `band`.
 std::vector<Button> buttonRow(const Rect& band, const std::vector<std::string>& labels, int buttonWidth = 64, int gap = 12);

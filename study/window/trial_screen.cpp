@@ -8,6 +8,7 @@
 #include "study/window/window_style.hpp"
 #include "study/window/gauge_drawing.hpp"
 #include "study/window/trial_header.hpp"
+#include "study/window/answer_band.hpp"
 
 namespace tlab::study {
 
@@ -38,15 +39,26 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
                                            {{"index", std::to_string(view.index)}, {"total", std::to_string(view.total)}});  // counted apart
   const TrialHeader header =
       layoutTrialHeader(painter_, questionWording(q, texts), counter, base_.width(), defaultHeaderHeight(base_.height()));
-  layout_ = plan ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height)
-                 : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height);
   // Interactive trials render the scene live in the stimulus area (Elmqvist: orbit / walk).
   if (view.plan.navigation != Navigation::None && view.prepared.scene)
     live_.emplace(view.prepared.scene, view.plan.stimulus, view.plan.navigation, view.prepared.camera);
+  // How to answer here (the window also takes typed labels), by the answer's kind; how to move
+  // in the scene below it.
+  band_ = layoutAnswerBand(painter_, texts.text(std::string("window_answer.") + form_.name()),
+                           live_ ? texts.text(std::string("live.") + navigationName(view.plan.navigation)) : std::string(),
+                           !widget_.buttons.empty(), base_.width(), defaultAnswerHeight(base_.height()));
+  layout_ = plan ? makeScreenLayoutWithPlan(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height,
+                                            band_.height)
+                 : makeScreenLayout(base_.width(), base_.height(), stimulus.width(), stimulus.height(), header.height,
+                                    band_.height);
+  answerWord_ = texts.text("window.answer");
+  selectedWord_ = texts.text("window.selected");
+  noneWord_ = texts.text("window.selected_none");
   base_.fillRect(layout_.header, kBand);
   base_.fillRect(layout_.answer, kBand);
   base_.drawCanvas(stimulus, layout_.stimulus);
   layoutJson_ = {{"stimulus", {layout_.stimulus.x, layout_.stimulus.y, layout_.stimulus.width, layout_.stimulus.height}},
+                 {"answer", {layout_.answer.x, layout_.answer.y, layout_.answer.width, layout_.answer.height}},
                  {"canvas", {base_.width(), base_.height()}}};
   if (plan) {
     base_.drawCanvas(*view.prepared.floorPlanImage, *layout_.plan);
@@ -57,10 +69,8 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     painter_.drawLine(base_, header.questionLines[i], kHeaderMargin, kHeaderTop + int(i) * painter_.lineHeight(kQuestionPixels),
                       kQuestionPixels, kInk);
   painter_.drawLine(base_, counter, header.counterX, kHeaderTop, kCounterPixels, kMuted);
-  // How to answer here (the window also takes typed labels), by the answer's kind.
-  painter_.drawLine(base_, texts.text(std::string("window_answer.") + form_.name()), 16, layout_.answer.y + 8, 18.0f, kMuted);
-  if (live_)  // how to move in the scene, below how to answer
-    painter_.drawLine(base_, texts.text(std::string("live.") + navigationName(view.plan.navigation)), 16, layout_.answer.y + 32, 16.0f, kMuted);
+  drawLines(base_, band_.hintLines, band_.hintTop, kHintPixels, kMuted);
+  drawLines(base_, band_.liveLines, band_.liveTop, kLiveHintPixels, kMuted);
   for (const auto& p : widget_.marks) {
     labels_.push_back(p.label);
     screenPoints_.push_back(layout_.toScreen(p.pixel));
@@ -73,6 +83,11 @@ TrialScreen::TrialScreen(const TrialView& view, Canvas blank, TextPainter& paint
     const glm::dvec2 centre = layout_.toScreen(widget_.at);
     layoutJson_["gauge"] = {{"centre", {centre.x, centre.y}}, {"radius", gaugeRadius()}, {"start", {gauge_.x, gauge_.y}}};
   }
+}
+
+void TrialScreen::drawLines(Canvas& c, const std::vector<std::string>& lines, int top, float pixels, Rgba color) {
+  for (std::size_t i = 0; i < lines.size(); ++i)
+    painter_.drawLine(c, lines[i], kAnswerMargin, layout_.answer.y + top + int(i) * painter_.lineHeight(pixels), pixels, color);
 }
 
 double TrialScreen::gaugeRadius() const { return widget_.radiusPixels * layout_.stimulus.width / double(layout_.stimulusWidth); }
@@ -93,9 +108,10 @@ Canvas TrialScreen::frame(double secondsLeft) {
   for (const auto& b : buttons_) drawButton(c, painter_, b, false);
   if (widget_.kind == WidgetKind::Gauge) drawGauge(c, layout_.toScreen(widget_.at), gaugeRadius(), gauge_.x, gauge_.y);
   const bool showSelection = widget_.kind == WidgetKind::PickLabels && typed_.empty();
-  const std::string shown = showSelection ? "selected: " + (selected_.empty() ? std::string("none") : selectedText()) : "answer: " + typed_ + "_";
-  painter_.drawLine(c, shown, 16, layout_.answer.y + 40, 22.0f, kInk);
-  if (!error_.empty()) painter_.drawLine(c, error_, 16, layout_.answer.y + 70, 16.0f, kWarn);
+  const std::string shown = showSelection ? selectedWord_ + " " + (selected_.empty() ? noneWord_ : selectedText())
+                                          : answerWord_ + " " + typed_ + "_";
+  painter_.drawLine(c, shown, kAnswerMargin, layout_.answer.y + band_.answerTop, kAnswerPixels, kInk);
+  drawLines(c, refusal_, band_.refusalTop, kRefusalPixels, kWarn);
   dirty_ = false;
   return c;
 }
@@ -203,7 +219,7 @@ std::optional<LiveFrame> TrialScreen::shownLiveFrame(std::int64_t shownNs) {
 }
 
 void TrialScreen::rejected(const std::string& error) {
-  error_ = error;
+  refusal_ = refusalLines(painter_, error, band_);
   typed_.clear();
   dirty_ = true;
 }

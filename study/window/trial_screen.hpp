@@ -17,6 +17,7 @@
 #include "study/run/frame_log.hpp"
 #include "study/run/live_view.hpp"
 #include "study/run/responder.hpp"
+#include "study/window/answer_band.hpp"
 #include "study/window/screen_layout.hpp"
 #include "study/run/text_painter.hpp"
 #include "tasks/answer_form.hpp"
@@ -59,19 +60,24 @@ class TrialScreen {
   std::optional<std::string> clickFloorPlan(double x, double y) const;
   std::string selectedText() const;
   double gaugeRadius() const;  // in screen pixels
+  // Lines from the answer band's row at `top`, at the band's left margin.
+  void drawLines(Canvas& c, const std::vector<std::string>& lines, int top, float pixels, Rgba color);
 
   const TrialView& view_;
   const tasks::AnswerForm& form_;
   tasks::Widget widget_;
   TextPainter& painter_;
   ScreenLayout layout_;
+  AnswerBand band_;
+  std::string answerWord_, selectedWord_, noneWord_;  // "Answer:", "Selected:", "none" in the session's language
   Canvas base_;
   std::optional<LiveView> live_;
   std::vector<std::string> labels_;
   std::vector<glm::dvec2> screenPoints_;
   std::vector<Button> buttons_;
   nlohmann::json layoutJson_;
-  std::string typed_, error_;
+  std::string typed_;
+  std::vector<std::string> refusal_;  // the last refusal, as the band shows it
   std::set<std::string> selected_;
   glm::dvec2 gauge_{0.0};         // (slant, tilt) in degrees
   glm::dvec2 gaugePointer_{0.0};  // where the drag is, in screen pixels

@@ -102,6 +102,14 @@ void expectSessionRecords(const std::string& db) {
   while (onsets.step()) {
     const auto detail = nlohmann::json::parse(onsets.text(0));
     EXPECT_GT(detail["present_ms"].get<double>(), 0.0);
+    // The answer band spans the window's bottom, below the stimulus (and the plan), and holds the buttons.
+    const auto& band = detail["answer"];
+    const int bandTop = band[1].get<int>(), canvasHeight = detail["canvas"][1].get<int>();
+    EXPECT_EQ(bandTop + band[3].get<int>(), canvasHeight);
+    EXPECT_LE(detail["stimulus"][1].get<int>() + detail["stimulus"][3].get<int>(), bandTop);
+    if (detail.contains("plan")) EXPECT_LE(detail["plan"][1].get<int>() + detail["plan"][3].get<int>(), bandTop);
+    if (detail.contains("buttons"))
+      for (const auto& [label, centre] : detail["buttons"].items()) EXPECT_GT(centre[1].get<double>(), bandTop) << label;
     ++onsetCount;
   }
   EXPECT_EQ(onsetCount, 3);
