@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Hashes the pictures the renderer produces — every style on the six built-in scenes, smart
-# transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, several
-# components), `--fill list`, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
+# transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, the profile
+# modifiers of Eqs. 10-11, several components), `--fill list`, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
 # the live views' `builtin:abstract?seed=1`, any glTF meshes
 # given in $TLAB_HASH_MESHES, and every PNG of `tlab figures` — so that a change to the fills,
 # the sort, the connect pass or the compositors can prove its pictures byte-identical:
@@ -34,6 +34,8 @@ for scene in $scenes; do
   render "smart-nohalos-$scene" "builtin:$scene" --style smart --set halos=off --size 160x128
   render "smart-nosilhouettes-$scene" "builtin:$scene" --style smart --set silhouettes=off --size 160x128
   render "smart-diffusion-$scene" "builtin:$scene" --style smart --set spread=diffusion --set wz=4 --size 160x128
+  render "smart-pow-$scene" "builtin:$scene" --style smart --set modifier=pow --set p=2 --size 160x128
+  render "smart-nomodifier-$scene" "builtin:$scene" --style smart --set modifier=none --size 160x128
 done
 for scene in 'torus?triangles=100000' 'quad-stack?n=16'; do
   for style in constant smart; do render "$style-512-$scene" "builtin:$scene" --style "$style" --size 512x512; done

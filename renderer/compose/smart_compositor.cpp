@@ -1,5 +1,7 @@
 #include "renderer/compose/smart_compositor.hpp"
 
+#include <string>
+
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/buffer/fragment_buffer.hpp"
 
@@ -9,6 +11,7 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   const FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   gpu::ShaderDefines defines = buffer.layout().defines();
   for (const auto& d : fields.defines()) defines.push_back(d);
+  defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
   buffer.bindSorted();
@@ -17,7 +20,6 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
-  glUniform1i(program.uniform("uModifier"), settings.modifier);
   glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
   dispatchCompose(frame, output, buffer.pixels(), "compose/smart_compose.comp");
 }

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <numbers>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -117,38 +118,51 @@ TEST(BoundaryConditions, CrossSectionLikeFig8) {
   EXPECT_EQ(flags[ordinary], 7u);
 }
 
-// Alg. 3 with Eq. 10 evaluated on the host from the fields and colours, against the GPU image.
-TEST(SmartCompositing, MatchesAlgorithm3OnHandComputedLists) {
-  const std::map<std::string, std::string> settings = {
-      {"iterations", "3"}, {"lighting", "none"}, {"modifier", "exp"}, {"p", "3"}, {"s", "0.4"}};
-  SmartRig rig(occluderScene(), 64, 16, settings);
-  DiffusionSolver(rig.shaders, rig.smart).solve(*rig.fields);
-  const auto alpha = rig.fields->read(Field::Alpha), beta = rig.fields->read(Field::Beta),
-             gamma = rig.fields->read(Field::Gamma);
-  Renderer renderer(occluderScene());
-  RenderRequest r;
-  r.width = 64;
-  r.height = 16;
-  r.style = "smart";
-  r.settings = settings;
-  const tlab::core::Image img = renderer.render(r);
-  const auto modify = [](double u) { return (std::exp(-3 * (1 - u)) - std::exp(-3.0)) / (1 - std::exp(-3.0)); };
-  const glm::vec3 bg = rig.scene.background;
-  for (int x : {30, 31, 32, 33, 40}) {
-    const int glY = 8;
-    const std::size_t p = std::size_t(glY) * 64 + x;
-    glm::dvec3 c(0);
-    double T = 1;
-    for (std::uint32_t l = 0; l < rig.counts[p]; ++l) {
-      const auto f = rig.heads[p] + l;
-      const glm::dvec3 ci = glm::dvec3(l == 0 && x < 32 ? rig.scene.objects[1].frontColor : rig.scene.objects[0].frontColor);
-      const double aHat = (1 - modify(gamma[f])) * (alpha[f] + (1 - alpha[f]) * modify(beta[f]));
-      c += T * aHat * ci;
-      T *= 1 - aHat;
+// Alg. 3 with each profile modifier (none, Eq. 10, Eq. 11) evaluated on the host from the fields
+// and colours, against the GPU image (the occluder's edge gives β = 1 and γ = 1 beside fragments
+// at 0, so both the formula and the exact 0 of a fragment at 0 are seen).
+TEST(SmartCompositing, MatchesAlgorithm3OnHandComputedListsForEveryModifier) {
+  const std::map<std::string, std::function<double(double)>> modifiers = {
+      {"none", [](double u) { return u; }},
+      {"exp", [](double u) { return (std::exp(-3 * (1 - u)) - std::exp(-3.0)) / (1 - std::exp(-3.0)); }},  // Eq. 10, p = 3
+      {"pow", [](double u) { return std::pow(u, 3.0); }}};                                                  // Eq. 11, p = 3
+  for (const auto& [name, modify] : modifiers) {
+    SCOPED_TRACE(name);
+    const std::map<std::string, std::string> settings = {
+        {"iterations", "3"}, {"lighting", "none"}, {"modifier", name}, {"p", "3"}, {"s", "0.4"}};
+    SmartRig rig(occluderScene(), 64, 16, settings);
+    DiffusionSolver(rig.shaders, rig.smart).solve(*rig.fields);
+    const auto alpha = rig.fields->read(Field::Alpha), beta = rig.fields->read(Field::Beta),
+               gamma = rig.fields->read(Field::Gamma);
+    Renderer renderer(occluderScene());
+    RenderRequest r;
+    r.width = 64;
+    r.height = 16;
+    r.style = "smart";
+    r.settings = settings;
+    const tlab::core::Image img = renderer.render(r);
+    const glm::vec3 bg = rig.scene.background;
+    int seenZero = 0, seenOne = 0;
+    for (int x : {30, 31, 32, 33, 40}) {
+      const int glY = 8;
+      const std::size_t p = std::size_t(glY) * 64 + x;
+      glm::dvec3 c(0);
+      double T = 1;
+      for (std::uint32_t l = 0; l < rig.counts[p]; ++l) {
+        const auto f = rig.heads[p] + l;
+        seenZero += beta[f] == 0.0f ? 1 : 0;
+        seenOne += beta[f] == 1.0f || gamma[f] == 1.0f ? 1 : 0;
+        const glm::dvec3 ci = glm::dvec3(l == 0 && x < 32 ? rig.scene.objects[1].frontColor : rig.scene.objects[0].frontColor);
+        const double aHat = (1 - modify(gamma[f])) * (alpha[f] + (1 - alpha[f]) * modify(beta[f]));
+        c += T * aHat * ci;
+        T *= 1 - aHat;
+      }
+      c += T * glm::dvec3(bg);
+      const glm::vec4 got = img.at(x, 16 - 1 - glY);
+      for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], c[k], 1.0 / 255.0 + 1e-6) << "x " << x << " channel " << k;
     }
-    c += T * glm::dvec3(bg);
-    const glm::vec4 got = img.at(x, 16 - 1 - glY);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(got[k], c[k], 1.0 / 255.0 + 1e-6) << "x " << x << " channel " << k;
+    EXPECT_GT(seenZero, 0);
+    EXPECT_GT(seenOne, 0);
   }
 }
 
