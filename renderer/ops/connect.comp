@@ -68,14 +68,6 @@ uvec4 linksOf(uint f) { return texelFetch(uLinkTexels, int(f)); }
 #else
 uvec4 linksOf(uint f) { return links[f]; }
 #endif
-#if TLAB_PHASE == 1 && defined(TLAB_LINK_IMAGE)
-// Phase 1 stores link words through an R32UI image over the links buffer (one store for all lanes,
-// where a storage buffer is written lane by lane).
-layout(r32ui, binding = 0) uniform writeonly uimageBuffer uLinkWords;
-void storeLink(uint f, int k, uint link) { imageStore(uLinkWords, int(4u * f) + k, uvec4(link)); }
-#else
-void storeLink(uint f, int k, uint link) { links[f][k] = link; }
-#endif
 #if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
@@ -350,12 +342,12 @@ void main() {
         fb = fastNeighbor(bCur[i], L, bPrev[i], bNext[i], b[i].count, head, n, aCur, aPrev.z, aNext.z,
                           -kPairDirections[i], b[i].step[i]);
       listed[i] = listed[i] || fa == UNRESOLVED || fb == UNRESOLVED;
-      if (L < n) storeLink(head + L, 2 * i + 1, settledLink(head + L, fa, fb));
-      if (L < b[i].count) storeLink(b[i].head + L, 2 * i, settledLink(b[i].head + L, fb, fa));
+      if (L < n) links[head + L][2 * i + 1] = settledLink(head + L, fa, fb);
+      if (L < b[i].count) links[b[i].head + L][2 * i] = settledLink(b[i].head + L, fb, fa);
     }
     // Beyond the left and bottom edges no pair writes these.
-    if (L < n && xy.x == 0) storeLink(head + L, 0, NO_NEIGHBOR);
-    if (L < n && xy.y == 0) storeLink(head + L, 2, NO_NEIGHBOR);
+    if (L < n && xy.x == 0) links[head + L][0] = NO_NEIGHBOR;
+    if (L < n && xy.y == 0) links[head + L][2] = NO_NEIGHBOR;
   }
   for (int i = 0; i < 2; ++i)
     if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);

@@ -55,25 +55,19 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
         TransparencyFields::clearList(fields.frontier(f));
         fields.frontier(f).bindBase(GL_SHADER_STORAGE_BUFFER, f == Field::Beta ? kSeedsBeta : kSeedsGamma);
       }
-  // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS),
-  // and phase 1 writes them through an R32UI image of one texel per link (TLAB_LINK_IMAGE).
+  // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
   constexpr GLint kLinkTexelsUnit = 1;
-  constexpr GLuint kLinkImageUnit = 0;
-  gpu::Texture linkTexels, linkWords;
-  if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && 4.0 * double(buffer.fragmentCount()) <= double(maxTexels)) {
+  gpu::Texture linkTexels;
+  if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
     linkTexels = gpu::makeTexture(GL_TEXTURE_BUFFER);
     glTextureBufferRange(linkTexels.id(), GL_RGBA32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
     glBindTextureUnit(kLinkTexelsUnit, linkTexels.id());
-    linkWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(linkWords.id(), GL_R32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
-    glBindImageTexture(kLinkImageUnit, linkWords.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
   }
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
     if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
-    if (linkWords && phase[0] == '1') phaseDefines.emplace_back("TLAB_LINK_IMAGE", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
     program.use();
     glUniform1i(program.uniform("uWidth"), buffer.width());
