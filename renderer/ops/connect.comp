@@ -68,9 +68,14 @@ uvec4 linksOf(uint f) { return texelFetch(uLinkTexels, int(f)); }
 #else
 uvec4 linksOf(uint f) { return links[f]; }
 #endif
-#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
+#if defined(TLAB_GRADIENT_PAIR) && defined(TLAB_SORTED_TEXELS)
+// The same records two words a texel (RG32UI): the gradient in one fetch (stride and offset are even).
+uniform usamplerBuffer uSortedPairs;
+uvec2 sortedPair(uint i) { return texelFetch(uSortedPairs, int(i)).xy; }
+#elif defined(TLAB_GRADIENT_PAIR)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
+uvec2 sortedPair(uint i) { return sortedPairs[i]; }
 #endif
 uniform int uWidth;
 uniform int uHeight;
@@ -84,8 +89,8 @@ float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH)
 vec3 normalOf(uint f) { return decodeNormal(sortedWord(fragWord(f, TLAB_OFF_NORMAL))); }
 vec2 gradientOf(uint f) {
   uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
-#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
-  return uintBitsToFloat(sortedPairs[o >> 1]);
+#ifdef TLAB_GRADIENT_PAIR
+  return uintBitsToFloat(sortedPair(o >> 1));
 #else
   return vec2(uintBitsToFloat(sortedWord(o)), uintBitsToFloat(sortedWord(o + 1u)));
 #endif

@@ -18,14 +18,15 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kConnectSteps = 27;  // BIND_CONNECT_STEPS
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
-  constexpr GLint kSortedWordsUnit = 0;
+  constexpr GLint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = layout.defines();
   for (const auto& d : fields.defines()) defines.push_back(d);
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
-  if (layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
+  const bool gradientPair = layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0;
+  if (gradientPair) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -38,7 +39,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   GLint maxTexels = 0, sortedId = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
-  gpu::Texture sortedWords;
+  gpu::Texture sortedWords, sortedPairs;
   if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
     sortedWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
@@ -46,6 +47,12 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
                          GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
     glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
+    if (gradientPair) {  // and two words a texel, for the gradient
+      sortedPairs = gpu::makeTexture(GL_TEXTURE_BUFFER);
+      glTextureBufferRange(sortedPairs.id(), GL_RG32UI, GLuint(sortedId), 0,
+                           GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
+      glBindTextureUnit(kSortedPairsUnit, sortedPairs.id());
+    }
   }
   // Eq. 9 spreads only from fragments above 0: phase 2 lists them for the solve's frontier.
   const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
@@ -78,6 +85,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
+    glUniform1i(program.uniform("uSortedPairs"), kSortedPairsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
     gpu::dispatchLinear(items);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
