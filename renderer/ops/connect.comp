@@ -18,7 +18,8 @@
 //     adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the boundary conditions of Sec. 5.3 on β and γ with
 //     their b flags; with TLAB_LIST_SEEDS, the fragments where β and γ start above 0 (Eq. 9's
 //     seeds) in lists for the solve's frontier.
-// Over 300 lines: the phases share ε, the searches and the fast path, so they stay one shader.
+// Over 300 lines: the phases share ε, the searches and the fast path, so they stay one shader;
+// main, over 60 lines, holds one branch per phase (TLAB_PHASE), each of them shorter.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
