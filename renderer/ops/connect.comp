@@ -303,90 +303,60 @@ List listAt(ivec2 q) {
   return l;
 }
 
-#if TLAB_PHASE == 1
-// Phase 1 connects a column of kRows pixels per invocation (TLAB_CONNECT_ROWS): list r < kRows is
-// the pixel r rows above the origin, list kRows + r the pixel right of it, list 2 kRows the pixel
-// above the column. Pair r joins list r with its right neighbour, pair kRows + r with the pixel
-// above it (list r + 1, or 2 kRows at the top), so that each list is read once for kRows
-// pixels' 2 kRows pairs.
-const int kRows = TLAB_CONNECT_ROWS;
-const int kLists = 2 * kRows + 1, kPairs = 2 * kRows;
-uint blockRows() { return uint((uHeight + kRows - 1) / kRows); }
-int pairFirst(int p) { return p % kRows; }
-int pairSecond(int p) { return p < kRows ? kRows + p : (p + 1 < kPairs ? p - kRows + 1 : 2 * kRows); }
-int pairAxis(int p) { return p < kRows ? 0 : 1; }
-
-// Walks the lists with the layers next to the current one in registers: each layer's record is
-// read once by this invocation, and each pair's two answers for a layer settle the mutual test.
-void connectBlock(ivec2 origin) {
-  List l[kLists];
-  for (int i = 0; i < kLists; ++i)
-    l[i] = listAt(origin + (i < kRows ? ivec2(0, i) : i < 2 * kRows ? ivec2(1, i - kRows) : ivec2(0, kRows)));
-  uint layers = 0u;
-  for (int i = 0; i < kLists; ++i) layers = max(layers, l[i].count);
-  Surfel prev[kLists], cur[kLists], next[kLists];
-  for (int i = 0; i < kLists; ++i) {
-    next[i] = l[i].count > 0u ? surfel(l[i].head) : Surfel(0.0, vec2(0.0), vec3(0.0), 0u);
-    cur[i] = next[i];
-  }
-  bool listed[kPairs];
-  for (int p = 0; p < kPairs; ++p) listed[p] = false;
-  for (uint L = 0u; L < layers; ++L) {
-    for (int i = 0; i < kLists; ++i) {
-      prev[i] = cur[i];
-      cur[i] = next[i];
-      if (L + 1u < l[i].count) next[i] = surfel(l[i].head + L + 1u);
-    }
-    for (int p = 0; p < kPairs; ++p) {
-      int a = pairFirst(p), b = pairSecond(p), axis = pairAxis(p);
-      uint fa = NO_NEIGHBOR, fb = NO_NEIGHBOR;
-      if (L < l[a].count)
-        fa = fastNeighbor(cur[a], L, prev[a], next[a], l[a].count, l[b].head, l[b].count, cur[b], prev[b].z, next[b].z,
-                          kPairDirections[axis], l[a].step[axis]);
-      if (L < l[b].count)
-        fb = fastNeighbor(cur[b], L, prev[b], next[b], l[b].count, l[a].head, l[a].count, cur[a], prev[a].z, next[a].z,
-                          -kPairDirections[axis], l[b].step[axis]);
-      listed[p] = listed[p] || fa == UNRESOLVED || fb == UNRESOLVED;
-      if (L < l[a].count) links[l[a].head + L][2 * axis + 1] = settledLink(l[a].head + L, fa, fb);
-      if (L < l[b].count) links[l[b].head + L][2 * axis] = settledLink(l[b].head + L, fb, fa);
-    }
-    // Beyond the left and bottom edges no pair writes these.
-    for (int r = 0; r < kRows; ++r)
-      if (L < l[r].count && origin.x == 0) links[l[r].head + L][0] = NO_NEIGHBOR;
-    if (L < l[0].count && origin.y == 0) links[l[0].head + L][2] = NO_NEIGHBOR;
-  }
-  for (int p = 0; p < kPairs; ++p)
-    if (listed[p]) {
-      ivec2 q = origin + ivec2(0, pairFirst(p));
-      workPairs[atomicAdd(workCount, 1u)] = 2u * uint(q.y * uWidth + q.x) + uint(pairAxis(p));
-    }
-}
-#endif
-
 void main() {
 #if TLAB_PHASE == 3
   uint item = linearInvocation();
   if (item >= workCount) return;
   uint pixel = workPairs[item] >> 1u;
-#elif TLAB_PHASE == 1
-  uint block = linearInvocation();  // a column of kRows pixels
-  if (block >= uint(uWidth) * blockRows()) return;
-  ivec2 xy = ivec2(int(block % uint(uWidth)), int(block / uint(uWidth)) * kRows);
 #else
   uint pixel = linearInvocation();
   if (pixel >= uint(uWidth * uHeight)) return;
 #endif
-#if TLAB_PHASE != 1
   uint n = pixelCount[pixel];
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
-#endif
 #if TLAB_PHASE == 0
   vec2 maxStep = vec2(0.0);  // max |d·∇z| over this list along x, y
   for (uint layer = 0u; layer < n; ++layer) maxStep = max(maxStep, abs(gradientOf(head + layer)));
   if (n > 0u) steps[pixel] = maxStep;
 #elif TLAB_PHASE == 1
-  connectBlock(xy);
+  // Walks the three lists (A, B to its right, B above) with the layers next to the current one in
+  // registers: each layer's record is read once by this invocation.
+  List a = listAt(xy), b[2] = List[2](listAt(xy + kPairDirections[0]), listAt(xy + kPairDirections[1]));
+  uint layers = max(n, max(b[0].count, b[1].count));
+  Surfel aPrev, aCur, aNext, bPrev[2], bCur[2], bNext[2];
+  aNext = n > 0u ? surfel(head) : Surfel(0.0, vec2(0.0), vec3(0.0), 0u);
+  aCur = aNext;
+  for (int i = 0; i < 2; ++i) {
+    bNext[i] = b[i].count > 0u ? surfel(b[i].head) : aNext;
+    bCur[i] = bNext[i];
+  }
+  bool listed[2] = bool[2](false, false);
+  for (uint L = 0u; L < layers; ++L) {
+    aPrev = aCur;
+    aCur = aNext;
+    if (L + 1u < n) aNext = surfel(head + L + 1u);
+    for (int i = 0; i < 2; ++i) {
+      bPrev[i] = bCur[i];
+      bCur[i] = bNext[i];
+      if (L + 1u < b[i].count) bNext[i] = surfel(b[i].head + L + 1u);
+      uint fa = NO_NEIGHBOR, fb = NO_NEIGHBOR;
+      if (L < n)
+        fa = fastNeighbor(aCur, L, aPrev, aNext, n, b[i].head, b[i].count, bCur[i], bPrev[i].z, bNext[i].z,
+                          kPairDirections[i], a.step[i]);
+      if (L < b[i].count)
+        fb = fastNeighbor(bCur[i], L, bPrev[i], bNext[i], b[i].count, head, n, aCur, aPrev.z, aNext.z,
+                          -kPairDirections[i], b[i].step[i]);
+      listed[i] = listed[i] || fa == UNRESOLVED || fb == UNRESOLVED;
+      if (L < n) links[head + L][2 * i + 1] = settledLink(head + L, fa, fb);
+      if (L < b[i].count) links[b[i].head + L][2 * i] = settledLink(b[i].head + L, fb, fa);
+    }
+    // Beyond the left and bottom edges no pair writes these.
+    if (L < n && xy.x == 0) links[head + L][0] = NO_NEIGHBOR;
+    if (L < n && xy.y == 0) links[head + L][2] = NO_NEIGHBOR;
+  }
+  for (int i = 0; i < 2; ++i)
+    if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);
 #elif TLAB_PHASE == 3
   int i = int(workPairs[item] & 1u);
   List a = listAt(xy), b = listAt(xy + kPairDirections[i]);

@@ -1,5 +1,4 @@
 #include "renderer/ops/connect_pass.hpp"
-#include <string>
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_error.hpp"
@@ -18,7 +17,6 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
                              float objectRadius, TransparencyFields& fields, NeighborSearch search) {
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kConnectSteps = 27;  // BIND_CONNECT_STEPS
-  constexpr int kConnectRows = 2;  // pixels per invocation of phase 1 (TLAB_CONNECT_ROWS)
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
   constexpr GLint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
@@ -75,7 +73,6 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
-    phaseDefines.emplace_back("TLAB_CONNECT_ROWS", std::to_string(kConnectRows));
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
     if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
@@ -97,7 +94,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // Phase 0 finds each list's maxStep; phase 1 settles most pairs of adjacent pixels; phase 3
   // searches the pairs it listed; phase 2 sets the fields from the (mutual) links.
   run("0", buffer.pixels());
-  run("1", std::size_t(buffer.width()) * std::size_t((buffer.height() + kConnectRows - 1) / kConnectRows));
+  run("1", buffer.pixels());
   std::uint32_t listed = 0;
   work.download(&listed, sizeof listed);
   if (listed > 0) run("3", listed);
