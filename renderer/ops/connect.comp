@@ -1,18 +1,25 @@
 #version 450 core
-// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), one invocation per pixel, in three dispatches:
-//  TLAB_PHASE 1: for every fragment, its geodesic neighbour in each of the 4 adjacent pixels by
-//     the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only when no other fragment of
-//     its own list matches that candidate better (Alg. 2) — where the answer follows from the
-//     fragment's own layer and the layers next to it in both lists (the fast path below); other
-//     links are left UNRESOLVED and their pixel is appended to a work list;
-//  TLAB_PHASE 3: the full bounded search (findNeighbor) for the UNRESOLVED links of the listed
-//     pixels only;
-//  TLAB_PHASE 2: links kept only when both fragments chose each other (ε is not symmetric: εz
-//     uses the first fragment's gradient), so the graph Laplacian of the diffusion is symmetric;
-//     then the initial α, constant s (Eq. 4) or adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the
-//     boundary conditions of Sec. 5.3 on β and γ with their b flags; with TLAB_LIST_SEEDS, the
-//     fragments where β and γ start above 0 (Eq. 9's seeds) in lists for the solve's frontier.
-// Over 300 lines: the three phases share ε, the searches and the fast path, so they stay one shader.
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in four dispatches:
+//  TLAB_PHASE 0: per pixel, maxStep = max |d·∇z| over its list along x and along y (the window
+//     findNeighbor widens by), for phase 1 to read for the three lists it walks;
+//  TLAB_PHASE 1: each pair of adjacent pixels (A, B) once, by the invocation of A for B to its
+//     right and B above it: walking both lists layer by layer, the geodesic neighbour of every
+//     fragment in the other list by the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only
+//     when no other fragment of its own list matches that candidate better (Alg. 2) — where the
+//     answer follows from the fragment's own layer and the layers next to it in both lists (the
+//     fast path below). Links are kept only when both fragments chose each other (ε is not
+//     symmetric: εz uses the first fragment's gradient), so the graph Laplacian of the diffusion
+//     is symmetric; with both of a layer's answers at hand that test is settled here, and each
+//     link word has one writer. A pair with a link the fast path left UNRESOLVED is appended to a
+//     work list, its links written unfiltered;
+//  TLAB_PHASE 3: for the listed pairs only, the full bounded search (findNeighbor) of the
+//     UNRESOLVED links both ways, then the mutual test over both lists;
+//  TLAB_PHASE 2: from each fragment's own (mutual) links, the initial α, constant s (Eq. 4) or
+//     adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the boundary conditions of Sec. 5.3 on β and γ with
+//     their b flags; with TLAB_LIST_SEEDS, the fragments where β and γ start above 0 (Eq. 9's
+//     seeds) in lists for the solve's frontier.
+// Over 300 lines: the phases share ε, the searches and the fast path, so they stay one shader;
+// main, over 60 lines, holds one branch per phase (TLAB_PHASE), each of them shorter.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
 #include "ops/field_bindings.glsl"
@@ -36,9 +43,14 @@ layout(std430, binding = BIND_BETA_OUT) writeonly buffer Beta { float beta[]; };
 layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer Gamma { float gamma[]; };
 #endif
 layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
+#if TLAB_PHASE == 1 || TLAB_PHASE == 3
+// The pairs whose links need the full search: a count, then 2 × pixel A + axis (0: B to the
+// right of A, 1: B above).
+layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPairs[]; };
+#endif
 #if TLAB_PHASE != 2
-// The pixels whose links need the full search: a count, then the pixel indices.
-layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPixels[]; };
+// Per pixel, maxStep along x and y (phase 0 writes it, phases 1 and 3 read it).
+layout(std430, binding = BIND_CONNECT_STEPS) buffer Steps { vec2 steps[]; };
 #endif
 #if TLAB_PHASE == 2 && defined(TLAB_LIST_SEEDS)
 // The fragments Eq. 9 spreads from (value above 0), for the solve's frontier (ops/spread_frontier.comp).
@@ -50,31 +62,22 @@ FRONTIER_LIST(, BIND_SEEDS_GAMMA, SeedsGamma, gammaSeeds);
 #endif
 #endif
 #if TLAB_PHASE == 2 && defined(TLAB_LINK_TEXELS)
-// Phase 2 reads the links as a buffer texture (a fragment's 4 links a texel: one fetch for all
-// lanes, where llvmpipe reads a storage buffer lane by lane and word by word). It rewrites links
-// of that buffer meanwhile, but only a link f -> x (direction k) that x does not return, to
-// NO_NEIGHBOR; the one other reader of that word is the invocation of a fragment g with a link
-// g -> f, testing whether the word is g. Had it been g, g's link would return it (g's own test
-// fails only when the word is not g), so f would have kept it: a word that changes is not g
-// before nor after the change, and no result depends on when the word is read.
+// Phase 2 reads a fragment's own 4 links as one texel of an RGBA32UI buffer texture (one fetch
+// for all lanes, where llvmpipe reads a storage buffer lane by lane and word by word).
 uniform usamplerBuffer uLinkTexels;
 uvec4 linksOf(uint f) { return texelFetch(uLinkTexels, int(f)); }
 #else
 uvec4 linksOf(uint f) { return links[f]; }
 #endif
-#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
+#if defined(TLAB_GRADIENT_PAIR) && defined(TLAB_SORTED_TEXELS)
+// The same records two words a texel (RG32UI): the gradient in one fetch (stride and offset are even).
+uniform usamplerBuffer uSortedPairs;
+uvec2 sortedPair(uint i) { return texelFetch(uSortedPairs, int(i)).xy; }
+#elif defined(TLAB_GRADIENT_PAIR)
 // The same records two words at a time: the gradient in one load (stride and offset are even).
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
+uvec2 sortedPair(uint i) { return sortedPairs[i]; }
 #endif
-#if TLAB_PHASE == 1 && defined(TLAB_LINK_IMAGE)
-// Phase 1 stores a fragment's 4 links as one texel of an RGBA32UI image over the links buffer
-// (one store a lane, where a storage buffer is written lane by lane and word by word).
-layout(rgba32ui, binding = 0) uniform writeonly uimageBuffer uLinkImage;
-void storeLinks(uint f, uvec4 link) { imageStore(uLinkImage, int(f), link); }
-#else
-void storeLinks(uint f, uvec4 link) { links[f] = link; }
-#endif
-
 uniform int uWidth;
 uniform int uHeight;
 uniform float uObjectRadius;  // r_obj of Eq. 1
@@ -87,8 +90,8 @@ float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH)
 vec3 normalOf(uint f) { return decodeNormal(sortedWord(fragWord(f, TLAB_OFF_NORMAL))); }
 vec2 gradientOf(uint f) {
   uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
-#if defined(TLAB_GRADIENT_PAIR) && !defined(TLAB_SORTED_TEXELS)
-  return uintBitsToFloat(sortedPairs[o >> 1]);
+#ifdef TLAB_GRADIENT_PAIR
+  return uintBitsToFloat(sortedPair(o >> 1));
 #else
   return vec2(uintBitsToFloat(sortedWord(o)), uintBitsToFloat(sortedWord(o + 1u)));
 #endif
@@ -222,9 +225,10 @@ bool inside(ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < uWidth && q.y < uHei
 const uint UNRESOLVED = 0xFFFFFFFEu;
 
 // The fast path of findNeighbor for fragment a = layer L of its list (sa; prev and next are layers
-// L - 1 and L + 1 when they exist) towards the list B of an adjacent pixel, of which it knows the
-// depths of layers L - 1, L and L + 1 (bDepths). It returns what findNeighbor returns whenever
-// that follows from these layers alone, else UNRESOLVED. Both halves rest on the bound that makes
+// L - 1 and L + 1 when they exist) towards the list B of an adjacent pixel, of which it knows
+// layer L (sb, when L < countB) and the depths of layers L - 1 and L + 1 (bPrevZ, bNextZ). It
+// returns what findNeighbor returns whenever that follows from these layers alone — then
+// NO_NEIGHBOR or headB + L — else UNRESOLVED. Both halves rest on the bound that makes
 // findNeighbor's search exact (see beyond): a layer whose depth gap is beyond ε cannot match
 // better, nor can any layer further out on the same side, the list being sorted by depth.
 //  - The best candidate: layer L of B, when its ε is finite and layers L ± 1 of B lie on either
@@ -233,21 +237,18 @@ const uint UNRESOLVED = 0xFFFFFFFEu;
 //    maxStep is not beyond ε (a contiguous range, the gap being V-shaped in k). Layers L ± 1 are
 //    tested here; the rest is settled when L ± 1 lie on the far side of b and are beyond (all
 //    layers further out then are too), or when the list ends there.
-uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint headB, uint countB, vec3 bDepths,
-                  ivec2 d, float maxStep) {
-  float bPrev = bDepths.x, bCur = bDepths.y, bNext = bDepths.z;
+uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint headB, uint countB, Surfel sb,
+                  float bPrevZ, float bNextZ, ivec2 d, float maxStep) {
+#ifdef TLAB_ALL_PAIRS
+  return countB == 0u ? NO_NEIGHBOR : UNRESOLVED;  // (every pair is searched in phase 3)
+#else
   if (countB == 0u) return NO_NEIGHBOR;  // (also beyond the image edge)
   if (L >= countB) return UNRESOLVED;
   float predicted = sa.z + dot(vec2(d), sa.g);
-  Surfel sb;
-  sb.z = bCur;
-  sb.g = vec2(0.0);  // (ε never reads the candidate's gradient)
-  sb.n = normalOf(headB + L);
-  sb.comp = componentOf(headB + L);
   float e = continuity(sa, sb, d);
   if (!(e < 1.0 / 0.0)) return UNRESOLVED;
-  if (L + 1u < countB && !(bNext >= predicted && beyond(bNext - predicted, e))) return UNRESOLVED;
-  if (L > 0u && !(bPrev <= predicted && beyond(predicted - bPrev, e))) return UNRESOLVED;
+  if (L + 1u < countB && !(bNextZ >= predicted && beyond(bNextZ - predicted, e))) return UNRESOLVED;
+  if (L > 0u && !(bPrevZ <= predicted && beyond(predicted - bPrevZ, e))) return UNRESOLVED;
   // The mutual test over the own list (Alg. 2's second half).
   bool nextVisited = false, prevVisited = false, nextFar = true, prevFar = true;
   if (L + 1u < n) {
@@ -263,77 +264,122 @@ uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint head
   bool forwardDone = L + 2u >= n || (nextFar && !nextVisited);
   bool backwardDone = L < 2u || (prevFar && !prevVisited);
   return forwardDone && backwardDone ? headB + L : UNRESOLVED;
+#endif
+}
+
+// A is paired with the pixel to its right (axis 0) and the one above it (axis 1). For axis i the
+// link A -> B is direction 2i + 1 and B -> A direction 2i (kDirections).
+const ivec2 kPairDirections[2] = ivec2[2](ivec2(1, 0), ivec2(0, 1));
+
+// What phase 1 writes for fragment a = layer L of A, given the fast path's answers for a (towards
+// B: fa) and for layer L of B (towards A: fb). fa is headB + L only where layer L of B exists, and
+// fb is then NO_NEIGHBOR, UNRESOLVED or a itself: the link is kept when both chose each other,
+// dropped when b chose nobody, and left for phase 3 (unfiltered) when b's answer is UNRESOLVED.
+uint settledLink(uint a, uint fa, uint fb) {
+  bool chosen = fa < UNRESOLVED;  // a fragment
+  return chosen && fb != UNRESOLVED && fb != a ? NO_NEIGHBOR : fa;
+}
+
+// Per pixel: how many layers, where they start, and maxStep (zero for an empty list or one
+// beyond the image, whose lists are empty).
+struct List {
+  uint head, count;
+  vec2 step;
+};
+List listAt(ivec2 q) {
+  List l;
+  l.head = 0u;
+  l.count = 0u;
+  l.step = vec2(0.0);
+  if (!inside(q)) return l;
+  uint p = uint(q.y * uWidth + q.x);
+  l.count = pixelCount[p];
+#if TLAB_PHASE != 2
+  if (l.count > 0u) {
+    l.head = pixelHead[p];
+    l.step = steps[p];
+  }
+#endif
+  return l;
 }
 
 void main() {
 #if TLAB_PHASE == 3
   uint item = linearInvocation();
   if (item >= workCount) return;
-  uint pixel = workPixels[item];
+  uint pixel = workPairs[item] >> 1u;
 #else
   uint pixel = linearInvocation();
   if (pixel >= uint(uWidth * uHeight)) return;
 #endif
   uint n = pixelCount[pixel];
-  if (n == 0u) return;
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
-#if TLAB_PHASE != 2
-  vec4 maxStep = vec4(0.0);  // max |d·∇z| over this list, per direction
-  for (uint layer = 0u; layer < n; ++layer) {
-    vec2 g = abs(gradientOf(head + layer));
-    maxStep = max(maxStep, vec4(g.x, g.x, g.y, g.y));
+#if TLAB_PHASE == 0
+  vec2 maxStep = vec2(0.0);  // max |d·∇z| over this list along x, y
+  for (uint layer = 0u; layer < n; ++layer) maxStep = max(maxStep, abs(gradientOf(head + layer)));
+  if (n > 0u) steps[pixel] = maxStep;
+#elif TLAB_PHASE == 1
+  // Walks the three lists (A, B to its right, B above) with the layers next to the current one in
+  // registers: each layer's record is read once by this invocation.
+  List a = listAt(xy), b[2] = List[2](listAt(xy + kPairDirections[0]), listAt(xy + kPairDirections[1]));
+  uint layers = max(n, max(b[0].count, b[1].count));
+  Surfel aPrev, aCur, aNext, bPrev[2], bCur[2], bNext[2];
+  aNext = n > 0u ? surfel(head) : Surfel(0.0, vec2(0.0), vec3(0.0), 0u);
+  aCur = aNext;
+  for (int i = 0; i < 2; ++i) {
+    bNext[i] = b[i].count > 0u ? surfel(b[i].head) : aNext;
+    bCur[i] = bNext[i];
   }
-  uvec4 qHead = uvec4(0u), qCount = uvec4(0u);  // the 4 adjacent lists (empty beyond the image)
-  for (int k = 0; k < 4; ++k) {
-    ivec2 q = xy + kDirections[k];
-    if (!inside(q)) continue;
-    uint qp = uint(q.y * uWidth + q.x);
-    qHead[k] = pixelHead[qp];
-    qCount[k] = pixelCount[qp];
-  }
-#endif
-#if TLAB_PHASE == 1
-  // Walks the list with the layers next to the current one in registers: each layer's record,
-  // and each adjacent list's depths, are read once.
-  bool unresolved = false;
-#ifndef TLAB_ALL_PAIRS
-  Surfel prev = surfel(head), cur = prev, next = prev;
-  vec4 bPrev = vec4(0.0), bCur = vec4(0.0), bNext = vec4(0.0);
-  for (int k = 0; k < 4; ++k) {
-    if (qCount[k] > 0u) bNext[k] = depthOf(qHead[k]);
-  }
-#endif
-  for (uint layer = 0u; layer < n; ++layer) {
-    uint f = head + layer;
-    uvec4 link = uvec4(UNRESOLVED);
-#ifndef TLAB_ALL_PAIRS
-    prev = cur;
-    cur = next;
-    if (layer + 1u < n) next = surfel(f + 1u);
-    bPrev = bCur;
-    bCur = bNext;
-    for (int k = 0; k < 4; ++k) {
-      if (layer + 1u < qCount[k]) bNext[k] = depthOf(qHead[k] + layer + 1u);
-      link[k] = fastNeighbor(cur, layer, prev, next, n, qHead[k], qCount[k], vec3(bPrev[k], bCur[k], bNext[k]),
-                             kDirections[k], maxStep[k]);
+  bool listed[2] = bool[2](false, false);
+  for (uint L = 0u; L < layers; ++L) {
+    aPrev = aCur;
+    aCur = aNext;
+    if (L + 1u < n) aNext = surfel(head + L + 1u);
+    for (int i = 0; i < 2; ++i) {
+      bPrev[i] = bCur[i];
+      bCur[i] = bNext[i];
+      if (L + 1u < b[i].count) bNext[i] = surfel(b[i].head + L + 1u);
+      uint fa = NO_NEIGHBOR, fb = NO_NEIGHBOR;
+      if (L < n)
+        fa = fastNeighbor(aCur, L, aPrev, aNext, n, b[i].head, b[i].count, bCur[i], bPrev[i].z, bNext[i].z,
+                          kPairDirections[i], a.step[i]);
+      if (L < b[i].count)
+        fb = fastNeighbor(bCur[i], L, bPrev[i], bNext[i], b[i].count, head, n, aCur, aPrev.z, aNext.z,
+                          -kPairDirections[i], b[i].step[i]);
+      listed[i] = listed[i] || fa == UNRESOLVED || fb == UNRESOLVED;
+      if (L < n) links[head + L][2 * i + 1] = settledLink(head + L, fa, fb);
+      if (L < b[i].count) links[b[i].head + L][2 * i] = settledLink(b[i].head + L, fb, fa);
     }
-#endif
-    unresolved = unresolved || any(equal(link, uvec4(UNRESOLVED)));
-    storeLinks(f, link);
+    // Beyond the left and bottom edges no pair writes these.
+    if (L < n && xy.x == 0) links[head + L][0] = NO_NEIGHBOR;
+    if (L < n && xy.y == 0) links[head + L][2] = NO_NEIGHBOR;
   }
-  if (unresolved) workPixels[atomicAdd(workCount, 1u)] = pixel;
+  for (int i = 0; i < 2; ++i)
+    if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);
 #elif TLAB_PHASE == 3
-  for (uint layer = 0u; layer < n; ++layer) {
-    uint f = head + layer;
-    uvec4 link = links[f];
-    if (!any(equal(link, uvec4(UNRESOLVED)))) continue;
-    Surfel sf = surfel(f);
-    for (int k = 0; k < 4; ++k)
-      if (link[k] == UNRESOLVED) link[k] = findNeighbor(f, sf, head, n, qHead[k], qCount[k], kDirections[k], maxStep[k]);
-    links[f] = link;
+  int i = int(workPairs[item] & 1u);
+  List a = listAt(xy), b = listAt(xy + kPairDirections[i]);
+  ivec2 d = kPairDirections[i];
+  int ka = 2 * i + 1, kb = 2 * i;
+  for (uint L = 0u; L < a.count; ++L)
+    if (links[a.head + L][ka] == UNRESOLVED)
+      links[a.head + L][ka] = findNeighbor(a.head + L, surfel(a.head + L), a.head, a.count, b.head, b.count, d, a.step[i]);
+  for (uint L = 0u; L < b.count; ++L)
+    if (links[b.head + L][kb] == UNRESOLVED)
+      links[b.head + L][kb] = findNeighbor(b.head + L, surfel(b.head + L), b.head, b.count, a.head, a.count, -d, b.step[i]);
+  // The mutual test, in place: a link kept is kept by its other end too, so a word already
+  // tested reads as before wherever the answer depends on it.
+  for (uint L = 0u; L < a.count; ++L) {
+    uint j = links[a.head + L][ka];
+    if (j != NO_NEIGHBOR && links[j][kb] != a.head + L) links[a.head + L][ka] = NO_NEIGHBOR;
+  }
+  for (uint L = 0u; L < b.count; ++L) {
+    uint j = links[b.head + L][kb];
+    if (j != NO_NEIGHBOR && links[j][ka] != b.head + L) links[b.head + L][kb] = NO_NEIGHBOR;
   }
 #else
+  if (n == 0u) return;
   float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
   uvec4 qHead = uvec4(0u);  // heads of the adjacent lists, to turn a link into a layer
   uint outside = 0u;        // adjacent pixels beyond the image edge
@@ -348,24 +394,17 @@ void main() {
   uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
   for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {
     uint f = head + layer;
-    const uvec4 chosen = linksOf(f);
-    uvec4 link = chosen;
+    const uvec4 link = linksOf(f);
     uint found = 0u;
     bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {
       uint j = link[k];
       if (j == NO_NEIGHBOR) continue;
-      // Directions come in pairs (0,1), (2,3): k ^ 1 is the way back.
-      if (linksOf(j)[k ^ 1] != f) {
-        link[k] = NO_NEIGHBOR;
-        continue;
-      }
       ++found;
       uint neighborLayer = j - qHead[k];
       nextToSilhouette = nextToSilhouette || layer < neighborLayer;
       underSilhouette = underSilhouette || layer > neighborLayer;
     }
-    if (any(notEqual(link, chosen))) links[f] = link;  // (mutual links stay as they are)
     // Sec. 5.2 initial conditions, then Sec. 5.3 boundary conditions.
     float b = 0.0, g = 0.0;
     uint free = FREE_ALPHA | FREE_BETA | FREE_GAMMA;

@@ -15,20 +15,23 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                              float objectRadius, TransparencyFields& fields, NeighborSearch search) {
-  constexpr GLuint kConnectWork = 22;  // BIND_CONNECT_WORK of ops/field_bindings.glsl
+  constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
+  constexpr GLuint kConnectSteps = 27;  // BIND_CONNECT_STEPS
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
-  constexpr GLint kSortedWordsUnit = 0;
+  constexpr GLint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = layout.defines();
   for (const auto& d : fields.defines()) defines.push_back(d);
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
-  if (layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
+  const bool gradientPair = layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0;
+  if (gradientPair) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
+  fields.connectSteps(buffer.pixels()).bindBase(GL_SHADER_STORAGE_BUFFER, kConnectSteps);
   buffer.bindSorted();
   fields.bindCurrent();
   // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
@@ -36,7 +39,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   GLint maxTexels = 0, sortedId = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
-  gpu::Texture sortedWords;
+  gpu::Texture sortedWords, sortedPairs;
   if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
     sortedWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
@@ -44,6 +47,12 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
                          GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
     glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
+    if (gradientPair) {  // and two words a texel, for the gradient
+      sortedPairs = gpu::makeTexture(GL_TEXTURE_BUFFER);
+      glTextureBufferRange(sortedPairs.id(), GL_RG32UI, GLuint(sortedId), 0,
+                           GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
+      glBindTextureUnit(kSortedPairsUnit, sortedPairs.id());
+    }
   }
   // Eq. 9 spreads only from fragments above 0: phase 2 lists them for the solve's frontier.
   const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
@@ -55,20 +64,17 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
       }
   // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
   constexpr GLint kLinkTexelsUnit = 1;
-  constexpr GLuint kLinkImageUnit = 0;  // and phase 1 writes them as an image of those texels (TLAB_LINK_IMAGE)
   gpu::Texture linkTexels;
   if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
     linkTexels = gpu::makeTexture(GL_TEXTURE_BUFFER);
     glTextureBufferRange(linkTexels.id(), GL_RGBA32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
     glBindTextureUnit(kLinkTexelsUnit, linkTexels.id());
-    glBindImageTexture(kLinkImageUnit, linkTexels.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32UI);
   }
   const auto run = [&](const char* phase, std::size_t items) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
     if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
-    if (linkTexels && phase[0] == '1') phaseDefines.emplace_back("TLAB_LINK_IMAGE", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
     program.use();
     glUniform1i(program.uniform("uWidth"), buffer.width());
@@ -79,12 +85,15 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
+    glUniform1i(program.uniform("uSortedPairs"), kSortedPairsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
     gpu::dispatchLinear(items);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
   };
-  // Phase 1 settles most links; phase 3 searches the pixels it listed; phase 2 keeps mutual links.
+  // Phase 0 finds each list's maxStep; phase 1 settles most pairs of adjacent pixels; phase 3
+  // searches the pairs it listed; phase 2 sets the fields from the (mutual) links.
+  run("0", buffer.pixels());
   run("1", buffer.pixels());
   std::uint32_t listed = 0;
   work.download(&listed, sizeof listed);

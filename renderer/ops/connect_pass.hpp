@@ -16,7 +16,8 @@ namespace tlab::render {
 enum class NeighborSearch { Bounded, AllPairs };
 
 // Runs the pass into `fields`, resized for the buffer's fragments (kept memory is reused).
-// Returns how many pixels needed the full neighbour search (the rest took the fast path).
+// Returns how many pairs of adjacent pixels needed the full neighbour search (the rest took the
+// fast path).
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                       float objectRadius, TransparencyFields& fields, NeighborSearch search = NeighborSearch::Bounded);
 

@@ -77,8 +77,13 @@ std::uint32_t TransparencyFields::nextTag() {
 }
 
 gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
-  if (!connectWork_ || connectWork_.size() < (pixels + 1) * 4) connectWork_ = gpu::Buffer((pixels + 1) * 4);
+  if (!connectWork_ || connectWork_.size() < (2 * pixels + 1) * 4) connectWork_ = gpu::Buffer((2 * pixels + 1) * 4);
   return connectWork_;
+}
+
+gpu::Buffer& TransparencyFields::connectSteps(std::size_t pixels) {
+  if (!connectSteps_ || connectSteps_.size() < pixels * 8) connectSteps_ = gpu::Buffer(pixels * 8);
+  return connectSteps_;
 }
 
 gpu::ShaderDefines TransparencyFields::defines() const {

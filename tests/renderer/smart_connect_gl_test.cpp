@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <tuple>
 
 #include "renderer/scene/scene_source.hpp"
 #include "tests/renderer/smart_rig.hpp"
@@ -47,7 +49,7 @@ TEST(NeighborLinks, FastPathAndFullSearchTogetherEqualAllPairs) {
     TransparencyFields kept;
     const std::size_t searched =
         connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, kept);
-    EXPECT_LE(searched, covered) << source;
+    EXPECT_LE(searched, 2 * covered) << source;  // pairs of adjacent pixels, both covered
     if (bothPaths) {
       EXPECT_GT(searched, 0u) << source;       // some pixels took the full search
       EXPECT_LT(searched, covered) << source;  // and the fast path settled the others
@@ -61,6 +63,96 @@ TEST(NeighborLinks, FastPathAndFullSearchTogetherEqualAllPairs) {
     EXPECT_EQ(kept.readLinks(), reference->readLinks()) << source;
     EXPECT_EQ(kept.read(Field::Beta), reference->read(Field::Beta)) << source;
   }
+}
+
+// Three quads seen straight on: two over the whole view (z = 0 and −0.5) and one behind them
+// (z = −1) over x < 0 only, each its own component; its edge lies between pixel columns
+// width/2 − 1 and width/2, so the lists there hold 3 and 2 layers.
+namespace {
+Scene backHalfScene() {
+  Scene s;
+  const auto quad = [](const char* name, glm::vec3 center, float halfWidth) {
+    SceneObject o;
+    o.name = name;
+    o.mesh = makeQuad(center, {halfWidth, 0, 0}, {0, 20, 0});
+    o.frontColor = {0.5f, 0.5f, 0.5f, 1};
+    return o;
+  };
+  s.objects = {quad("front", {0, 0, 0}, 20), quad("middle", {0, 0, -0.5f}, 20), quad("back", {-10, 0, -1}, 10)};
+  s.camera = Camera{};
+  s.camera->eye = {0, 0, 5};
+  s.camera->nearPlane = 1;
+  s.camera->farPlane = 10;
+  return s;
+}
+}  // namespace
+
+// Each pair of adjacent pixels is connected once (ops/connect.comp, phase 1): every link points
+// into the list of the adjacent pixel in its direction, the fragment there links back, and no
+// link leaves the image — on sizes with odd rows and columns, lists of different lengths, several
+// components, and the same for the links of comparing all pairs.
+TEST(NeighborLinks, EveryLinkIsReturnedFromTheAdjacentPixel) {
+  const std::array<glm::ivec2, 4> directions = {  // kDirections of ops/connect.comp
+     glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)};
+  for (const auto& [scene, w, h] : {std::tuple{backHalfScene(), 40, 31}, std::tuple{occluderScene(), 33, 27},
+                                    std::tuple{loadScene("builtin:nested-spheres?n=3"), 45, 37},
+                                    std::tuple{loadScene("builtin:torus"), 63, 47}}) {
+    SmartRig rig(scene, w, h);
+    const auto reference =
+        connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, NeighborSearch::AllPairs);
+    const auto links = rig.fields->readLinks();
+    EXPECT_EQ(links, reference->readLinks()) << scene.name;
+    std::size_t linked = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t p = std::size_t(y) * w + x;
+        for (std::uint32_t layer = 0; layer < rig.counts[p]; ++layer) {
+          const std::uint32_t f = rig.heads[p] + layer;
+          for (int k = 0; k < 4; ++k) {
+            const std::uint32_t j = links[f][k];
+            if (j == kNone) continue;
+            ++linked;
+            const glm::ivec2 q = glm::ivec2(x, y) + directions[k];
+            ASSERT_TRUE(q.x >= 0 && q.y >= 0 && q.x < w && q.y < h) << scene.name << " " << x << "," << y << " k " << k;
+            const std::size_t qp = std::size_t(q.y) * w + q.x;
+            ASSERT_GE(j, rig.heads[qp]) << scene.name << " " << x << "," << y << " k " << k;
+            ASSERT_LT(j, rig.heads[qp] + rig.counts[qp]) << scene.name << " " << x << "," << y << " k " << k;
+            ASSERT_EQ(links[j][k ^ 1], f) << scene.name << " " << x << "," << y << " k " << k;
+          }
+        }
+      }
+    EXPECT_GT(linked, std::size_t(w * h)) << scene.name;
+  }
+}
+
+// A pair split between the fast path and the full search: beside the back quad's edge, layers 0
+// and 1 of both lists match layer for layer (the fast path settles them), while layer 2 of the
+// 3-layer list has no counterpart (it is searched in full, finds none in the other component, and
+// the pair is listed). The result is the same as comparing all pairs, and the links by hand.
+TEST(NeighborLinks, PairSplitBetweenFastPathAndFullSearch) {
+  constexpr int w = 40, h = 31;
+  SmartRig rig(backHalfScene(), w, h);
+  TransparencyFields fields;
+  const std::size_t searched = connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, fields);
+  const auto links = fields.readLinks();
+  EXPECT_GE(searched, std::size_t(h));    // every pair across the edge
+  EXPECT_LT(searched, std::size_t(w * h));  // not all of them
+  for (int y = 0; y < h; ++y) {
+    ASSERT_EQ(rig.counts[std::size_t(y) * w + w / 2 - 1], 3u) << y;
+    ASSERT_EQ(rig.counts[std::size_t(y) * w + w / 2], 2u) << y;
+    for (int layer = 0; layer < 2; ++layer) {
+      EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, layer)][1], rig.fragment(w / 2, y, layer)) << y;
+      EXPECT_EQ(links[rig.fragment(w / 2, y, layer)][0], rig.fragment(w / 2 - 1, y, layer)) << y;
+    }
+    EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, 2)][1], kNone) << y;
+    if (y + 1 < h) EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, 2)][3], rig.fragment(w / 2 - 1, y + 1, 2)) << y;
+  }
+  const auto reference =
+      connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, NeighborSearch::AllPairs);
+  EXPECT_EQ(links, reference->readLinks());
+  EXPECT_EQ(fields.readFlags(), reference->readFlags());
+  EXPECT_EQ(fields.read(Field::Beta), reference->read(Field::Beta));
+  EXPECT_EQ(fields.read(Field::Gamma), reference->read(Field::Gamma));
 }
 
 // A renderer keeps smart transparency's fields (their memory) across frames: a frame after a
