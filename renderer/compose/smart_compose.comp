@@ -19,29 +19,19 @@ layout(std430, binding = BIND_GAMMA_IN) readonly buffer Gamma { float gamma[]; }
 #endif
 uniform uint uPixels;
 uniform vec4 uBackground;
-// TLAB_MODIFIER: 0 none, 1 exp (Eq. 10), 2 pow (Eq. 11) — a define, not a uniform: llvmpipe
-// evaluates both sides of a branch under a mask, so with a uniform every fragment paid for the
-// exponentials and the power whatever the modifier (issue #29).
-uniform float uP;  // p > 0
+// TLAB_MODIFIER: 0 none, 1 exp (Eq. 10), 2 pow (Eq. 11), a define rather than a uniform: llvmpipe
+// evaluates both sides of an `if` under a mask, so with a uniform every fragment also computed
+// the modifier it did not use.
+uniform float uP;
 
 float modifyProfile(float u) {
   u = clamp(u, 0.0, 1.0);
-#if TLAB_MODIFIER == 0
-  return u;
-#else
-  // Both modifiers map 0 to exactly 0 (Eq. 10: e^(−p) − e^(−p) = 0; Eq. 11: 0^p = 0 for p > 0),
-  // and most fragments hold 0 (β and γ are 0 away from silhouettes): the formula runs in a loop of
-  // 0 or 1 turns, which llvmpipe leaves at once when no invocation of the group needs it (an `if`
-  // would still be evaluated for all of them, under a mask).
-  float m = 0.0;
-  for (int once = 0; once < (u > 0.0 ? 1 : 0); ++once) {
 #if TLAB_MODIFIER == 1
-    m = (exp(-uP * (1.0 - u)) - exp(-uP)) / (1.0 - exp(-uP));  // Eq. 10
+  return (exp(-uP * (1.0 - u)) - exp(-uP)) / (1.0 - exp(-uP));  // Eq. 10
+#elif TLAB_MODIFIER == 2
+  return pow(u, uP);  // Eq. 11
 #else
-    m = pow(u, uP);  // Eq. 11
-#endif
-  }
-  return m;
+  return u;
 #endif
 }
 
