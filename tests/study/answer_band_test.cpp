@@ -7,16 +7,13 @@
 #include "study/design/participant_texts.hpp"
 #include "study/window/answer_band.hpp"
 #include "study/window/screen_layout.hpp"
+#include "tests/support/wrapped_lines.hpp"
 
 using namespace tlab::study;
 
 namespace {
 
-std::string joined(const std::vector<std::string>& lines) {
-  std::string s;
-  for (const auto& l : lines) s += (s.empty() ? "" : " ") + l;
-  return s;
-}
+using tlab::testing::joinedWithSpaces;
 
 // Every line fits the band's text width.
 void expectFits(TextPainter& painter, const std::vector<std::string>& lines, float pixels, const AnswerBand& b) {
@@ -47,8 +44,8 @@ TEST(AnswerBand, AGermanLiveTrialWrapsBothHintsAndTheAnswerRowStartsBelowThem) {
   const AnswerBand b = layoutAnswerBand(painter, hint, live, false, 640, defaultAnswerHeight(480));
   EXPECT_GE(b.hintLines.size(), 2u);
   EXPECT_GE(b.liveLines.size(), 2u);
-  EXPECT_EQ(joined(b.hintLines), hint);  // every word, in order
-  EXPECT_EQ(joined(b.liveLines), live);
+  EXPECT_EQ(joinedWithSpaces(b.hintLines), hint);  // every word, in order
+  EXPECT_EQ(joinedWithSpaces(b.liveLines), live);
   expectFits(painter, b.hintLines, kHintPixels, b);
   expectFits(painter, b.liveLines, kLiveHintPixels, b);
   EXPECT_EQ(b.liveTop, b.hintTop + int(b.hintLines.size()) * painter.lineHeight(kHintPixels));
@@ -94,5 +91,5 @@ TEST(AnswerBand, ARefusalTakesAtMostItsRoomAndALongerOneEndsInAnEllipsis) {
   expectFits(painter, cut, kRefusalPixels, b);
   EXPECT_EQ(cut.back().substr(cut.back().size() - std::string("…").size()), "…");
   EXPECT_EQ(longRefusal.rfind(cut[0], 0), 0u);  // the first line is the text's beginning
-  EXPECT_TRUE(refusalLines(painter, "", b).empty() || joined(refusalLines(painter, "", b)).empty());
+  EXPECT_TRUE(refusalLines(painter, "", b).empty() || joinedWithSpaces(refusalLines(painter, "", b)).empty());
 }

@@ -6,19 +6,12 @@
 #include <sstream>
 
 #include "study/window/screen_layout.hpp"
+#include "tests/support/wrapped_lines.hpp"
 #include "study/window/trial_header.hpp"
 
 using namespace tlab::study;
 
-namespace {
-
-std::string joined(const std::vector<std::string>& lines) {
-  std::string s;
-  for (const auto& l : lines) s += (s.empty() ? "" : " ") + l;
-  return s;
-}
-
-}  // namespace
+using tlab::testing::joinedWithSpaces;
 
 TEST(TrialHeader, AShortQuestionTakesOneLineAndTheUsualBand) {
   TextPainter painter;
@@ -38,7 +31,7 @@ TEST(TrialHeader, ALongQuestionWrapsLeftOfTheCounterAndTheBandHoldsEveryLine) {
   const std::string counter = "Übungsdurchgang 3 von 24";
   const TrialHeader h = layoutTrialHeader(painter, question, counter, 640, 53);
   EXPECT_GT(h.questionLines.size(), 2u);
-  EXPECT_EQ(joined(h.questionLines), question);  // every word, in order
+  EXPECT_EQ(joinedWithSpaces(h.questionLines), question);  // every word, in order
   for (const auto& line : h.questionLines) {
     EXPECT_LE(painter.lineWidth(line, kQuestionPixels), h.questionWidth) << line;
     EXPECT_LE(kHeaderMargin + painter.lineWidth(line, kQuestionPixels), h.counterX - kHeaderMargin) << line;
