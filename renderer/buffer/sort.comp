@@ -73,23 +73,27 @@ void sortInOrderBuffer(uint pixel, uint base, uint n) {
 // signed integers (one CPU instruction) in the order of the unsigned words (the host sends
 // uRegisterSortMax = 0 when a triangle index needs more than 28 bits). The source index grows
 // with i (slot i * uPixels + pixel, or head + i), so this order is (depth, triangle, source), the
-// stable order of the insertion sort above. Keys 0-7 are inserted into r[0..7], keys 8-15 into
-// r[8..15] (7 compare-selects each, not 15), the two runs merged by the last stage of Batcher's
-// odd-even merge sort (Knuth, TAOCP 3, Sec. 5.3.4: 25 compare-exchanges), and the records stored
-// front to back. Every index into r is a constant (r stays in registers). llvmpipe runs both
-// sides of every branch under a lane mask, and a loop's body once, then again while a lane of the
-// group of 8 needs it: straight-line work costs every group (empty pixels too), a loop its
-// longest list. (A whole 16-input network after the keys were shifted in was faster on the
-// 16-layer stack but not on the torus's short lists, issue #29.)
+// stable order of the insertion sort above. The keys are shifted into r (the rest padded with the
+// largest key), sorted by Batcher's odd-even merge network of 16 inputs (Knuth, TAOCP 3,
+// Sec. 5.3.4: 63 compare-exchanges, where inserting 16 keys into 16 registers took 256
+// compare-selects), and stored front to back. Every index into r is a constant (r stays in
+// registers). llvmpipe runs both sides of every branch under a lane mask, and a loop's body once,
+// then again while a lane of the group of 8 needs it: the network costs every group once (empty
+// pixels too), the loads and stores the group's longest list. (Two runs of 8 filled by insertion
+// and merged, 25 compare-exchanges, were a little faster on the torus's short lists and slower on
+// the 16-layer stack, issue #29.)
 const uint REGISTER_SORT = 16u;
 ivec2 r[REGISTER_SORT];
 const uint FLIP = 0x80000000u;
 bool keyBefore(ivec2 a, ivec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-// Inserts `key` into the sorted run ending at r[k] (past the list: the largest key): r[k] takes
-// r[k - 1] where key goes before r[k - 1], key where it goes before r[k] only, else stays.
-#define SHIFT(k) { bool beforePrev = keyBefore(key, r[k - 1u]); r[k] = beforePrev ? r[k - 1u] : (beforeHere ? key : r[k]); beforeHere = beforePrev; }
 // Compare-exchange: the smaller key to r[a], the larger to r[b] (a < b).
 #define CE(a, b) { ivec2 lo = r[a], hi = r[b]; bool swap = keyBefore(hi, lo); r[a] = swap ? hi : lo; r[b] = swap ? lo : hi; }
+#define SORT4(o) CE(o, o + 1u) CE(o + 2u, o + 3u) CE(o, o + 2u) CE(o + 1u, o + 3u) CE(o + 1u, o + 2u)
+// Merges the sorted r[o..o+3] and r[o+4..o+7].
+#define MERGE8(o) CE(o, o + 4u) CE(o + 2u, o + 6u) CE(o + 2u, o + 4u) CE(o + 1u, o + 5u) CE(o + 3u, o + 7u) \
+  CE(o + 3u, o + 5u) CE(o + 1u, o + 2u) CE(o + 3u, o + 4u) CE(o + 5u, o + 6u)
+#define SORT8(o) SORT4(o) SORT4(o + 4u) MERGE8(o)
+#define UP(k) r[k] = r[k - 1u];
 // Merges the sorted r[0..7] and r[8..15].
 #define MERGE16 CE(0u, 8u) CE(4u, 12u) CE(4u, 8u) CE(2u, 10u) CE(6u, 14u) CE(6u, 10u) CE(2u, 4u) CE(6u, 8u) \
   CE(10u, 12u) CE(1u, 9u) CE(5u, 13u) CE(5u, 9u) CE(3u, 11u) CE(7u, 15u) CE(7u, 11u) CE(3u, 5u) CE(7u, 9u) \
@@ -110,19 +114,12 @@ ivec2 keyAt(uint pixel, uint base, uint i) {
 }
 
 void sortInRegisters(uint pixel, uint base, uint n) {
-  for (uint k = 0u; k < REGISTER_SORT; ++k) r[k] = ivec2(0x7FFFFFFF);  // (no key: depth is never NaN)
-  for (uint i = 0u; i < min(n, 8u); ++i) {
-    ivec2 key = keyAt(pixel, base, i);
-    bool beforeHere = keyBefore(key, r[7]);
-    SHIFT(7u) SHIFT(6u) SHIFT(5u) SHIFT(4u) SHIFT(3u) SHIFT(2u) SHIFT(1u)
-    if (beforeHere) r[0] = key;
+  for (uint k = 0u; k < REGISTER_SORT; ++k) r[k] = ivec2(0x7FFFFFFF);  // (0xFFFFFFFF unflipped: no key, depth is never NaN)
+  for (uint i = 0u; i < n; ++i) {  // key i into r[0], the earlier ones one register up
+    UP(15u) UP(14u) UP(13u) UP(12u) UP(11u) UP(10u) UP(9u) UP(8u) UP(7u) UP(6u) UP(5u) UP(4u) UP(3u) UP(2u) UP(1u)
+    r[0] = keyAt(pixel, base, i);
   }
-  for (uint i = 8u; i < n; ++i) {
-    ivec2 key = keyAt(pixel, base, i);
-    bool beforeHere = keyBefore(key, r[15]);
-    SHIFT(15u) SHIFT(14u) SHIFT(13u) SHIFT(12u) SHIFT(11u) SHIFT(10u) SHIFT(9u)
-    if (beforeHere) r[8] = key;
-  }
+  SORT8(0u) SORT8(8u)
   MERGE16
   for (uint i = 0u; i < n; ++i) {  // front to back: store the first, move the rest down
     uvec2 key = uvec2(r[0]) ^ FLIP;

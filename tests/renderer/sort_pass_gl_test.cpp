@@ -1,8 +1,8 @@
-// The sort pass (buffer/sort.comp, issue #29): lists up to 16 long sorted in registers (keys 0-7
-// and 8-15 inserted into two runs, merged by a network) give the very sorted buffer of the
-// insertion sort in the order buffer, on lists of every length from 1 to 20 (one run, two runs,
-// the order buffer) with ties in depth inside a run and across the two, from the slots and from
-// the scatter pass.
+// The sort pass (buffer/sort.comp, issue #29): lists up to 16 long sorted in registers by a
+// merge network give the very sorted buffer of the insertion sort in the order buffer, on lists
+// of every length from 1 to 20 (the network's padding from 15 keys to none; the order buffer past
+// 16) with ties in depth between near and far positions of a list, from the slots and from the
+// scatter pass.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -18,9 +18,9 @@ namespace {
 // 20 centred squares, square i of half-size 1 - i / 20, so a pixel inside square i but not
 // i + 1 lists i + 1 fragments: every length from 1 to 20 (the depths differ by at most 0.09 at
 // distance 3, too little to change which square looks larger). Square i lies at depth step
-// (7 i) mod `period`: with period 10 each depth is used twice, by squares 10 apart (ties across
-// the register sort's two runs); with period 3 by every third square (ties inside a run too);
-// ties are broken by triangle. The squares alternate between two objects, and they are drawn in
+// (7 i) mod `period`: with period 10 each depth is used twice, by squares 10 apart (ties only in
+// lists over 10); with period 3 by every third square (ties in lists of 4 and more); ties are
+// broken by triangle. The squares alternate between two objects, and they are drawn in
 // an order that is not the depth order.
 Scene nestedSquares(int period = 10) {
   Scene s;
@@ -91,8 +91,8 @@ TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
 }
 
 // The sorted lists are in (depth, triangle) order, each a permutation of its pixel's fragments:
-// checked on the host, independently of either sort; the scenes tie in depth in lists the register
-// sort keeps in one run (up to 8) and in lists it merges from two (9 to 16).
+// checked on the host, independently of either sort; the scenes tie in depth in lists of up to 8
+// and of 9 to 16 (the halves of the network).
 TEST(SortPass, RegisterSortedListsAreInDepthThenTriangleOrder) {
   for (const int period : {10, 3}) {
     std::vector<std::uint32_t> slots, counts;
@@ -101,20 +101,20 @@ TEST(SortPass, RegisterSortedListsAreInDepthThenTriangleOrder) {
     const SmartStyle style;
     const std::uint32_t stride = FragmentLayout(style.properties(style.resolve({}), {gpu.componentCount()})).stride;
     for (const auto& records : builds) {
-      std::size_t head = 0, tiesInOneRun = 0, tiesInTwoRuns = 0;
+      std::size_t head = 0, tiesUpTo8 = 0, ties9To16 = 0;
       for (std::uint32_t n : counts) {
         for (std::uint32_t i = 1; i < n; ++i) {
           const std::uint32_t* a = &records[(head + i - 1) * stride];
           const std::uint32_t* b = &records[(head + i) * stride];
           ASSERT_TRUE(a[0] < b[0] || (a[0] == b[0] && a[1] < b[1])) << "list at " << head << ", layer " << i;
-          (n <= 8 ? tiesInOneRun : tiesInTwoRuns) += n <= 16 && a[0] == b[0];
+          (n <= 8 ? tiesUpTo8 : ties9To16) += n <= 16 && a[0] == b[0];
         }
         head += n;
       }
       EXPECT_EQ(head, records.size() / stride);
-      EXPECT_GT(tiesInTwoRuns, 0u) << "period " << period;
+      EXPECT_GT(ties9To16, 0u) << "period " << period;
       if (period == 3) {
-        EXPECT_GT(tiesInOneRun, 0u);
+        EXPECT_GT(tiesUpTo8, 0u);
       }
     }
   }
