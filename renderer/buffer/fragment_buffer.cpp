@@ -209,6 +209,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   sorted_ = false;
   headsReady_ = false;
   fragmentCountKnown_ = false;
+  triangles_ = scene.triangleCount();
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
   if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { ensureSorted(); });
@@ -232,7 +233,9 @@ void FragmentBuffer::sortLists() {
   const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
-  glUniform1ui(program.uniform("uRegisterSortMax"), registerSort_ ? 16u : 0u);
+  // The register sort's key holds triangle * 16 + position in one word (buffer/sort.comp).
+  const bool registers = registerSort_ && triangles_ <= (std::size_t{1} << 28);
+  glUniform1ui(program.uniform("uRegisterSortMax"), registers ? 16u : 0u);
   gpu::dispatchLinear(pixels());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;

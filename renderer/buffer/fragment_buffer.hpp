@@ -126,6 +126,7 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram* slotProgram_ = nullptr;
   const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
   bool registerSort_ = true;
+  std::size_t triangles_ = 0;  // of the last build's scene: the register sort's keys hold triangle * 16
 };
 
 }  // namespace tlab::render

@@ -1,6 +1,8 @@
 // The sort pass (buffer/sort.comp, issue #29): lists up to 16 long sorted in registers by a
 // merge network give the very sorted buffer of the insertion sort in the order buffer, on lists
-// of every length from 1 to 20 with ties in depth, from the slots and from the scatter pass.
+// of every length from 1 to 20 (the network's padding from 15 keys to none; the order buffer past
+// 16) with ties in depth between near and far positions of a list, from the slots and from the
+// scatter pass.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -15,19 +17,21 @@ namespace {
 
 // 20 centred squares, square i of half-size 1 - i / 20, so a pixel inside square i but not
 // i + 1 lists i + 1 fragments: every length from 1 to 20 (the depths differ by at most 0.09 at
-// distance 3, too little to change which square looks larger). Each depth is used twice (ties
-// broken by triangle), the squares alternate between two objects, and they are drawn in an
-// order that is not the depth order.
-Scene nestedSquares() {
+// distance 3, too little to change which square looks larger). Square i lies at depth step
+// (7 i) mod `period`: with period 10 each depth is used twice, by squares 10 apart (ties only in
+// lists over 10); with period 3 by every third square (ties in lists of 4 and more); ties are
+// broken by triangle. The squares alternate between two objects, and they are drawn in
+// an order that is not the depth order.
+Scene nestedSquares(int period = 10) {
   Scene s;
-  s.name = "nested-squares";
+  s.name = "nested-squares-" + std::to_string(period);
   for (int object = 0; object < 2; ++object) {
     SceneObject o;
     o.name = "squares-" + std::to_string(object);
     s.objects.push_back(o);
   }
   for (int i = 0; i < 20; ++i) {
-    const float h = 1.0f - float(i) / 20.0f, z = float((i * 7) % 10) * 0.01f - 0.05f;
+    const float h = 1.0f - float(i) / 20.0f, z = float((i * 7) % period) * 0.01f - 0.05f;
     appendMesh(s.objects[std::size_t(i % 2)].mesh, makeQuad({0, 0, z}, {h, 0, 0}, {0, h, 0}));
   }
   s.camera = Camera{};
@@ -66,7 +70,8 @@ std::vector<std::vector<std::uint32_t>> sortedBuilds(const Scene& scene, int siz
 }  // namespace
 
 TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
-  for (const auto& [scene, size] : {std::pair{nestedSquares(), 96}, std::pair{loadScene("builtin:torus"), 64},
+  for (const auto& [scene, size] : {std::pair{nestedSquares(), 96}, std::pair{nestedSquares(3), 96},
+                                    std::pair{loadScene("builtin:torus"), 64},
                                     std::pair{loadScene("builtin:quad-stack?n=16&m=3"), 24},
                                     std::pair{loadScene("builtin:nested-spheres?n=3"), 48}}) {
     std::vector<std::uint32_t> slotsA, slotsB, counts, countsB;
@@ -77,7 +82,7 @@ TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
       ASSERT_EQ(registers[frame].size(), reference[frame].size()) << scene.name;
       EXPECT_EQ(registers[frame], reference[frame]) << scene.name << " frame " << frame;
     }
-    if (scene.name == "nested-squares") {  // nestedSquares: every length 1..20 occurs, and both fill paths ran
+    if (scene.name.rfind("nested-squares", 0) == 0) {  // every length 1..20 occurs, and both fill paths ran
       const std::set<std::uint32_t> lengths(counts.begin(), counts.end());
       for (std::uint32_t n = 1; n <= 20; ++n) EXPECT_TRUE(lengths.count(n)) << "no list of " << n;
       EXPECT_EQ(slotsA, (std::vector<std::uint32_t>{0u, 20u}));
@@ -86,25 +91,31 @@ TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
 }
 
 // The sorted lists are in (depth, triangle) order, each a permutation of its pixel's fragments:
-// checked on the host, independently of either sort.
+// checked on the host, independently of either sort; the scenes tie in depth in lists of up to 8
+// and of 9 to 16 (the halves of the network).
 TEST(SortPass, RegisterSortedListsAreInDepthThenTriangleOrder) {
-  std::vector<std::uint32_t> slots, counts;
-  const auto builds = sortedBuilds(nestedSquares(), 96, true, slots, counts);
-  GpuScene gpu(nestedSquares());
-  const SmartStyle style;
-  const std::uint32_t stride = FragmentLayout(style.properties(style.resolve({}), {gpu.componentCount()})).stride;
-  for (const auto& records : builds) {
-    std::size_t head = 0, ties = 0;
-    for (std::uint32_t n : counts) {
-      for (std::uint32_t i = 1; i < n; ++i) {
-        const std::uint32_t* a = &records[(head + i - 1) * stride];
-        const std::uint32_t* b = &records[(head + i) * stride];
-        ASSERT_TRUE(a[0] < b[0] || (a[0] == b[0] && a[1] < b[1])) << "list at " << head << ", layer " << i;
-        ties += a[0] == b[0];
+  for (const int period : {10, 3}) {
+    std::vector<std::uint32_t> slots, counts;
+    const auto builds = sortedBuilds(nestedSquares(period), 96, true, slots, counts);
+    GpuScene gpu(nestedSquares(period));
+    const SmartStyle style;
+    const std::uint32_t stride = FragmentLayout(style.properties(style.resolve({}), {gpu.componentCount()})).stride;
+    for (const auto& records : builds) {
+      std::size_t head = 0, tiesUpTo8 = 0, ties9To16 = 0;
+      for (std::uint32_t n : counts) {
+        for (std::uint32_t i = 1; i < n; ++i) {
+          const std::uint32_t* a = &records[(head + i - 1) * stride];
+          const std::uint32_t* b = &records[(head + i) * stride];
+          ASSERT_TRUE(a[0] < b[0] || (a[0] == b[0] && a[1] < b[1])) << "list at " << head << ", layer " << i;
+          (n <= 8 ? tiesUpTo8 : ties9To16) += n <= 16 && a[0] == b[0];
+        }
+        head += n;
       }
-      head += n;
+      EXPECT_EQ(head, records.size() / stride);
+      EXPECT_GT(ties9To16, 0u) << "period " << period;
+      if (period == 3) {
+        EXPECT_GT(tiesUpTo8, 0u);
+      }
     }
-    EXPECT_EQ(head, records.size() / stride);
-    EXPECT_GT(ties, 0u);  // the scene has ties in depth
   }
 }
