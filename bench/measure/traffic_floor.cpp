@@ -74,7 +74,9 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   FrameShape s;
   s.pixels = std::uint64_t(stats.width) * std::uint64_t(stats.height);
   s.fragments = stats.fragments;
-  s.recordWords = render::FragmentLayout(propertiesNamed(stats.fragmentProperties)).stride;
+  const render::FragmentLayout layout(propertiesNamed(stats.fragmentProperties));
+  s.recordWords = layout.stride;
+  s.listSteps = layout.properties.has(render::FragmentProperty::DepthGradient);
   // Every compositor reads whole records; constant's, which sorts each list as it blends (issue #29),
   // its depth and triangle for the sort and its colour.
   s.composeWords = s.recordWords;
@@ -98,22 +100,24 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "writes each record once, a count and a head per pixel";
     } else if (name == "sort") {
       t.bytesRead = fr * record + px * 8;
-      t.bytesWritten = fr * record;
-      t.model = "reads count, head and each record once, writes each record once";
+      t.bytesWritten = fr * record + (s.listSteps ? px * 8 : 0);
+      t.model = std::string("reads count, head and each record once, writes each record once") +
+                (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "");
     } else if (name == "compose") {
       t.bytesRead = px * (8 + 16) + fr * 4.0 * s.composeWords;
       t.bytesWritten = px * (16 + 16);
       t.model = "reads count, head and " + std::to_string(s.composeWords) +
                 " word(s) per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {
-      // Phase 0 writes each list's maxStep (two floats a pixel); phase 1 reads count, head and
-      // maxStep of each pixel and each record once, and writes each link once (each pair of
-      // adjacent pixels settled once); phase 2 reads count and head again and each fragment's own
-      // links, and writes the fields and the flags. Phase 3's full search of the few listed pairs
-      // depends on the scene and is not counted.
+      // Phase 1 reads count, head and maxStep (written by the sort, or else by phase 0) of each
+      // pixel and each record once, and writes each link once (each pair of adjacent pixels
+      // settled once); phase 2 reads count and head again and each fragment's own links, and
+      // writes the fields and the flags. Phase 3's full search of the few listed pairs depends on
+      // the scene and is not counted.
       t.bytesRead = px * (16 + 8) + fr * (record + 16);
-      t.bytesWritten = px * 8 + fr * (16 + 4.0 * s.fieldsPerFragment + 4);
-      t.model = "maxStep written and read per pixel; each record read once; links written once and read once; " +
+      t.bytesWritten = (s.listSteps ? 0 : px * 8) + fr * (16 + 4.0 * s.fieldsPerFragment + 4);
+      t.model = std::string(s.listSteps ? "maxStep (from the sort)" : "maxStep written and") +
+                " read per pixel; each record read once; links written once and read once; " +
                 std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and

@@ -42,6 +42,7 @@ struct FrameShape {
   std::uint64_t fragments = 0;
   std::uint32_t recordWords = 2;   // words per fragment record (render::FragmentLayout::stride)
   std::uint32_t composeWords = 2;  // words of each record the style's compositor reads
+  bool listSteps = false;          // records with a depth gradient: the sort also writes each list's maxStep
   int fieldsPerFragment = 1;       // smart: α plus β (silhouettes) plus γ (halos)
   SolveShape solve;                // smart
 };

@@ -16,7 +16,7 @@ namespace {
 // Binding points of frame/fragment_layout.glsl.
 enum Binding : GLuint {
   kPixelCount = 0, kPixelHead = 1, kPixelCursor = 2, kListNext = 3, kCounters = 4,
-  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7,
+  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7, kListSteps = 27,
 };
 constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
 constexpr std::size_t kSlotBudgetBytes = std::size_t(256) << 20;  // at most this for per-pixel slots
@@ -207,6 +207,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   poolGrowths_ = 0;
   slotsUsed_ = 0;
   sorted_ = false;
+  listStepsWritten_ = false;
   headsReady_ = false;
   fragmentCountKnown_ = false;
   triangles_ = scene.triangleCount();
@@ -230,6 +231,11 @@ void FragmentBuffer::sortLists() {
   (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
   fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
+  const bool steps = layout_.properties.has(FragmentProperty::DepthGradient);
+  if (steps) {
+    if (listSteps_.size() < pixels() * 8) listSteps_ = gpu::Buffer(pixels() * 8);
+    listSteps_.bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
+  }
   const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
@@ -239,6 +245,7 @@ void FragmentBuffer::sortLists() {
   gpu::dispatchLinear(pixels());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;
+  listStepsWritten_ = steps;
 }
 
 void FragmentBuffer::bindSorted() {

@@ -52,6 +52,10 @@ class FragmentBuffer final : public Fill {
   // (compose/blend.comp, TLAB_FUSED; FillSpec::sortsInCompose): no sorted buffer is written.
   void setSortInCompose(bool on) { sortInCompose_ = on; }
   bool sorted() const { return sorted_; }
+  // Each list's (max |∂z/∂x|, max |∂z/∂y|) as two floats a pixel (the connect pass's maxStep),
+  // written by this frame's sort when the records carry a depth gradient; null otherwise (no
+  // gradient, or the lists not sorted yet). Pixels without fragments are left as they were.
+  const gpu::Buffer* listSteps() const { return listStepsWritten_ ? &listSteps_ : nullptr; }
   // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
   // in the order buffer (off): the same sorted buffer either way (tests compare the two).
   void setRegisterSort(bool on) { registerSort_ = on; }
@@ -116,6 +120,8 @@ class FragmentBuffer final : public Fill {
   gpu::Framebuffer emptyFbo_;
   gpu::Buffer pixelCount_, pixelHead_, pixelCursor_, counters_, blockSums_;
   gpu::Buffer listNext_, fragsUnsorted_, fragsSorted_, order_, slots_;
+  gpu::Buffer listSteps_;   // see listSteps()
+  bool listStepsWritten_ = false;
   gpu::Buffer slotOrder_;  // a compositor's sort keys beside the slots (i * pixels + pixel)
   mutable gpu::Buffer composeOutput_;
   const gpu::ShaderProgram* countProgram_ = nullptr;

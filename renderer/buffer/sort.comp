@@ -19,6 +19,12 @@ layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer Sorted { uint sorte
 // Per fragment: (depth bits, source index). Positive floats order like their bit patterns, so
 // the keys compare as integers, and each pixel's keys sit together in memory.
 layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
+#ifdef TLAB_HAS_DEPTH_GRADIENT
+// Each list's (max |∂z/∂x|, max |∂z/∂y|), the connect pass's maxStep (ops/connect.comp): the sort
+// reads every record anyway, so the connect pass needs no pass of its own over the gradients.
+layout(std430, binding = BIND_LIST_STEPS) writeonly buffer ListSteps { vec2 listSteps[]; };
+vec2 gListStep = vec2(0.0);
+#endif
 uniform uint uPixels;
 // The longest list sorted in registers (REGISTER_SORT, or 0: every list in the order buffer).
 uniform uint uRegisterSortMax;
@@ -28,6 +34,10 @@ void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
   sorted[fragWord(dst, OFF_DEPTH)] = depthBits;
   sorted[fragWord(dst, OFF_PRIM)] = prim;
   for (uint w = 2u; w < uint(TLAB_STRIDE); ++w) sorted[fragWord(dst, w)] = unsortedWord(fragWord(src, w));
+#ifdef TLAB_HAS_DEPTH_GRADIENT
+  uint g = fragWord(src, TLAB_OFF_DEPTH_GRADIENT);
+  gListStep = max(gListStep, abs(vec2(uintBitsToFloat(unsortedWord(g)), uintBitsToFloat(unsortedWord(g + 1u)))));
+#endif
 }
 
 // Longer lists, and every linked list: insertion sort of (depth, source) keys in the order
@@ -129,6 +139,12 @@ void sortInRegisters(uint pixel, uint base, uint n) {
 }
 #endif
 
+void storeListStep(uint pixel) {
+#ifdef TLAB_HAS_DEPTH_GRADIENT
+  listSteps[pixel] = gListStep;
+#endif
+}
+
 void main() {
   uint pixel = linearInvocation();
   if (pixel >= uPixels) return;
@@ -138,7 +154,11 @@ void main() {
 #ifndef TLAB_LINKED_LIST
   bool inRegisters = n <= min(uRegisterSortMax, REGISTER_SORT);
   sortInRegisters(pixel, base, inRegisters ? n : 0u);
-  if (inRegisters) return;
+  if (inRegisters) {
+    storeListStep(pixel);
+    return;
+  }
 #endif
   sortInOrderBuffer(pixel, base, n);
+  storeListStep(pixel);
 }

@@ -31,8 +31,11 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   const GLuint zero = 0;
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
-  fields.connectSteps(buffer.pixels()).bindBase(GL_SHADER_STORAGE_BUFFER, kConnectSteps);
   buffer.bindSorted();
+  // Each list's maxStep: written by the sort pass when it could (it reads every record anyway),
+  // else by phase 0 below.
+  const gpu::Buffer* sortedSteps = buffer.listSteps();
+  (sortedSteps ? *sortedSteps : fields.connectSteps(buffer.pixels())).bindBase(GL_SHADER_STORAGE_BUFFER, kConnectSteps);
   fields.bindCurrent();
   // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
   // that many words, the pass reads them so (TLAB_SORTED_TEXELS); else as a storage buffer.
@@ -91,9 +94,10 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
   };
-  // Phase 0 finds each list's maxStep; phase 1 settles most pairs of adjacent pixels; phase 3
-  // searches the pairs it listed; phase 2 sets the fields from the (mutual) links.
-  run("0", buffer.pixels());
+  // Phase 0 finds each list's maxStep (unless the sort did); phase 1 settles most pairs of
+  // adjacent pixels; phase 3 searches the pairs it listed; phase 2 sets the fields from the
+  // (mutual) links.
+  if (!sortedSteps) run("0", buffer.pixels());
   run("1", buffer.pixels());
   std::uint32_t listed = 0;
   work.download(&listed, sizeof listed);

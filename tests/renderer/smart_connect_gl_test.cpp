@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <tuple>
 
@@ -29,6 +30,39 @@ TEST(NeighborLinks, BoundedSearchEqualsAllPairs) {
     EXPECT_EQ(rig.fields->readFlags(), reference->readFlags()) << scene.name;
     EXPECT_EQ(rig.fields->read(Field::Beta), reference->read(Field::Beta)) << scene.name;
     EXPECT_EQ(rig.fields->read(Field::Gamma), reference->read(Field::Gamma)) << scene.name;
+  }
+}
+
+// The sort pass writes each list's maxStep for the connect pass (which then runs no pass of its
+// own over the gradients): the largest |∂z/∂x| and |∂z/∂y| of the list's records, exactly, for
+// lists sorted in registers and, on the 20-layer stack, in the order buffer; the slot fill and the
+// scatter fill alike.
+TEST(NeighborLinks, TheSortWritesEachListsLargestGradientForTheConnectPass) {
+  for (const auto& [scene, size] : {std::pair{loadScene("builtin:torus"), 48}, std::pair{loadScene("builtin:quad-stack?n=20"), 16},
+                                    std::pair{loadScene("builtin:nested-spheres?n=3"), 40}}) {
+    SmartRig rig(scene, size, size);
+    const FragmentLayout& layout = rig.buffer->layout();
+    ASSERT_TRUE(layout.properties.has(FragmentProperty::DepthGradient));
+    const tlab::gpu::Buffer* steps = rig.buffer->listSteps();
+    ASSERT_NE(steps, nullptr) << scene.name;
+    const std::size_t pixels = std::size_t(size) * size;
+    std::vector<glm::vec2> gpuSteps(pixels);
+    steps->download(gpuSteps.data(), pixels * sizeof(glm::vec2));
+    const auto records = rig.buffer->sortedRecords(0, rig.buffer->fragmentCount());
+    std::size_t covered = 0, longest = 0;
+    for (std::size_t p = 0; p < pixels; ++p) {
+      if (rig.counts[p] == 0) continue;
+      ++covered;
+      longest = std::max<std::size_t>(longest, rig.counts[p]);
+      glm::vec2 expected(0.0f);
+      for (std::uint32_t l = 0; l < rig.counts[p]; ++l) {
+        const std::size_t g = std::size_t(rig.heads[p] + l) * layout.stride + layout.depthGradientOffset;
+        expected = glm::max(expected, glm::abs(glm::vec2(std::bit_cast<float>(records[g]), std::bit_cast<float>(records[g + 1]))));
+      }
+      ASSERT_EQ(gpuSteps[p], expected) << scene.name << " pixel " << p;
+    }
+    EXPECT_GT(covered, pixels / 4) << scene.name;
+    if (scene.name == "quad-stack") EXPECT_EQ(longest, 20u);  // past the 16 registers
   }
 }
 
