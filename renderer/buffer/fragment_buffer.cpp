@@ -70,6 +70,8 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
     slotProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_slots.frag", defines);
     sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
     sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
+    sortShortSlotsProgram_ =
+        &shaders.compute("buffer/sort.comp", with(with(defines, "TLAB_SLOTS", "1"), "TLAB_REGISTER_SORT", "8"));
   } else {
     listProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_list.frag", defines);
     sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
@@ -236,12 +238,14 @@ void FragmentBuffer::sortLists() {
     if (listSteps_.size() < pixels() * 8) listSteps_ = gpu::Buffer(pixels() * 8);
     listSteps_.bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
   }
-  const gpu::ShaderProgram& program = slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
+  // Lists in at most 8 slots all fit the sort's 8-register network (buffer/sort.comp).
+  const bool shortLists = slotsUsed_ > 0 && slotsUsed_ <= 8;
+  const gpu::ShaderProgram& program = shortLists ? *sortShortSlotsProgram_ : slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   // The register sort's key holds triangle * 16 + position in one word (buffer/sort.comp).
   const bool registers = registerSort_ && triangles_ <= (std::size_t{1} << 28);
-  glUniform1ui(program.uniform("uRegisterSortMax"), registers ? 16u : 0u);
+  glUniform1ui(program.uniform("uRegisterSortMax"), registers ? (shortLists ? 8u : 16u) : 0u);
   gpu::dispatchLinear(pixels());
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;

@@ -131,6 +131,7 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram* sortProgram_ = nullptr;
   const gpu::ShaderProgram* slotProgram_ = nullptr;
   const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
+  const gpu::ShaderProgram* sortShortSlotsProgram_ = nullptr;  // lists of at most 8 (8 registers)
   bool registerSort_ = true;
   std::size_t triangles_ = 0;  // of the last build's scene: the register sort's keys hold triangle * 16
 };

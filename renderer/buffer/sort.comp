@@ -92,7 +92,13 @@ void sortInOrderBuffer(uint pixel, uint base, uint n) {
 // pixels too), the loads and stores the group's longest list. (Two runs of 8 filled by insertion
 // and merged, 25 compare-exchanges, were a little faster on the torus's short lists and slower on
 // the 16-layer stack, issue #29.)
+// TLAB_REGISTER_SORT 8: every list of the frame fits 8 (the host knows it from the slots): 8
+// registers and the network of 8 (19 compare-exchanges), for scenes of short lists such as the torus.
+#if TLAB_REGISTER_SORT == 8
+const uint REGISTER_SORT = 8u;
+#else
 const uint REGISTER_SORT = 16u;
+#endif
 ivec2 r[REGISTER_SORT];
 const uint FLIP = 0x80000000u;
 bool keyBefore(ivec2 a, ivec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
@@ -126,15 +132,24 @@ ivec2 keyAt(uint pixel, uint base, uint i) {
 void sortInRegisters(uint pixel, uint base, uint n) {
   for (uint k = 0u; k < REGISTER_SORT; ++k) r[k] = ivec2(0x7FFFFFFF);  // (0xFFFFFFFF unflipped: no key, depth is never NaN)
   for (uint i = 0u; i < n; ++i) {  // key i into r[0], the earlier ones one register up
-    UP(15u) UP(14u) UP(13u) UP(12u) UP(11u) UP(10u) UP(9u) UP(8u) UP(7u) UP(6u) UP(5u) UP(4u) UP(3u) UP(2u) UP(1u)
+#if TLAB_REGISTER_SORT != 8
+    UP(15u) UP(14u) UP(13u) UP(12u) UP(11u) UP(10u) UP(9u) UP(8u)
+#endif
+    UP(7u) UP(6u) UP(5u) UP(4u) UP(3u) UP(2u) UP(1u)
     r[0] = keyAt(pixel, base, i);
   }
-  SORT8(0u) SORT8(8u)
+  SORT8(0u)
+#if TLAB_REGISTER_SORT != 8
+  SORT8(8u)
   MERGE16
+#endif
   for (uint i = 0u; i < n; ++i) {  // front to back: store the first, move the rest down
     uvec2 key = uvec2(r[0]) ^ FLIP;
     storeRecord(base + i, key.x, key.y >> 4u, sourceOf(pixel, base, key.y & 15u));
-    POP(0u) POP(1u) POP(2u) POP(3u) POP(4u) POP(5u) POP(6u) POP(7u) POP(8u) POP(9u) POP(10u) POP(11u) POP(12u) POP(13u) POP(14u)
+    POP(0u) POP(1u) POP(2u) POP(3u) POP(4u) POP(5u) POP(6u)
+#if TLAB_REGISTER_SORT != 8
+    POP(7u) POP(8u) POP(9u) POP(10u) POP(11u) POP(12u) POP(13u) POP(14u)
+#endif
   }
 }
 #endif

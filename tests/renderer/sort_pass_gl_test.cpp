@@ -22,15 +22,15 @@ namespace {
 // lists over 10); with period 3 by every third square (ties in lists of 4 and more); ties are
 // broken by triangle. The squares alternate between two objects, and they are drawn in
 // an order that is not the depth order.
-Scene nestedSquares(int period = 10) {
+Scene nestedSquares(int period = 10, int squares = 20) {
   Scene s;
-  s.name = "nested-squares-" + std::to_string(period);
+  s.name = "nested-squares-" + std::to_string(period) + "-" + std::to_string(squares);
   for (int object = 0; object < 2; ++object) {
     SceneObject o;
     o.name = "squares-" + std::to_string(object);
     s.objects.push_back(o);
   }
-  for (int i = 0; i < 20; ++i) {
+  for (int i = 0; i < squares; ++i) {
     const float h = 1.0f - float(i) / 20.0f, z = float((i * 7) % period) * 0.01f - 0.05f;
     appendMesh(s.objects[std::size_t(i % 2)].mesh, makeQuad({0, 0, z}, {h, 0, 0}, {0, h, 0}));
   }
@@ -71,7 +71,7 @@ std::vector<std::vector<std::uint32_t>> sortedBuilds(const Scene& scene, int siz
 
 TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
   for (const auto& [scene, size] : {std::pair{nestedSquares(), 96}, std::pair{nestedSquares(3), 96},
-                                    std::pair{loadScene("builtin:torus"), 64},
+                                    std::pair{nestedSquares(3, 8), 96}, std::pair{loadScene("builtin:torus"), 64},
                                     std::pair{loadScene("builtin:quad-stack?n=16&m=3"), 24},
                                     std::pair{loadScene("builtin:nested-spheres?n=3"), 48}}) {
     std::vector<std::uint32_t> slotsA, slotsB, counts, countsB;
@@ -82,7 +82,11 @@ TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
       ASSERT_EQ(registers[frame].size(), reference[frame].size()) << scene.name;
       EXPECT_EQ(registers[frame], reference[frame]) << scene.name << " frame " << frame;
     }
-    if (scene.name.rfind("nested-squares", 0) == 0) {  // every length 1..20 occurs, and both fill paths ran
+    if (scene.name == "nested-squares-3-8") {  // lists of 1..8 with ties, in 8 slots: the 8-register network
+      const std::set<std::uint32_t> lengths(counts.begin(), counts.end());
+      for (std::uint32_t n = 1; n <= 8; ++n) EXPECT_TRUE(lengths.count(n)) << "no list of " << n;
+      EXPECT_EQ(slotsA, (std::vector<std::uint32_t>{8u, 8u}));
+    } else if (scene.name.rfind("nested-squares", 0) == 0) {  // every length 1..20 occurs, and both fill paths ran
       const std::set<std::uint32_t> lengths(counts.begin(), counts.end());
       for (std::uint32_t n = 1; n <= 20; ++n) EXPECT_TRUE(lengths.count(n)) << "no list of " << n;
       EXPECT_EQ(slotsA, (std::vector<std::uint32_t>{0u, 20u}));
