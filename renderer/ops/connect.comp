@@ -1,7 +1,8 @@
 #version 450 core
-// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in four dispatches:
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in up to four dispatches:
 //  TLAB_PHASE 0: per pixel, maxStep = max |d·∇z| over its list along x and along y (the window
-//     findNeighbor widens by), for phase 1 to read for the three lists it walks;
+//     findNeighbor widens by), for phase 1 to read for the three lists it walks — only where no
+//     sort pass wrote it (buffer/sort.comp writes it as it copies the records);
 //  TLAB_PHASE 1: each pair of adjacent pixels (A, B) once, by the invocation of A for B to its
 //     right and B above it: walking both lists layer by layer, the geodesic neighbour of every
 //     fragment in the other list by the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only
