@@ -109,15 +109,13 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "reads count, head and " + std::to_string(s.composeWords) +
                 " word(s) per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {
-      // Phase 1 reads count, head and maxStep (written by the sort, or else by phase 0) of each
-      // pixel and each record once, and writes each link once (each pair of adjacent pixels
+      // Phase 1 reads count, head and maxStep (written by the sort) of each pixel and each record once, and writes each link once (each pair of adjacent pixels
       // settled once); phase 2 reads count and head again and each fragment's own links, and
       // writes the fields and the flags. Phase 3's full search of the few listed pairs depends on
       // the scene and is not counted.
       t.bytesRead = px * (16 + 8) + fr * (record + 16);
-      t.bytesWritten = (s.listSteps ? 0 : px * 8) + fr * (16 + 4.0 * s.fieldsPerFragment + 4);
-      t.model = std::string(s.listSteps ? "maxStep (from the sort)" : "maxStep written and") +
-                " read per pixel; each record read once; links written once and read once; " +
+      t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4);
+      t.model = "maxStep (from the sort) read per pixel; each record read once; links written once and read once; " +
                 std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and

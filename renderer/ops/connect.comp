@@ -1,8 +1,6 @@
 #version 450 core
-// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in up to four dispatches:
-//  TLAB_PHASE 0: per pixel, maxStep = max |d·∇z| over its list along x and along y (the window
-//     findNeighbor widens by), for phase 1 to read for the three lists it walks — only where no
-//     sort pass wrote it (buffer/sort.comp writes it as it copies the records);
+// The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in three dispatches, after the sort pass has
+// written each list's maxStep = max |d·∇z| along x and along y (the window findNeighbor widens by):
 //  TLAB_PHASE 1: each pair of adjacent pixels (A, B) once, by the invocation of A for B to its
 //     right and B above it: walking both lists layer by layer, the geodesic neighbour of every
 //     fragment in the other list by the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only
@@ -50,8 +48,9 @@ layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPairs[]; };
 #endif
 #if TLAB_PHASE != 2
-// Per pixel, maxStep along x and y (phase 0 writes it, phases 1 and 3 read it).
-layout(std430, binding = BIND_CONNECT_STEPS) buffer Steps { vec2 steps[]; };
+// Per pixel, maxStep along x and y: max |d·∇z| over its list, written by the sort pass as it
+// copies the records (buffer/sort.comp), read by phases 1 and 3.
+layout(std430, binding = BIND_LIST_STEPS) readonly buffer Steps { vec2 steps[]; };
 #endif
 #if TLAB_PHASE == 2 && defined(TLAB_LIST_SEEDS)
 // The fragments Eq. 9 spreads from (value above 0), for the solve's frontier (ops/spread_frontier.comp).
@@ -316,11 +315,7 @@ void main() {
   uint n = pixelCount[pixel];
   uint head = pixelHead[pixel];
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
-#if TLAB_PHASE == 0
-  vec2 maxStep = vec2(0.0);  // max |d·∇z| over this list along x, y
-  for (uint layer = 0u; layer < n; ++layer) maxStep = max(maxStep, abs(gradientOf(head + layer)));
-  if (n > 0u) steps[pixel] = maxStep;
-#elif TLAB_PHASE == 1
+#if TLAB_PHASE == 1
   // Walks the three lists (A, B to its right, B above) with the layers next to the current one in
   // registers: each layer's record is read once by this invocation.
   List a = listAt(xy), b[2] = List[2](listAt(xy + kPairDirections[0]), listAt(xy + kPairDirections[1]));

@@ -1,5 +1,7 @@
 #include "renderer/ops/connect_pass.hpp"
 
+#include <stdexcept>
+
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_error.hpp"
 
@@ -16,7 +18,7 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                              float objectRadius, TransparencyFields& fields, NeighborSearch search) {
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
-  constexpr GLuint kConnectSteps = 27;  // BIND_CONNECT_STEPS
+  constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
   constexpr GLint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
@@ -32,10 +34,10 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
   buffer.bindSorted();
-  // Each list's maxStep: written by the sort pass when it could (it reads every record anyway),
-  // else by phase 0 below.
-  const gpu::Buffer* sortedSteps = buffer.listSteps();
-  (sortedSteps ? *sortedSteps : fields.connectSteps(buffer.pixels())).bindBase(GL_SHADER_STORAGE_BUFFER, kConnectSteps);
+  // Each list's maxStep, written by the sort pass (it reads every record anyway).
+  const gpu::Buffer* steps = buffer.listSteps();
+  if (!steps) throw std::logic_error("the connect pass needs fragment records with a depth gradient");
+  steps->bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
   fields.bindCurrent();
   // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
   // that many words, the pass reads them so (TLAB_SORTED_TEXELS); else as a storage buffer.
@@ -94,10 +96,8 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
   };
-  // Phase 0 finds each list's maxStep (unless the sort did); phase 1 settles most pairs of
-  // adjacent pixels; phase 3 searches the pairs it listed; phase 2 sets the fields from the
-  // (mutual) links.
-  if (!sortedSteps) run("0", buffer.pixels());
+  // Phase 1 settles most pairs of adjacent pixels; phase 3 searches the pairs it listed; phase 2
+  // sets the fields from the (mutual) links.
   run("1", buffer.pixels());
   std::uint32_t listed = 0;
   work.download(&listed, sizeof listed);

@@ -81,11 +81,6 @@ gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
   return connectWork_;
 }
 
-gpu::Buffer& TransparencyFields::connectSteps(std::size_t pixels) {
-  if (!connectSteps_ || connectSteps_.size() < pixels * 8) connectSteps_ = gpu::Buffer(pixels * 8);
-  return connectSteps_;
-}
-
 gpu::ShaderDefines TransparencyFields::defines() const {
   gpu::ShaderDefines d;
   if (withBeta_) d.emplace_back("TLAB_HAS_BETA", "1");

@@ -40,10 +40,8 @@ class TransparencyFields {
   const gpu::Buffer& links() const { return links_; }
   const gpu::Buffer& flags() const { return flags_; }
   gpu::Buffer& scratch() { return alphaOld_; }
-  // The connect pass's work list (a count, then up to 2 × `pixels` pairs of adjacent pixels) and
-  // its maxStep per pixel (two floats), kept likewise.
+  // The connect pass's work list (a count, then up to 2 × `pixels` pairs of adjacent pixels), kept likewise.
   gpu::Buffer& connectWork(std::size_t pixels);
-  gpu::Buffer& connectSteps(std::size_t pixels);
 
   // Sparse Eq. 9 spreading (ops/spread_frontier.comp): fragment lists, each a dispatch header
   // (groups, 1, 1, count) then up to `fragments` indices. frontier(Beta) and frontier(Gamma) are
@@ -76,7 +74,7 @@ class TransparencyFields {
 
   std::size_t fragments_ = 0;
   bool withBeta_ = false, withGamma_ = false;
-  gpu::Buffer links_, flags_, alphaOld_, connectWork_, connectSteps_;
+  gpu::Buffer links_, flags_, alphaOld_, connectWork_;
   PingPong alpha_, beta_, gamma_;
   gpu::Buffer frontier_[3], stamps_;  // frontier_ by Field
   std::uint32_t lastTag_ = 0;

@@ -62,7 +62,9 @@ TEST(NeighborLinks, TheSortWritesEachListsLargestGradientForTheConnectPass) {
       ASSERT_EQ(gpuSteps[p], expected) << scene.name << " pixel " << p;
     }
     EXPECT_GT(covered, pixels / 4) << scene.name;
-    if (scene.name == "quad-stack") EXPECT_EQ(longest, 20u);  // past the 16 registers
+    if (scene.name == "quad-stack") {
+      EXPECT_EQ(longest, 20u);  // past the 16 registers
+    }
   }
 }
 
@@ -179,7 +181,9 @@ TEST(NeighborLinks, PairSplitBetweenFastPathAndFullSearch) {
       EXPECT_EQ(links[rig.fragment(w / 2, y, layer)][0], rig.fragment(w / 2 - 1, y, layer)) << y;
     }
     EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, 2)][1], kNone) << y;
-    if (y + 1 < h) EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, 2)][3], rig.fragment(w / 2 - 1, y + 1, 2)) << y;
+    if (y + 1 < h) {
+      EXPECT_EQ(links[rig.fragment(w / 2 - 1, y, 2)][3], rig.fragment(w / 2 - 1, y + 1, 2)) << y;
+    }
   }
   const auto reference =
       connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, NeighborSearch::AllPairs);
