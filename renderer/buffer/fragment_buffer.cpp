@@ -16,7 +16,7 @@ namespace {
 // Binding points of frame/fragment_layout.glsl.
 enum Binding : GLuint {
   kPixelCount = 0, kPixelHead = 1, kPixelCursor = 2, kListNext = 3, kCounters = 4,
-  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7, kListSteps = 27,
+  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7, kListSteps = 27, kCovered = 28,
 };
 constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
 constexpr std::size_t kSlotBudgetBytes = std::size_t(256) << 20;  // at most this for per-pixel slots
@@ -58,7 +58,8 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   pixelHead_ = gpu::Buffer(n * 4);
   pixelCursor_ = gpu::Buffer(n * 4);
   counters_ = gpu::Buffer(16);
-  blockSums_ = gpu::Buffer(((n + kPrefixBlock - 1) / kPrefixBlock) * 4);
+  blockSums_ = gpu::Buffer(((n + kPrefixBlock - 1) / kPrefixBlock) * 8);  // (fragments, covered pixels) a block
+  coveredPixels_ = gpu::Buffer(n * 4);
   emptyFbo_ = gpu::makeFramebuffer();
   glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_WIDTH, width);
   glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
@@ -117,6 +118,7 @@ std::uint32_t FragmentBuffer::prefixSum() {
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
   blockSums_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
   counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
+  coveredPixels_.bindBase(GL_SHADER_STORAGE_BUFFER, kCovered);
   for (int phase = 0; phase < 3; ++phase) {
     const gpu::ShaderProgram& p = *prefix_[phase];
     p.use();
@@ -125,8 +127,9 @@ std::uint32_t FragmentBuffer::prefixSum() {
     gpu::dispatchLinear(phase == 1 ? 1 : blocks);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   }
-  std::uint32_t counters[2] = {0, 0};
+  std::uint32_t counters[4] = {0, 0, 0, 0};
   counters_.download(counters, sizeof(counters));
+  coveredCount_ = counters[3];
   return counters[1];
 }
 
@@ -246,7 +249,7 @@ void FragmentBuffer::sortLists() {
   // The register sort's key holds triangle * 16 + position in one word (buffer/sort.comp).
   const bool registers = registerSort_ && triangles_ <= (std::size_t{1} << 28);
   glUniform1ui(program.uniform("uRegisterSortMax"), registers ? (shortLists ? 8u : 16u) : 0u);
-  gpu::dispatchLinear(pixels());
+  dispatchCovered(program);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;
   listStepsWritten_ = steps;
@@ -277,6 +280,19 @@ bool FragmentBuffer::bindUnsorted() const {
   return false;
 }
 
+std::uint32_t FragmentBuffer::coveredPixelCount() const {
+  if (!headsReady_) throw std::logic_error("the covered pixels of a frame are listed with its heads (ensureHeads)");
+  return coveredCount_;
+}
+
+void FragmentBuffer::dispatchCovered(const gpu::ShaderProgram& program) const {
+  const std::uint32_t n = coveredPixelCount();
+  coveredPixels_.bindBase(GL_SHADER_STORAGE_BUFFER, kCovered);
+  program.use();
+  glUniform1ui(program.uniform("uCovered"), n);
+  gpu::dispatchLinear(n);
+}
+
 const gpu::Buffer& FragmentBuffer::composeOutput() const {
   if (!composeOutput_) composeOutput_ = gpu::Buffer(pixels() * sizeof(glm::vec4));
   return composeOutput_;
@@ -305,6 +321,12 @@ std::vector<std::uint32_t> FragmentBuffer::pixelHeads() const {
     const auto counts = pixelCounts();
     std::exclusive_scan(counts.begin(), counts.end(), v.begin(), std::uint32_t(0));
   }
+  return v;
+}
+
+std::vector<std::uint32_t> FragmentBuffer::coveredPixels() const {
+  std::vector<std::uint32_t> v(coveredPixelCount());
+  if (!v.empty()) coveredPixels_.download(v.data(), v.size() * 4);
   return v;
 }
 

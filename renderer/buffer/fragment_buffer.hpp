@@ -69,6 +69,14 @@ class FragmentBuffer final : public Fill {
   // i * pixels + pixel, as buffer/fill_slots.frag stores them, and so does the order buffer its
   // keys), false when in the pixel's block (pixelHead bound, a key per fragment at the block).
   bool bindUnsorted() const;
+  // Dispatches `program` with one invocation per pixel that holds a fragment, in pixel order
+  // (frame/covered_pixels.glsl: binding BIND_COVERED and uniform uCovered; the prefix sum lists
+  // them with the heads, so this frame's heads must be ready: after bindSorted, for instance).
+  void dispatchCovered(const gpu::ShaderProgram& program) const;
+  std::uint32_t coveredPixelCount() const;
+  // The per-pixel counts and heads themselves (what bindSorted binds), e.g. for texture views.
+  const gpu::Buffer& pixelCountBuffer() const { return pixelCount_; }
+  const gpu::Buffer& pixelHeadBuffer() const { return pixelHead_; }
   // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
   // each frame costs page faults whose price varies with the machine's load).
   const gpu::Buffer& composeOutput() const;
@@ -90,6 +98,7 @@ class FragmentBuffer final : public Fill {
   std::vector<std::uint32_t> pixelCounts() const;
   std::vector<std::uint32_t> pixelHeads() const;
   std::vector<std::uint32_t> sortedRecords(std::size_t firstFragment, std::size_t count);  // sorts first if needed
+  std::vector<std::uint32_t> coveredPixels() const;  // the list dispatchCovered runs over (heads ready)
 
  private:
   void ensureCapacity(std::size_t fragments);
@@ -121,6 +130,8 @@ class FragmentBuffer final : public Fill {
   gpu::Buffer pixelCount_, pixelHead_, pixelCursor_, counters_, blockSums_;
   gpu::Buffer listNext_, fragsUnsorted_, fragsSorted_, order_, slots_;
   gpu::Buffer listSteps_;   // see listSteps()
+  gpu::Buffer coveredPixels_;  // the pixels with a fragment, in pixel order (buffer/prefix_sum.comp)
+  std::uint32_t coveredCount_ = 0;
   bool listStepsWritten_ = false;
   gpu::Buffer slotOrder_;  // a compositor's sort keys beside the slots (i * pixels + pixel)
   mutable gpu::Buffer composeOutput_;

@@ -2,13 +2,15 @@
 // Sort pass (Carnecky Sec. 4.3): each pixel's fragments, front to back, into the contiguous
 // block [pixelHead, pixelHead + pixelCount) of the sorted buffer (fragData2). Ties in depth are
 // broken by the global triangle index, then by the order the fragments arrived in, so the order
-// never depends on thread scheduling.
+// never depends on thread scheduling. One invocation per pixel that holds a fragment
+// (frame/covered_pixels.glsl).
 // TLAB_LINKED_LIST: the unsorted fragments are a linked list (Alg. 1) instead of a block.
 // TLAB_SLOTS: they sit in uSlots slots (buffer/fill_slots.frag): the i-th at i * uPixels + pixel.
 // (Reading the unsorted records as a buffer texture instead was tried, issue #29: no faster on the
 // 16-layer stack, 0.7 ms slower on the torus.)
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
+#include "frame/covered_pixels.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) readonly buffer ListHead { uint listHead[]; };
@@ -88,8 +90,8 @@ void sortInOrderBuffer(uint pixel, uint base, uint n) {
 // Sec. 5.3.4: 63 compare-exchanges, where inserting 16 keys into 16 registers took 256
 // compare-selects), and stored front to back. Every index into r is a constant (r stays in
 // registers). llvmpipe runs both sides of every branch under a lane mask, and a loop's body once,
-// then again while a lane of the group of 8 needs it: the network costs every group once (empty
-// pixels too), the loads and stores the group's longest list. (Two runs of 8 filled by insertion
+// then again while a lane of the group of 8 needs it: the network costs every group once (hence
+// no invocation for an empty pixel), the loads and stores the group's longest list. (Two runs of 8 filled by insertion
 // and merged, 25 compare-exchanges, were a little faster on the torus's short lists and slower on
 // the 16-layer stack, issue #29.)
 // TLAB_REGISTER_SORT 8: every list of the frame fits 8 (the host knows it from the slots): 8
@@ -161,10 +163,9 @@ void storeListStep(uint pixel) {
 }
 
 void main() {
-  uint pixel = linearInvocation();
-  if (pixel >= uPixels) return;
+  uint pixel;
+  if (!coveredInvocation(pixel)) return;  // (an empty list has nothing to sort)
   uint n = pixelCount[pixel];
-  if (n == 0u) return;
   uint base = pixelHead[pixel];
 #ifndef TLAB_LINKED_LIST
   bool inRegisters = n <= min(uRegisterSortMax, REGISTER_SORT);

@@ -1,10 +1,12 @@
 #version 450 core
-// Smart transparency compositing (Carnecky Sec. 5.5, Alg. 3), one invocation per pixel, front to
-// back, after the profile modifiers of Eqs. 10-11 are applied to β and γ:
+// Smart transparency compositing (Carnecky Sec. 5.5, Alg. 3), one invocation per pixel that holds
+// a fragment (the host cleared the others to the background), front to back, after the profile
+// modifiers of Eqs. 10-11 are applied to β and γ:
 //   α̂_i = (1 − γ_i)·(α_i + (1 − α_i)·β_i),  c ← c + T·α̂_i·c_i,  T ← T·(1 − α̂_i),
 //   and finally c ← c + T·c_background.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
+#include "frame/covered_pixels.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
@@ -17,7 +19,6 @@ layout(std430, binding = BIND_BETA_IN) readonly buffer Beta { float beta[]; };
 #ifdef TLAB_HAS_GAMMA
 layout(std430, binding = BIND_GAMMA_IN) readonly buffer Gamma { float gamma[]; };
 #endif
-uniform uint uPixels;
 uniform vec4 uBackground;
 // TLAB_MODIFIER: 0 none, 1 exp (Eq. 10), 2 pow (Eq. 11), a define rather than a uniform: llvmpipe
 // evaluates both sides of an `if` under a mask, so with a uniform every fragment also computed
@@ -36,8 +37,8 @@ float modifyProfile(float u) {
 }
 
 void main() {
-  uint pixel = linearInvocation();
-  if (pixel >= uPixels) return;
+  uint pixel;
+  if (!coveredInvocation(pixel)) return;
   uint n = pixelCount[pixel];
   uint base = pixelHead[pixel];
   vec3 c = vec3(0.0);

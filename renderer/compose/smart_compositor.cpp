@@ -13,15 +13,21 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   for (const auto& d : fields.defines()) defines.push_back(d);
   defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
-  gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
+  const gpu::Buffer& output = buffer.composeOutput();
   buffer.bindSorted();
   fields.bindCurrent();
+  // A pixel without fragments composes to c + T·c_background with c = 0, T = 1: the background,
+  // exactly. The buffer is cleared to it, and the shader runs for the pixels with fragments only.
+  const glm::vec4 background(glm::vec3(frame.background), 1.0f);
+  glClearNamedBufferData(output.id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, &background[0]);
   output.bindBase(GL_SHADER_STORAGE_BUFFER, 9);  // BIND_OUTPUT
   program.use();
-  glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(buffer.pixels()));
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
-  dispatchCompose(frame, output, buffer.pixels(), "compose/smart_compose.comp");
+  buffer.dispatchCovered(program);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  readOutputBuffer(output, frame.image);
+  gpu::checkGl("compose/smart_compose.comp");
 }
 
 }  // namespace tlab::render

@@ -13,6 +13,7 @@
 #define BIND_OBJECTS 8
 #define BIND_OUTPUT 9
 #define BIND_LIST_STEPS 27  // each list's max |∂z/∂x|, max |∂z/∂y| (buffer/sort.comp, read by ops/connect.comp)
+#define BIND_COVERED 28      // the pixels holding a fragment, in pixel order (buffer/prefix_sum.comp)
 
 #ifndef TLAB_STRIDE
 #define TLAB_STRIDE 2u  // passes that read no fragment records

@@ -2,7 +2,8 @@
 // The connect pass (Carnecky Sec. 4.4, 5.2, 5.3), in three dispatches, after the sort pass has
 // written each list's maxStep = max |d·∇z| along x and along y (the window findNeighbor widens by):
 //  TLAB_PHASE 1: each pair of adjacent pixels (A, B) once, by the invocation of A for B to its
-//     right and B above it: walking both lists layer by layer, the geodesic neighbour of every
+//     right and B above it (phases 1 and 2 run only for pixels that hold a fragment: B's links
+//     towards an empty A are none, written by B's invocation): walking both lists layer by layer, the geodesic neighbour of every
 //     fragment in the other list by the continuity measure ε = wz·εz + wn·εn (Eqs. 1-3), kept only
 //     when no other fragment of its own list matches that candidate better (Alg. 2) — where the
 //     answer follows from the fragment's own layer and the layers next to it in both lists (the
@@ -21,6 +22,7 @@
 // main, over 60 lines, holds one branch per phase (TLAB_PHASE), each of them shorter.
 #include "frame/fragment_layout.glsl"
 #include "frame/compute_index.glsl"
+#include "frame/covered_pixels.glsl"
 #include "ops/field_bindings.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) readonly buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
@@ -280,6 +282,34 @@ uint settledLink(uint a, uint fa, uint fb) {
   return chosen && fb != UNRESOLVED && fb != a ? NO_NEIGHBOR : fa;
 }
 
+#ifdef TLAB_PIXEL_TEXELS
+// The per-pixel counts, heads and maxSteps read as buffer textures (one fetch for all lanes).
+uniform usamplerBuffer uPixelCounts;  // R32UI
+uniform usamplerBuffer uPixelHeads;   // R32UI
+uniform samplerBuffer uListSteps;     // RG32F
+uint countOf(uint p) { return texelFetch(uPixelCounts, int(p)).x; }
+uint headOf(uint p) { return texelFetch(uPixelHeads, int(p)).x; }
+#if TLAB_PHASE != 2
+vec2 stepOf(uint p) { return texelFetch(uListSteps, int(p)).xy; }
+#endif
+#else
+uint countOf(uint p) { return pixelCount[p]; }
+uint headOf(uint p) { return pixelHead[p]; }
+#if TLAB_PHASE != 2
+vec2 stepOf(uint p) { return steps[p]; }
+#endif
+#endif
+
+// The pixel index of q, or 0 beyond the image (a CPU rasterizer runs the reads of both sides of a
+// branch under a mask: every lane's index stays in range).
+uint indexAt(ivec2 q) { return inside(q) ? uint(q.y * uWidth + q.x) : 0u; }
+
+// The number of layers at q (none beyond the image).
+uint countAt(ivec2 q) {
+  uint c = countOf(indexAt(q));
+  return inside(q) ? c : 0u;
+}
+
 // Per pixel: how many layers, where they start, and maxStep (zero for an empty list or one
 // beyond the image, whose lists are empty).
 struct List {
@@ -292,12 +322,12 @@ List listAt(ivec2 q) {
   l.count = 0u;
   l.step = vec2(0.0);
   if (!inside(q)) return l;
-  uint p = uint(q.y * uWidth + q.x);
-  l.count = pixelCount[p];
+  uint p = indexAt(q);
+  l.count = countOf(p);
 #if TLAB_PHASE != 2
   if (l.count > 0u) {
-    l.head = pixelHead[p];
-    l.step = steps[p];
+    l.head = headOf(p);
+    l.step = stepOf(p);
   }
 #endif
   return l;
@@ -309,16 +339,17 @@ void main() {
   if (item >= workCount) return;
   uint pixel = workPairs[item] >> 1u;
 #else
-  uint pixel = linearInvocation();
-  if (pixel >= uint(uWidth * uHeight)) return;
+  uint pixel;  // phases 1 and 2 run for the pixels that hold a fragment only
+  if (!coveredInvocation(pixel)) return;
 #endif
-  uint n = pixelCount[pixel];
-  uint head = pixelHead[pixel];
+  uint n = countOf(pixel);
+  uint head = headOf(pixel);
   ivec2 xy = ivec2(int(pixel % uint(uWidth)), int(pixel / uint(uWidth)));
 #if TLAB_PHASE == 1
   // Walks the three lists (A, B to its right, B above) with the layers next to the current one in
   // registers: each layer's record is read once by this invocation.
-  List a = listAt(xy), b[2] = List[2](listAt(xy + kPairDirections[0]), listAt(xy + kPairDirections[1]));
+  List a = List(head, n, n > 0u ? stepOf(pixel) : vec2(0.0));
+  List b[2] = List[2](listAt(xy + kPairDirections[0]), listAt(xy + kPairDirections[1]));
   uint layers = max(n, max(b[0].count, b[1].count));
   Surfel aPrev, aCur, aNext, bPrev[2], bCur[2], bNext[2];
   aNext = n > 0u ? surfel(head) : Surfel(0.0, vec2(0.0), vec3(0.0), 0u);
@@ -328,6 +359,7 @@ void main() {
     bCur[i] = bNext[i];
   }
   bool listed[2] = bool[2](false, false);
+  bool leftEmpty = countAt(xy - kPairDirections[0]) == 0u, belowEmpty = countAt(xy - kPairDirections[1]) == 0u;
   for (uint L = 0u; L < layers; ++L) {
     aPrev = aCur;
     aCur = aNext;
@@ -347,9 +379,10 @@ void main() {
       if (L < n) links[head + L][2 * i + 1] = settledLink(head + L, fa, fb);
       if (L < b[i].count) links[b[i].head + L][2 * i] = settledLink(b[i].head + L, fb, fa);
     }
-    // Beyond the left and bottom edges no pair writes these.
-    if (L < n && xy.x == 0) links[head + L][0] = NO_NEIGHBOR;
-    if (L < n && xy.y == 0) links[head + L][2] = NO_NEIGHBOR;
+    // No pair writes these beyond the left and bottom edges, nor where the pixel there is empty
+    // (no invocation for it).
+    if (L < n && leftEmpty) links[head + L][0] = NO_NEIGHBOR;
+    if (L < n && belowEmpty) links[head + L][2] = NO_NEIGHBOR;
   }
   for (int i = 0; i < 2; ++i)
     if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);
@@ -381,11 +414,11 @@ void main() {
   uint outside = 0u;        // adjacent pixels beyond the image edge
   for (int k = 0; k < 4; ++k) {
     ivec2 q = xy + kDirections[k];
-    if (inside(q)) qHead[k] = pixelHead[uint(q.y * uWidth + q.x)];
+    if (inside(q)) qHead[k] = headOf(indexAt(q));
     else ++outside;
   }
-  // Seeds are listed 32 layers at a time (one atomic per list and chunk: on a CPU rasterizer
-  // every lane runs an atomic's loop, whether or not it appends).
+  // Seeds are listed 32 layers at a time: one atomic per list and chunk with a seed
+  // (FRONTIER_RESERVE says why).
   for (uint chunk = 0u; chunk < n; chunk += 32u) {
   uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
   for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {

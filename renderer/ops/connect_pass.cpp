@@ -67,6 +67,22 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
         TransparencyFields::clearList(fields.frontier(f));
         fields.frontier(f).bindBase(GL_SHADER_STORAGE_BUFFER, f == Field::Beta ? kSeedsBeta : kSeedsGamma);
       }
+  // Phases 1 and 2 read the per-pixel counts, heads and maxSteps as buffer textures
+  // (TLAB_PIXEL_TEXELS), where the GL allows that many texels.
+  constexpr GLint kPixelCountsUnit = 3, kPixelHeadsUnit = 4, kListStepsUnit = 5;
+  gpu::Texture pixelCounts, pixelHeads, stepTexels;
+  const bool pixelTexels = search == NeighborSearch::Bounded && double(buffer.pixels()) <= double(maxTexels);
+  if (pixelTexels) {
+    const auto view = [&](const gpu::Buffer& b, GLenum format, std::size_t bytes, GLint unit) {
+      gpu::Texture t = gpu::makeTexture(GL_TEXTURE_BUFFER);
+      glTextureBufferRange(t.id(), format, b.id(), 0, GLsizeiptr(bytes));
+      glBindTextureUnit(GLuint(unit), t.id());
+      return t;
+    };
+    pixelCounts = view(buffer.pixelCountBuffer(), GL_R32UI, buffer.pixels() * 4, kPixelCountsUnit);
+    pixelHeads = view(buffer.pixelHeadBuffer(), GL_R32UI, buffer.pixels() * 4, kPixelHeadsUnit);
+    stepTexels = view(*steps, GL_RG32F, buffer.pixels() * 8, kListStepsUnit);
+  }
   // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
   constexpr GLint kLinkTexelsUnit = 1;
   gpu::Texture linkTexels;
@@ -75,11 +91,12 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glTextureBufferRange(linkTexels.id(), GL_RGBA32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
     glBindTextureUnit(kLinkTexelsUnit, linkTexels.id());
   }
-  const auto run = [&](const char* phase, std::size_t items) {
+  const auto run = [&](const char* phase, std::size_t items = 0) {
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
     if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
+    if (pixelTexels && phase[0] != '3') phaseDefines.emplace_back("TLAB_PIXEL_TEXELS", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
     program.use();
     glUniform1i(program.uniform("uWidth"), buffer.width());
@@ -92,17 +109,21 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
     glUniform1i(program.uniform("uSortedPairs"), kSortedPairsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
-    gpu::dispatchLinear(items);
+    glUniform1i(program.uniform("uPixelCounts"), kPixelCountsUnit);
+    glUniform1i(program.uniform("uPixelHeads"), kPixelHeadsUnit);
+    glUniform1i(program.uniform("uListSteps"), kListStepsUnit);
+    if (phase[0] == '3') gpu::dispatchLinear(items);
+    else buffer.dispatchCovered(program);  // phases 1 and 2: the pixels that hold a fragment
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                     GL_BUFFER_UPDATE_BARRIER_BIT);
   };
   // Phase 1 settles most pairs of adjacent pixels; phase 3 searches the pairs it listed; phase 2
   // sets the fields from the (mutual) links.
-  run("1", buffer.pixels());
+  run("1");
   std::uint32_t listed = 0;
   work.download(&listed, sizeof listed);
   if (listed > 0) run("3", listed);
-  run("2", buffer.pixels());
+  run("2");
   // The pass wrote every field's output copy: make those current.
   fields.swap(Field::Alpha);
   if (fields.hasBeta()) fields.swap(Field::Beta);

@@ -20,7 +20,8 @@ void runOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
   program.use();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.id());
   glDispatchComputeIndirect(0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                  GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
@@ -44,6 +45,7 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
       spreadMax_(&shaders.compute("ops/spread_field.comp", {{"TLAB_SPREAD_MAX", "1"}})),
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
       frontierStep_(&shaders.compute("ops/spread_frontier.comp")),
+      frontierStepTexels_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FIELD_TEXELS", "1"}})),
       frontierApply_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FRONTIER_APPLY", "1"}})),
       changed_(sizeof(std::uint32_t)) {}
 
@@ -166,9 +168,31 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   fields.flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
   fields.scratch().bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierValues);
   fields.stamps().bindBase(GL_SHADER_STORAGE_BUFFER, kStamps);
-  frontierStep_->use();
-  glUniform1f(frontierStep_->uniform("uLambda"), static_cast<float>(lambda));
-  glUniform1ui(frontierStep_->uniform("uFreeBit"), freeBit);
+  // Where the GL allows that many texels, the step reads links, flags and the field through
+  // buffer textures (units 0-2; TLAB_FIELD_TEXELS), else through the storage buffers.
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  const auto n = GLsizeiptr(fields.fragments());
+  const bool texels = fieldTexels_ && double(n) <= double(maxTexels);
+  const auto view = [&](const gpu::Buffer& b, GLenum format, GLsizeiptr bytes, GLuint unit) {
+    if (!texels) return gpu::Texture{};
+    gpu::Texture t = gpu::makeTexture(GL_TEXTURE_BUFFER);
+    glTextureBufferRange(t.id(), format, b.id(), 0, bytes);
+    glBindTextureUnit(unit, t.id());
+    return t;
+  };
+  const gpu::Texture links = view(fields.links(), GL_RGBA32UI, n * 16, 0);
+  const gpu::Texture flags = view(fields.flags(), GL_R32UI, n * 4, 1);
+  const gpu::Texture values = view(fields.current(field), GL_R32F, n * 4, 2);
+  const gpu::ShaderProgram& stepProgram = texels ? *frontierStepTexels_ : *frontierStep_;
+  stepProgram.use();
+  if (texels) {
+    glUniform1i(stepProgram.uniform("uLinks"), 0);
+    glUniform1i(stepProgram.uniform("uFlags"), 1);
+    glUniform1i(stepProgram.uniform("uValues"), 2);
+  }
+  glUniform1f(stepProgram.uniform("uLambda"), static_cast<float>(lambda));
+  glUniform1ui(stepProgram.uniform("uFreeBit"), freeBit);
   frontierApply_->use();
   glUniform1ui(frontierApply_->uniform("uFreeBit"), freeBit);
   changed_.clearToZero();
@@ -178,9 +202,9 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     TransparencyFields::clearList(*changed);
     previous->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierIn);
     changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
-    frontierStep_->use();
-    glUniform1ui(frontierStep_->uniform("uTag"), fields.nextTag());
-    runOnList(*frontierStep_, *previous);
+    stepProgram.use();
+    glUniform1ui(stepProgram.uniform("uTag"), fields.nextTag());
+    runOnList(stepProgram, *previous);
     runOnList(*frontierApply_, *changed);
     ++run;
     // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved

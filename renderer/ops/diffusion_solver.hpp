@@ -31,6 +31,9 @@ class DiffusionSolver {
   std::vector<std::string> operations() const;
   // Whether a solve has anything to do (α to diffuse or β/γ to spread).
   bool hasWork() const { return settings_.iterations > 0 && dispatchesPerStep() > 0; }
+  // The frontier steps read links, flags and the field as buffer textures where the GL allows
+  // that many texels (on), or always as storage buffers (off): the same fields (tests compare).
+  void setFieldTexels(bool on) { fieldTexels_ = on; }
 
  private:
   // Which of β and γ a step spreads.
@@ -54,6 +57,8 @@ class DiffusionSolver {
   const gpu::ShaderProgram* spreadMax_;
   const gpu::ShaderProgram* spreadDiffusion_;
   const gpu::ShaderProgram* frontierStep_;
+  const gpu::ShaderProgram* frontierStepTexels_;  // reading links, flags and the field as buffer textures
+  bool fieldTexels_ = true;
   const gpu::ShaderProgram* frontierApply_;
   mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
   mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)

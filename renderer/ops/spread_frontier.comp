@@ -31,8 +31,22 @@ void main() {
     u[changed.items[i]] = values[i];
 }
 #else
+#ifdef TLAB_FIELD_TEXELS
+// The links, flags and values read as buffer textures where the GL allows that many texels (one
+// fetch for all lanes, where a CPU rasterizer reads a storage buffer lane by lane): the same words.
+uniform usamplerBuffer uLinks;   // RGBA32UI, a fragment's 4 links
+uniform usamplerBuffer uFlags;   // R32UI
+uniform samplerBuffer uValues;   // R32F, the field u (TLAB_FRONTIER_APPLY writes it between steps)
+uvec4 linksOf(uint f) { return texelFetch(uLinks, int(f)); }
+uint flagsOf(uint f) { return texelFetch(uFlags, int(f)).x; }
+float valueOf(uint f) { return texelFetch(uValues, int(f)).x; }
+#else
 layout(std430, binding = BIND_LINKS) readonly buffer Links { uvec4 links[]; };
 layout(std430, binding = BIND_FLAGS) readonly buffer Flags { uint flags[]; };
+uvec4 linksOf(uint f) { return links[f]; }
+uint flagsOf(uint f) { return flags[f]; }
+float valueOf(uint f) { return u[f]; }
+#endif
 layout(std430, binding = BIND_STAMPS) buffer Stamps { uint stamps[]; };
 FRONTIER_LIST(readonly, BIND_FRONTIER_IN, Previous, previous);
 FRONTIER_LIST(, BIND_FRONTIER_OUT, Changed, changed);
@@ -42,20 +56,29 @@ uniform uint uTag;  // this step's stamp: no fragment holds it before the step
 
 void main() {
   for (uint i = gl_GlobalInvocationID.x; i < previous.count; i += gl_NumWorkGroups.x * FRONTIER_GROUP) {
-    uvec4 around = links[previous.items[i]];
+    uvec4 around = linksOf(previous.items[i]);
+    uint moved = 0u;  // bit k: neighbour k changes, to news[k]
+    vec4 news = vec4(0.0);
     for (int k = 0; k < 4; ++k) {
       uint f = around[k];
-      if (f == NO_NEIGHBOR || (flags[f] & uFreeBit) == 0u || atomicExchange(stamps[f], uTag) == uTag) continue;
+      if (f == NO_NEIGHBOR || (flagsOf(f) & uFreeBit) == 0u || atomicExchange(stamps[f], uTag) == uTag)
+        continue;
       // Eq. 9, as ops/diffuse_alpha.comp computes it.
-      uvec4 l = links[f];
-      float b = u[f];
+      uvec4 l = linksOf(f);
+      float old = valueOf(f), b = old;
       for (int m = 0; m < 4; ++m)
-        if (l[m] != NO_NEIGHBOR) b = max(b, u[l[m]] - uLambda);
-      if (b != u[f]) {
-        uint at;
-        FRONTIER_APPEND(changed, f, at);
-        values[at] = b;
-      }
+        if (l[m] != NO_NEIGHBOR) b = max(b, valueOf(l[m]) - uLambda);
+      news[k] = b;
+      if (b != old) moved |= 1u << uint(k);
+    }
+    // One atomic for the invocation's changed neighbours (every append to the list's count is an
+    // atomic on one word, which the CPU rasterizer's threads pass between their caches).
+    uint at = 0u;
+    FRONTIER_RESERVE(changed, uint(bitCount(moved)), at);
+    for (uint m = moved; m != 0u; m &= m - 1u, ++at) {
+      int k = findLSB(m);
+      changed.items[at] = around[k];
+      values[at] = news[k];
     }
   }
 }

@@ -1,6 +1,8 @@
 // The illustration buffer against analytic layer counts, its overflow handling and determinism.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "renderer/frame/frame_context.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
@@ -244,6 +246,52 @@ TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
   EXPECT_EQ(buffer.capacity(), n);
   EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads()) << "the prefix sum's";
   EXPECT_EQ(buffer.fragmentCount(), n) << "the prefix sum's";
+}
+
+// The prefix sum lists the pixels that hold a fragment, in pixel order, for the passes that run
+// for those only (issue #29: the sort, smart transparency's connect and compose passes): exactly
+// the pixels with a count above 0, for the slot fill, the scatter fill and the linked lists, and
+// none for a frame without fragments.
+TEST(IllustrationBuffer, ThePrefixSumListsThePixelsThatHoldAFragment) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour;
+  colour |= FragmentProperty::Color;
+  PassTimer timer(false);
+  struct Case {
+    const char* source;
+    FillMethod method;
+    bool slots;  // lists of up to 8 fit the first frame's slots; 12 make it scatter
+  };
+  for (const Case& c : {Case{"builtin:nested-spheres?n=3", FillMethod::CountScatter, true},
+                        Case{"builtin:nested-spheres?n=6", FillMethod::CountScatter, false},
+                        Case{"builtin:nested-spheres?n=3", FillMethod::LinkedList, false}}) {
+    SCOPED_TRACE(std::string(c.source) + " " + fillMethodName(c.method));
+    const Scene scene = loadScene(c.source);
+    GpuScene gpu(scene);
+    const Camera camera = fitCamera(scene.boundingSphere(), 48.0f / 40.0f);
+    RasterUniforms u;
+    u.view = camera.view();
+    u.projection = camera.projection(48.0f / 40.0f);
+    FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), c.method);
+    buffer.build(gpu, u, timer);
+    EXPECT_EQ(buffer.slotsUsed() > 0, c.slots);
+    std::vector<std::uint32_t> expected;
+    const auto counts = buffer.pixelCounts();
+    for (std::uint32_t p = 0; p < counts.size(); ++p)
+      if (counts[p] > 0) expected.push_back(p);
+    ASSERT_GT(expected.size(), 200u);
+    ASSERT_LT(expected.size(), counts.size()) << "the spheres leave background around them";
+    EXPECT_EQ(buffer.coveredPixelCount(), expected.size());
+    EXPECT_EQ(buffer.coveredPixels(), expected);
+    if (c.method == FillMethod::LinkedList) {
+      RasterUniforms away = u;
+      away.view = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 100.0f)) * u.view;  // the scene behind the eye
+      buffer.build(gpu, away, timer);
+      EXPECT_EQ(buffer.fragmentCount(), 0u);
+      EXPECT_EQ(buffer.coveredPixelCount(), 0u);
+      EXPECT_TRUE(buffer.coveredPixels().empty());
+    }
+  }
 }
 
 // A pass that asks for the sorted lists of a frame whose sort was left to the compose pass gets

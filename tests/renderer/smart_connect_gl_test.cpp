@@ -193,6 +193,40 @@ TEST(NeighborLinks, PairSplitBetweenFastPathAndFullSearch) {
   EXPECT_EQ(fields.read(Field::Gamma), reference->read(Field::Gamma));
 }
 
+// Phases 1 and 2 run for the pixels that hold a fragment only (issue #29): a pixel next to an
+// empty one writes its own link towards it. Into fields whose every word held garbage, the pass
+// writes every link, flag and field value as into fresh fields, and a link towards an empty pixel
+// (or beyond the edge) is none — on scenes with background inside and around them.
+TEST(NeighborLinks, EveryLinkIsWrittenWhereTheAdjacentPixelIsEmpty) {
+  for (const char* source : {"builtin:torus", "builtin:nested-spheres?n=3", "builtin:open-cylinders"}) {
+    SCOPED_TRACE(source);
+    SmartRig rig(loadScene(source), 64, 48);
+    const auto fresh = rig.fields->readLinks();
+    const auto freshFlags = rig.fields->readFlags();
+    const auto freshBeta = rig.fields->read(Field::Beta);
+    const std::uint32_t garbage = 0x5A5A5A5Au;
+    for (const tlab::gpu::Buffer* b : {&rig.fields->links(), &rig.fields->flags()})
+      glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &garbage);
+    connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, *rig.fields);
+    EXPECT_EQ(rig.fields->readLinks(), fresh);
+    EXPECT_EQ(rig.fields->readFlags(), freshFlags);
+    EXPECT_EQ(rig.fields->read(Field::Beta), freshBeta);
+    const glm::ivec2 kDirections[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    std::size_t towardsEmpty = 0;
+    for (int y = 0; y < rig.height; ++y)
+      for (int x = 0; x < rig.width; ++x)
+        for (std::uint32_t layer = 0; layer < rig.counts[std::size_t(y) * rig.width + x]; ++layer)
+          for (int k = 0; k < 4; ++k) {
+            const glm::ivec2 q = glm::ivec2(x, y) + kDirections[k];
+            const bool inside = q.x >= 0 && q.y >= 0 && q.x < rig.width && q.y < rig.height;
+            if (inside && rig.counts[std::size_t(q.y) * rig.width + q.x] > 0) continue;
+            ++towardsEmpty;
+            EXPECT_EQ(fresh[rig.fragment(x, y, int(layer))][k], 0xFFFFFFFFu) << x << "," << y << " layer " << layer << " direction " << k;
+          }
+    EXPECT_GT(towardsEmpty, 100u) << "fragments beside an empty pixel";
+  }
+}
+
 // A renderer keeps smart transparency's fields (their memory) across frames: a frame after a
 // larger one, in memory holding that frame's values, is the picture a fresh renderer draws.
 TEST(SmartTransparency, KeptFieldsGiveTheFreshRenderersPicture) {
