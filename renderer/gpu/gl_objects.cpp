@@ -16,6 +16,12 @@ Texture makeTexture(GLenum target) {
   glCreateTextures(target, 1, &id);
   return Texture(id);
 }
+Texture bindBufferTexture(GLuint buffer, GLenum format, std::size_t bytes, GLuint unit) {
+  Texture t = makeTexture(GL_TEXTURE_BUFFER);
+  glTextureBufferRange(t.id(), format, buffer, 0, GLsizeiptr(bytes));
+  glBindTextureUnit(unit, t.id());
+  return t;
+}
 Renderbuffer makeRenderbuffer() {
   GLuint id = 0;
   glCreateRenderbuffers(1, &id);

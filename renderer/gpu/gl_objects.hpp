@@ -57,6 +57,10 @@ Texture makeTexture(GLenum target);
 Renderbuffer makeRenderbuffer();
 Framebuffer makeFramebuffer();
 Query makeQuery(GLenum target);
+// A buffer texture showing the first `bytes` of buffer object `buffer` as texels of `format`,
+// bound to texture unit `unit` (a shader then reads it with texelFetch: one fetch for all lanes,
+// where a CPU rasterizer reads a storage buffer lane by lane).
+Texture bindBufferTexture(GLuint buffer, GLenum format, std::size_t bytes, GLuint unit);
 
 // A GL buffer object with immutable-size storage that can be resized (re-created).
 class Buffer {

@@ -20,7 +20,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
-  constexpr GLint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
+  constexpr GLuint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
@@ -47,17 +47,11 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   gpu::Texture sortedWords, sortedPairs;
   if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
-    sortedWords = gpu::makeTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(sortedWords.id(), GL_R32UI, GLuint(sortedId), 0,
-                         GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
-    glBindTextureUnit(kSortedWordsUnit, sortedWords.id());
+    const std::size_t bytes = buffer.fragmentCount() * layout.stride * 4;
+    sortedWords = gpu::bindBufferTexture(GLuint(sortedId), GL_R32UI, bytes, kSortedWordsUnit);
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
-    if (gradientPair) {  // and two words a texel, for the gradient
-      sortedPairs = gpu::makeTexture(GL_TEXTURE_BUFFER);
-      glTextureBufferRange(sortedPairs.id(), GL_RG32UI, GLuint(sortedId), 0,
-                           GLsizeiptr(buffer.fragmentCount() * layout.stride * 4));
-      glBindTextureUnit(kSortedPairsUnit, sortedPairs.id());
-    }
+    if (gradientPair)  // and two words a texel, for the gradient
+      sortedPairs = gpu::bindBufferTexture(GLuint(sortedId), GL_RG32UI, bytes, kSortedPairsUnit);
   }
   // Eq. 9 spreads only from fragments above 0: phase 2 lists them for the solve's frontier.
   const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
@@ -69,27 +63,19 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
       }
   // Phases 1 and 2 read the per-pixel counts, heads and maxSteps as buffer textures
   // (TLAB_PIXEL_TEXELS), where the GL allows that many texels.
-  constexpr GLint kPixelCountsUnit = 3, kPixelHeadsUnit = 4, kListStepsUnit = 5;
+  constexpr GLuint kPixelCountsUnit = 3, kPixelHeadsUnit = 4, kListStepsUnit = 5;
   gpu::Texture pixelCounts, pixelHeads, stepTexels;
   const bool pixelTexels = search == NeighborSearch::Bounded && double(buffer.pixels()) <= double(maxTexels);
   if (pixelTexels) {
-    const auto view = [&](const gpu::Buffer& b, GLenum format, std::size_t bytes, GLint unit) {
-      gpu::Texture t = gpu::makeTexture(GL_TEXTURE_BUFFER);
-      glTextureBufferRange(t.id(), format, b.id(), 0, GLsizeiptr(bytes));
-      glBindTextureUnit(GLuint(unit), t.id());
-      return t;
-    };
-    pixelCounts = view(buffer.pixelCountBuffer(), GL_R32UI, buffer.pixels() * 4, kPixelCountsUnit);
-    pixelHeads = view(buffer.pixelHeadBuffer(), GL_R32UI, buffer.pixels() * 4, kPixelHeadsUnit);
-    stepTexels = view(*steps, GL_RG32F, buffer.pixels() * 8, kListStepsUnit);
+    pixelCounts = gpu::bindBufferTexture(buffer.pixelCountBuffer().id(), GL_R32UI, buffer.pixels() * 4, kPixelCountsUnit);
+    pixelHeads = gpu::bindBufferTexture(buffer.pixelHeadBuffer().id(), GL_R32UI, buffer.pixels() * 4, kPixelHeadsUnit);
+    stepTexels = gpu::bindBufferTexture(steps->id(), GL_RG32F, buffer.pixels() * 8, kListStepsUnit);
   }
   // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
-  constexpr GLint kLinkTexelsUnit = 1;
+  constexpr GLuint kLinkTexelsUnit = 1;
   gpu::Texture linkTexels;
   if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
-    linkTexels = gpu::makeTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(linkTexels.id(), GL_RGBA32UI, fields.links().id(), 0, GLsizeiptr(buffer.fragmentCount() * 16));
-    glBindTextureUnit(kLinkTexelsUnit, linkTexels.id());
+    linkTexels = gpu::bindBufferTexture(fields.links().id(), GL_RGBA32UI, buffer.fragmentCount() * 16, kLinkTexelsUnit);
   }
   const auto run = [&](const char* phase, std::size_t items = 0) {
     gpu::ShaderDefines phaseDefines = defines;

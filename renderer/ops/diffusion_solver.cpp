@@ -172,14 +172,10 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   // buffer textures (units 0-2; TLAB_FIELD_TEXELS), else through the storage buffers.
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  const auto n = GLsizeiptr(fields.fragments());
+  const std::size_t n = fields.fragments();
   const bool texels = fieldTexels_ && double(n) <= double(maxTexels);
-  const auto view = [&](const gpu::Buffer& b, GLenum format, GLsizeiptr bytes, GLuint unit) {
-    if (!texels) return gpu::Texture{};
-    gpu::Texture t = gpu::makeTexture(GL_TEXTURE_BUFFER);
-    glTextureBufferRange(t.id(), format, b.id(), 0, bytes);
-    glBindTextureUnit(unit, t.id());
-    return t;
+  const auto view = [&](const gpu::Buffer& b, GLenum format, std::size_t bytes, GLuint unit) {
+    return texels ? gpu::bindBufferTexture(b.id(), format, bytes, unit) : gpu::Texture{};
   };
   const gpu::Texture links = view(fields.links(), GL_RGBA32UI, n * 16, 0);
   const gpu::Texture flags = view(fields.flags(), GL_R32UI, n * 4, 1);
