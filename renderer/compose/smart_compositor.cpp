@@ -2,7 +2,6 @@
 
 #include <string>
 
-#include "renderer/gpu/gl_error.hpp"
 #include "renderer/buffer/fragment_buffer.hpp"
 
 namespace tlab::render {
@@ -25,9 +24,7 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
   buffer.dispatchCovered(program);
-  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputBuffer(output, frame.image);
-  gpu::checkGl("compose/smart_compose.comp");
+  finishCompose(frame, output, "compose/smart_compose.comp");
 }
 
 }  // namespace tlab::render

@@ -62,11 +62,15 @@ PixelRect sceneFootprint(const FrameContext& frame) {
   return r;
 }
 
-void dispatchCompose(FrameContext& frame, const gpu::Buffer& output, std::size_t pixels, const char* shader, GLbitfield barrier) {
-  gpu::dispatchLinear(pixels);
+void finishCompose(FrameContext& frame, const gpu::Buffer& output, const char* shader, GLbitfield barrier) {
   glMemoryBarrier(barrier);
   readOutputBuffer(output, frame.image);
   gpu::checkGl(shader);
+}
+
+void dispatchCompose(FrameContext& frame, const gpu::Buffer& output, std::size_t pixels, const char* shader, GLbitfield barrier) {
+  gpu::dispatchLinear(pixels);
+  finishCompose(frame, output, shader, barrier);
 }
 
 }  // namespace tlab::render

@@ -61,8 +61,11 @@ PixelRect sceneFootprint(const FrameContext& frame);
 // readOutputBuffer for the texels inside `rect` only; the image's other pixels become `outside`.
 void readOutputRect(const gpu::Buffer& output, core::Image& image, PixelRect rect, glm::vec4 outside);
 
-// The end of every compositor: its compute program (bound, uniforms set) run once per pixel, a
+// The end of every compositor, after its compute program (bound, uniforms set) was dispatched: a
 // barrier, the output read into frame.image, and a GL error check naming `shader`.
+void finishCompose(FrameContext& frame, const gpu::Buffer& output, const char* shader,
+                   GLbitfield barrier = GL_BUFFER_UPDATE_BARRIER_BIT);
+// The same, dispatching the program once per pixel first.
 void dispatchCompose(FrameContext& frame, const gpu::Buffer& output, std::size_t pixels, const char* shader,
                      GLbitfield barrier = GL_BUFFER_UPDATE_BARRIER_BIT);
 

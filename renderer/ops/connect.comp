@@ -84,6 +84,7 @@ uniform int uWidth;
 uniform int uHeight;
 uniform float uObjectRadius;  // r_obj of Eq. 1
 uniform float uWz;
+uniform float uGapScale;     // wz / r_obj, for beyond
 uniform float uWn;
 uniform float uS;
 uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
@@ -139,9 +140,11 @@ const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), i
 // further away in depth can match better: lists are sorted by depth, and the searches below walk
 // outwards from the predicted depth and stop there. Same result as comparing all pairs (ties go to
 // the lower index, as in a front-to-back scan), in O(log n + matches) instead of O(n) per query.
+// (wz·|Δz|/r_obj as |Δz|·(wz/r_obj), a multiplication where a division costs several: a few ulps
+// apart, far inside the slack of the last two terms, so still a bound.)
 const float kEpsNSlack = 1e-4;
 bool beyond(float depthGap, float bestEps) {
-  return uWz * depthGap / uObjectRadius - uWn * kEpsNSlack > bestEps + abs(bestEps) * 1e-5;
+  return uGapScale * depthGap - uWn * kEpsNSlack > bestEps + abs(bestEps) * 1e-5;
 }
 
 // First index in [head, head + count) whose depth is ≥ z. Neighbouring lists mostly hold the

@@ -89,6 +89,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1i(program.uniform("uHeight"), buffer.height());
     glUniform1f(program.uniform("uObjectRadius"), objectRadius);
     glUniform1f(program.uniform("uWz"), float(settings.wz));
+    glUniform1f(program.uniform("uGapScale"), float(settings.wz / objectRadius));
     glUniform1f(program.uniform("uWn"), float(settings.wn));
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);

@@ -13,7 +13,7 @@ constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/fiel
 constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;  // also the bits of the change record
 constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 constexpr GLuint kLinks = 10, kFlags = 17;           // BIND_LINKS, BIND_FLAGS
-constexpr GLuint kFrontierIn = 23, kFrontierOut = 24, kFrontierValues = 25, kStamps = 26;
+constexpr GLuint kFrontierIn = 23, kFrontierOut = 24, kStamps = 26;
 
 // A frontier pass over the fragments of `list` (its header is the indirect dispatch).
 void runOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
@@ -46,7 +46,6 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
       frontierStep_(&shaders.compute("ops/spread_frontier.comp")),
       frontierStepTexels_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FIELD_TEXELS", "1"}})),
-      frontierApply_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FRONTIER_APPLY", "1"}})),
       changed_(sizeof(std::uint32_t)) {}
 
 const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
@@ -156,58 +155,69 @@ unsigned DiffusionSolver::takeChanges() const {
 }
 
 // Eq. 9 steps on the frontier only (ops/spread_frontier.comp), from the seeds the connect pass
-// listed: per step one pass evaluates the neighbours of the fragments the previous step changed
-// and lists those that change, a second writes their new values. Stops as the full steps do.
+// listed: per step one pass has each fragment the previous step raised offer its value minus λ
+// to its neighbours and lists those it raises. The field's two copies take turns: a step reads
+// one and raises the other. Stops as the full steps do.
 int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps,
                                     unsigned freeBit) const {
   const gpu::Buffer* previous = &fields.frontier(field);  // step 1: the seeds
   const gpu::Buffer* changed = &fields.frontier(Field::Alpha);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);  // the connect pass wrote the seed list's header
-  fields.current(field).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
+  // Without seeds the first step changes nothing, and the full steps stop after it: so do these,
+  // without copying the field (the 16-layer stack has 4 M fragments and no seed).
+  if (TransparencyFields::listCount(*previous) == 0) return 1;
+  // Both copies start as the current values (see ops/spread_frontier.comp for why a copy two
+  // steps old is enough for the step that raises it).
+  const std::size_t n = fields.fragments();
+  glCopyNamedBufferSubData(fields.current(field).id(), fields.output(field).id(), 0, 0, GLsizeiptr(n * sizeof(float)));
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   fields.links().bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
   fields.flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
-  fields.scratch().bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierValues);
   fields.stamps().bindBase(GL_SHADER_STORAGE_BUFFER, kStamps);
   // Where the GL allows that many texels, the step reads links, flags and the field through
-  // buffer textures (units 0-2; TLAB_FIELD_TEXELS), else through the storage buffers.
+  // buffer textures (units 0-3; TLAB_FIELD_TEXELS), else through the storage buffers.
   GLint maxTexels = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
-  const std::size_t n = fields.fragments();
   const bool texels = fieldTexels_ && double(n) <= double(maxTexels);
   const auto view = [&](const gpu::Buffer& b, GLenum format, std::size_t bytes, GLuint unit) {
     return texels ? gpu::bindBufferTexture(b.id(), format, bytes, unit) : gpu::Texture{};
   };
   const gpu::Texture links = view(fields.links(), GL_RGBA32UI, n * 16, 0);
   const gpu::Texture flags = view(fields.flags(), GL_R32UI, n * 4, 1);
-  const gpu::Texture values = view(fields.current(field), GL_R32F, n * 4, 2);
+  // The values of either copy, read in turns (units 2 and 3).
+  const gpu::Texture values[2] = {view(fields.current(field), GL_R32F, n * 4, 2),
+                                  view(fields.output(field), GL_R32F, n * 4, 3)};
   const gpu::ShaderProgram& stepProgram = texels ? *frontierStepTexels_ : *frontierStep_;
   stepProgram.use();
   if (texels) {
     glUniform1i(stepProgram.uniform("uLinks"), 0);
     glUniform1i(stepProgram.uniform("uFlags"), 1);
-    glUniform1i(stepProgram.uniform("uValues"), 2);
   }
   glUniform1f(stepProgram.uniform("uLambda"), static_cast<float>(lambda));
   glUniform1ui(stepProgram.uniform("uFreeBit"), freeBit);
-  frontierApply_->use();
-  glUniform1ui(frontierApply_->uniform("uFreeBit"), freeBit);
   changed_.clearToZero();
   changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
   int run = 0;
+  bool raisedOutput = false;  // whether the last step raised the output copy
   for (int i = 0; i < steps; ++i) {
+    const bool readCurrent = i % 2 == 0;  // step 1 reads the current copy and raises the other
+    (readCurrent ? fields.current(field) : fields.output(field)).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
+    (readCurrent ? fields.output(field) : fields.current(field)).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldOut);
     TransparencyFields::clearList(*changed);
     previous->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierIn);
     changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
     stepProgram.use();
     glUniform1ui(stepProgram.uniform("uTag"), fields.nextTag());
+    if (texels) glUniform1i(stepProgram.uniform("uValues"), readCurrent ? 2 : 3);
     runOnList(stepProgram, *previous);
-    runOnList(*frontierApply_, *changed);
+    raisedOutput = readCurrent;
     ++run;
     // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
     // since the last check), so the same steps are run.
     if ((i & (i + 1)) == 0 && (takeChanges() & freeBit) == 0) break;
     std::swap(previous, changed);
   }
+  if (raisedOutput) fields.swap(field);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   gpu::checkGl("ops/spread_frontier.comp");
   return run;

@@ -59,7 +59,6 @@ class DiffusionSolver {
   const gpu::ShaderProgram* frontierStep_;
   const gpu::ShaderProgram* frontierStepTexels_;  // reading links, flags and the field as buffer textures
   bool fieldTexels_ = true;
-  const gpu::ShaderProgram* frontierApply_;
   mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
   mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };
