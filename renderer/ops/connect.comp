@@ -247,28 +247,24 @@ uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint head
 #ifdef TLAB_ALL_PAIRS
   return countB == 0u ? NO_NEIGHBOR : UNRESOLVED;  // (every pair is searched in phase 3)
 #else
-  if (countB == 0u) return NO_NEIGHBOR;  // (also beyond the image edge)
-  if (L >= countB) return UNRESOLVED;
+  // Written without early returns: llvmpipe runs every branch under a lane mask, so the
+  // conditions are combined and one answer selected, in the order the cases take precedence.
   float predicted = sa.z + dot(vec2(d), sa.g);
   float e = continuity(sa, sb, d);
-  if (!(e < 1.0 / 0.0)) return UNRESOLVED;
-  if (L + 1u < countB && !(bNextZ >= predicted && beyond(bNextZ - predicted, e))) return UNRESOLVED;
-  if (L > 0u && !(bPrevZ <= predicted && beyond(predicted - bPrevZ, e))) return UNRESOLVED;
+  bool unresolved = L >= countB || !(e < 1.0 / 0.0) ||
+                    (L + 1u < countB && !(bNextZ >= predicted && beyond(bNextZ - predicted, e))) ||
+                    (L > 0u && !(bPrevZ <= predicted && beyond(predicted - bPrevZ, e)));
   // The mutual test over the own list (Alg. 2's second half).
-  bool nextVisited = false, prevVisited = false, nextFar = true, prevFar = true;
-  if (L + 1u < n) {
-    nextFar = next.z >= sb.z;
-    nextVisited = !beyond(nextFar ? next.z - sb.z - maxStep : sb.z - next.z - maxStep, e);
-    if (nextVisited && continuity(next, sb, d) < e) return NO_NEIGHBOR;
-  }
-  if (L > 0u) {
-    prevFar = prev.z <= sb.z;
-    prevVisited = !beyond(prevFar ? sb.z - prev.z - maxStep : prev.z - sb.z - maxStep, e);
-    if (prevVisited && continuity(prev, sb, d) < e) return NO_NEIGHBOR;
-  }
+  bool hasNext = L + 1u < n, hasPrev = L > 0u;
+  bool nextFar = !hasNext || next.z >= sb.z;
+  bool nextVisited = hasNext && !beyond(nextFar ? next.z - sb.z - maxStep : sb.z - next.z - maxStep, e);
+  bool prevFar = !hasPrev || prev.z <= sb.z;
+  bool prevVisited = hasPrev && !beyond(prevFar ? sb.z - prev.z - maxStep : prev.z - sb.z - maxStep, e);
+  bool beaten = (nextVisited && continuity(next, sb, d) < e) || (prevVisited && continuity(prev, sb, d) < e);
   bool forwardDone = L + 2u >= n || (nextFar && !nextVisited);
   bool backwardDone = L < 2u || (prevFar && !prevVisited);
-  return forwardDone && backwardDone ? headB + L : UNRESOLVED;
+  uint settled = beaten ? NO_NEIGHBOR : forwardDone && backwardDone ? headB + L : UNRESOLVED;
+  return countB == 0u ? NO_NEIGHBOR : unresolved ? UNRESOLVED : settled;
 #endif
 }
 
