@@ -264,7 +264,7 @@ uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint head
   bool forwardDone = L + 2u >= n || (nextFar && !nextVisited);
   bool backwardDone = L < 2u || (prevFar && !prevVisited);
   uint settled = beaten ? NO_NEIGHBOR : forwardDone && backwardDone ? headB + L : UNRESOLVED;
-  return countB == 0u ? NO_NEIGHBOR : unresolved ? UNRESOLVED : settled;
+  return countB == 0u ? NO_NEIGHBOR : unresolved ? UNRESOLVED : settled;  // (no list: also beyond the image edge)
 #endif
 }
 
