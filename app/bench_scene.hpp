@@ -17,6 +17,9 @@ struct SceneBenchOptions {
   std::string size = "512x512";
   int frames = 5;
   bool json = false;
+  // --until PASS: every frame ends after that pass (RenderRequest::lastPass), so that a pass's own
+  // work is the difference between two runs (bench/count_instructions.sh).
+  std::string until;
 };
 
 // One row per style; the last column is each style's frame time over the first style's.

@@ -163,9 +163,12 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--size", scene->size, "with --scene: image size WxH")->capture_default_str();
   render->add_option("--frames", scene->frames, "with --scene: timed frames (median)")->capture_default_str()->check(CLI::Range(1, 1000));
   render->add_option("--set", scene->settings, "with --scene: style parameter key=value (repeatable)");
+  render->add_option("--until", scene->until,
+                     "with --scene: end every frame after this pass (fill, sort or a style's pass; the picture is left "
+                     "unfinished), to count each pass's work (bench/count_instructions.sh)");
   render->callback([o, scene, render] {
     if (scene->scene.empty()) {
-      for (const char* only : {"--camera", "--size", "--frames", "--set"})
+      for (const char* only : {"--camera", "--size", "--frames", "--set", "--until"})
         if (render->count(only) > 0) throw std::invalid_argument(std::string(only) + " needs --scene");
       return runBenchRender(*o);
     }

@@ -68,7 +68,8 @@ void printHeader(const gpu::GpuInfo& gl, int frames, const std::string& referenc
 
 // Every style of `styles` on one scene at one size, the first style being the ratio's reference.
 std::vector<BenchRow> benchScene(const std::string& source, const std::string& camera, const std::vector<std::string>& styles,
-                                 const std::vector<std::string>& settings, const std::string& size, int frames) {
+                                 const std::vector<std::string>& settings, const std::string& size, int frames,
+                                 const std::string& until = "") {
   SceneOptions so;
   so.scene = source;
   so.camera = camera;
@@ -81,7 +82,9 @@ std::vector<BenchRow> benchScene(const std::string& source, const std::string& c
     row.scene = source, row.style = style, row.size = size;
     try {
       so.style = style;
-      row.timing = bench::timeFrames(renderer, so.request(renderer.scene()), frames);
+      render::RenderRequest request = so.request(renderer.scene());
+      request.lastPass = until;
+      row.timing = bench::timeFrames(renderer, request, frames);
     } catch (const std::exception& e) {
       row.error = e.what();
     }
@@ -170,8 +173,11 @@ void runSceneBench(const SceneBenchOptions& o) {
   for (const auto& s : o.styles) render::findStyle(s);  // unknown style: fail before any GL work
   parseSize(o.size);
   const auto context = gpu::createHeadlessContext();
-  report(benchScene(o.scene, o.camera, o.styles, o.settings, o.size, o.frames), context->info(), o.frames, o.styles.front(),
-         o.json);
+  const auto rows = benchScene(o.scene, o.camera, o.styles, o.settings, o.size, o.frames, o.until);
+  if (!o.until.empty())  // a frame cut short elsewhere than asked measures nothing: say so and stop
+    for (const auto& r : rows)
+      if (!r.error.empty()) throw std::invalid_argument("--until: " + r.error);
+  report(rows, context->info(), o.frames, o.styles.front(), o.json);
 }
 
 void addBenchAll(CLI::App& bench) {

@@ -11,9 +11,19 @@ namespace tlab::render {
 class PassTimer {
  public:
   explicit PassTimer(bool enabled = true) : enabled_(enabled) {}
+  // For benchmarks that count a frame's work pass by pass (tlab bench render --until): the passes
+  // after `name` has run are skipped (further runs of `name` itself are not), so the frame ends
+  // there. Empty: every pass runs.
+  void stopAfter(std::string name) { lastPass_ = std::move(name); }
+  bool ran(const std::string& name) const {
+    for (const auto& p : passes_)
+      if (p.first == name) return true;
+    return false;
+  }
   // Runs `pass`, records its time under `name` (times of a repeated name add up), returns it.
   template <typename F>
   void time(const std::string& name, F&& pass) {
+    if (!lastPass_.empty() && name != lastPass_ && ran(lastPass_)) return;
     const auto start = std::chrono::steady_clock::now();
     pass();
     if (enabled_) finish();
@@ -40,6 +50,7 @@ class PassTimer {
  private:
   static void finish();
   bool enabled_;
+  std::string lastPass_;
   std::vector<std::pair<std::string, double>> passes_;
 };
 

@@ -84,6 +84,7 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
 
   core::Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
+  timer.stopAfter(request.lastPass);
   Fill* const fill = prepareFill(style, params, request, camera);
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
                      scene_.background, fill, image, shaders_, &drawOrder_, &fields_};
@@ -95,6 +96,11 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
       for (auto& op : pass->operations()) operations.push_back(pass->name() + ": " + op);
     }
   gpu::checkGl((request.depthPeeling ? "depth peeling style " : "rendering style ") + style.name());
+  if (!request.lastPass.empty() && !timer.ran(request.lastPass)) {
+    std::string names;
+    for (const auto& [name, ms] : timer.passes()) names += (names.empty() ? "" : ", ") + name;
+    throw std::invalid_argument(style.name() + "'s frame has no pass '" + request.lastPass + "' (its passes: " + names + ")");
+  }
 
   if (stats) {
     *stats = RenderStats{};

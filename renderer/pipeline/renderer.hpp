@@ -34,6 +34,9 @@ struct RenderRequest {
   // normal-variation, iris); fill, initialPoolFragments and allProperties do not apply.
   bool depthPeeling = false;
   bool timePasses = true;
+  // Benchmarks only: the frame ends after this pass ("fill", "sort" or one of the style's passes;
+  // PassTimer::stopAfter), leaving the picture unfinished. Empty: every pass.
+  std::string lastPass;
 };
 
 struct RenderStats {

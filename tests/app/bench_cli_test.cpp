@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <map>
+#include <regex>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -64,6 +66,40 @@ TEST(BenchCli, SceneOptionsWithoutASceneAndUnknownStylesAreOneLine) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
   }
+}
+
+// --until PASS ends every frame after that pass (bench/count_instructions.sh counts a pass's work
+// as the difference between two such runs): the passes after it neither run nor are timed, the
+// table lists the ones that ran in their order, and a pass the frame does not have is one line.
+TEST(BenchCli, UntilEndsEachFrameAfterThePassNamed) {
+  const std::string base = kTlab + " bench render --scene builtin:nested-spheres?n=2 --size 32x24 --frames 1 --gl osmesa ";
+  for (const auto& [until, expected] : {std::pair{"fill", std::vector<std::string>{"fill"}},
+                                        std::pair{"sort", std::vector<std::string>{"fill", "sort"}},
+                                        std::pair{"connect", std::vector<std::string>{"fill", "sort", "connect"}},
+                                        std::pair{"compose", std::vector<std::string>{"fill", "sort", "connect", "solve", "compose"}}}) {
+    const auto r = runCommand(base + "--style smart --until " + until);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    std::string listed;  // the last column of the row: "fill 1.2, sort 0.3"
+    for (const auto& name : expected) listed += (listed.empty() ? "" : " [0-9.]+, ") + name;
+    EXPECT_TRUE(std::regex_search(r.out, std::regex("  " + listed + " [0-9.]+\n$"))) << until << "\n" << r.out;
+  }
+  const auto j = nlohmann::json::parse(runCommand(base + "--style smart --until connect --json").out);
+  const auto& row = j["rows"][0];
+  EXPECT_EQ(row["pass_ms"].size(), 3u) << row;
+  EXPECT_FALSE(row["pass_ms"].contains("solve")) << row;
+  EXPECT_GT(row["fragments"].get<double>(), 0);
+
+  for (const auto& [args, part] :
+       {std::pair{"--style constant,smart --until connect", "--until: constant's frame has no pass 'connect' (its passes: fill, compose)"},
+        std::pair{"--style smart --until blend", "--until: smart's frame has no pass 'blend' (its passes: fill, sort, connect, solve, compose)"}}) {
+    const auto r = runCommand(base + args);
+    EXPECT_EQ(r.exitCode, 1) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(part), std::string::npos) << r.err;
+  }
+  const auto r = runCommand(kTlab + " bench render --until fill");
+  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_NE(r.err.find("--until needs --scene"), std::string::npos) << r.err;
 }
 
 // `tlab bench floor`: the bytes each pass moves, by its model (bench/measure/traffic_floor.hpp),
