@@ -80,43 +80,27 @@ void sortInOrderBuffer(uint pixel, uint base, uint n) {
 }
 
 #ifndef TLAB_LINKED_LIST
-// Lists up to REGISTER_SORT long, sorted in registers. The key of a list's i-th fragment is
-// (depth bits, triangle * 16 + i), each word with its top bit flipped so that keys compare as
-// signed integers (one CPU instruction) in the order of the unsigned words (the host sends
-// uRegisterSortMax = 0 when a triangle index needs more than 28 bits). The source index grows
-// with i (slot i * uPixels + pixel, or head + i), so this order is (depth, triangle, source), the
-// stable order of the insertion sort above. The keys are shifted into r (the rest padded with the
-// largest key), sorted by Batcher's odd-even merge network of 16 inputs (Knuth, TAOCP 3,
-// Sec. 5.3.4: 63 compare-exchanges, where inserting 16 keys into 16 registers took 256
-// compare-selects), and stored front to back. Every index into r is a constant (r stays in
-// registers). llvmpipe runs both sides of every branch under a lane mask, and a loop's body once,
-// then again while a lane of the group of 8 needs it: the network costs every group once (hence
-// no invocation for an empty pixel), the loads and stores the group's longest list. (Two runs of 8 filled by insertion
-// and merged, 25 compare-exchanges, were a little faster on the torus's short lists and slower on
-// the 16-layer stack, issue #29.)
+// Lists up to REGISTER_SORT long, sorted in registers (buffer/key_network.glsl). The key of a
+// list's i-th fragment is (depth bits, triangle * 16 + i) (the host sends uRegisterSortMax = 0 when
+// a triangle index needs more than 28 bits). The source index grows with i (slot i * uPixels +
+// pixel, or head + i), so this order is (depth, triangle, source), the stable order of the
+// insertion sort above. The keys are shifted into the registers (the rest padded with the largest
+// key), sorted by the network of 16 (63 compare-exchanges, where inserting 16 keys into 16
+// registers took 256 compare-selects), and stored front to back. llvmpipe runs both sides of every
+// branch under a lane mask, and a loop's body once, then again while a lane of the group of 8
+// needs it: the network costs every group once (hence no invocation for an empty pixel), the
+// loads and stores the group's longest list. (Two runs of 8 filled by insertion and merged, 25
+// compare-exchanges, were a little faster on the torus's short lists and slower on the 16-layer
+// stack, issue #29.)
 // TLAB_REGISTER_SORT 8: every list of the frame fits 8 (the host knows it from the slots): 8
 // registers and the network of 8 (19 compare-exchanges), for scenes of short lists such as the torus.
 #if TLAB_REGISTER_SORT == 8
-const uint REGISTER_SORT = 8u;
+#define NET_SIZE 8
 #else
-const uint REGISTER_SORT = 16u;
+#define NET_SIZE 16
 #endif
-ivec2 r[REGISTER_SORT];
-const uint FLIP = 0x80000000u;
-bool keyBefore(ivec2 a, ivec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
-// Compare-exchange: the smaller key to r[a], the larger to r[b] (a < b).
-#define CE(a, b) { ivec2 lo = r[a], hi = r[b]; bool swap = keyBefore(hi, lo); r[a] = swap ? hi : lo; r[b] = swap ? lo : hi; }
-#define SORT4(o) CE(o, o + 1u) CE(o + 2u, o + 3u) CE(o, o + 2u) CE(o + 1u, o + 3u) CE(o + 1u, o + 2u)
-// Merges the sorted r[o..o+3] and r[o+4..o+7].
-#define MERGE8(o) CE(o, o + 4u) CE(o + 2u, o + 6u) CE(o + 2u, o + 4u) CE(o + 1u, o + 5u) CE(o + 3u, o + 7u) \
-  CE(o + 3u, o + 5u) CE(o + 1u, o + 2u) CE(o + 3u, o + 4u) CE(o + 5u, o + 6u)
-#define SORT8(o) SORT4(o) SORT4(o + 4u) MERGE8(o)
-#define UP(k) r[k] = r[k - 1u];
-// Merges the sorted r[0..7] and r[8..15].
-#define MERGE16 CE(0u, 8u) CE(4u, 12u) CE(4u, 8u) CE(2u, 10u) CE(6u, 14u) CE(6u, 10u) CE(2u, 4u) CE(6u, 8u) \
-  CE(10u, 12u) CE(1u, 9u) CE(5u, 13u) CE(5u, 9u) CE(3u, 11u) CE(7u, 15u) CE(7u, 11u) CE(3u, 5u) CE(7u, 9u) \
-  CE(11u, 13u) CE(1u, 2u) CE(3u, 4u) CE(5u, 6u) CE(7u, 8u) CE(9u, 10u) CE(11u, 12u) CE(13u, 14u)
-#define POP(k) r[k] = r[k + 1u];
+#include "buffer/key_network.glsl"
+const uint REGISTER_SORT = uint(NET_SIZE);
 
 uint sourceOf(uint pixel, uint base, uint i) {
 #ifdef TLAB_SLOTS
@@ -128,30 +112,17 @@ uint sourceOf(uint pixel, uint base, uint i) {
 
 ivec2 keyAt(uint pixel, uint base, uint i) {
   uint src = sourceOf(pixel, base, i);
-  return ivec2(uvec2(unsortedWord(fragWord(src, OFF_DEPTH)), (unsortedWord(fragWord(src, OFF_PRIM)) << 4u) | i) ^ FLIP);
+  return ivec2(uvec2(unsortedWord(fragWord(src, OFF_DEPTH)), (unsortedWord(fragWord(src, OFF_PRIM)) << 4u) | i) ^ NET_FLIP);
 }
 
 void sortInRegisters(uint pixel, uint base, uint n) {
-  for (uint k = 0u; k < REGISTER_SORT; ++k) r[k] = ivec2(0x7FFFFFFF);  // (0xFFFFFFFF unflipped: no key, depth is never NaN)
-  for (uint i = 0u; i < n; ++i) {  // key i into r[0], the earlier ones one register up
-#if TLAB_REGISTER_SORT != 8
-    UP(15u) UP(14u) UP(13u) UP(12u) UP(11u) UP(10u) UP(9u) UP(8u)
-#endif
-    UP(7u) UP(6u) UP(5u) UP(4u) UP(3u) UP(2u) UP(1u)
-    r[0] = keyAt(pixel, base, i);
-  }
-  SORT8(0u)
-#if TLAB_REGISTER_SORT != 8
-  SORT8(8u)
-  MERGE16
-#endif
+  netClear();
+  for (uint i = 0u; i < n; ++i) { NET_PUSH(keyAt(pixel, base, i)) }
+  NET_SORT
   for (uint i = 0u; i < n; ++i) {  // front to back: store the first, move the rest down
-    uvec2 key = uvec2(r[0]) ^ FLIP;
+    uvec2 key = uvec2(netKeys[0]) ^ NET_FLIP;
     storeRecord(base + i, key.x, key.y >> 4u, sourceOf(pixel, base, key.y & 15u));
-    POP(0u) POP(1u) POP(2u) POP(3u) POP(4u) POP(5u) POP(6u)
-#if TLAB_REGISTER_SORT != 8
-    POP(7u) POP(8u) POP(9u) POP(10u) POP(11u) POP(12u) POP(13u) POP(14u)
-#endif
+    NET_NEXT
   }
 }
 #endif

@@ -6,9 +6,10 @@
 //
 // TLAB_FUSED (issue #29): the sort pass did not run; each invocation sorts its own pixel's list
 // and blends it, so no sorted buffer is written. Lists of up to 4 fragments are sorted in
-// registers by a fixed sorting network (every index a constant: no per-lane memory); longer ones
-// by insertion sort of their (depth, source) keys in the order buffer at the pixel's block, as
-// buffer/sort.comp sorts. The keys (depth bits, then triangle index) are unique within a pixel,
+// registers by a fixed sorting network (every index a constant: no per-lane memory); with
+// TLAB_NETWORK_SORT, lists of 5 to 16 by buffer/sort.comp's register network of 16 (the 16-layer
+// stack's compose 3,080 → 610 M instructions a frame); longer ones by insertion sort of their
+// (depth, source) keys in the order buffer at the pixel's block, as buffer/sort.comp sorts. The keys (depth bits, then triangle index) are unique within a pixel,
 // so both give sort.comp's order, and the blend's arithmetic is the same, term by term.
 // Measured on llvmpipe (issue #29): 4 registers beat 8 (a network of 8 made the compose pass
 // 18.5-166 ms against 16.4-110 ms on the teapot, bunny, torus, abstract scene and 16-layer stack,
@@ -79,6 +80,33 @@ void blendInRegisters(uint pixel, uint base, uint n) {
     if (i < n) blendFragment(r[i].z);
 }
 
+#ifdef TLAB_NETWORK_SORT
+// Frames whose slots hold lists longer than 8 (the host knows the longest list from the slots):
+// lists of 5 to 16 as keys (depth bits, triangle * 16 + i) sorted by the register network of 16,
+// as buffer/sort.comp sorts, then their colours through the keys. A shader of its own: llvmpipe
+// runs every branch's code under a lane mask, so in a frame of short lists (the torus: 2 at most)
+// the network's code alone cost 35 M instructions a frame (issue #29, callgrind).
+#define NET_SIZE 16
+#include "buffer/key_network.glsl"
+const uint NETWORK_SORT = 16u;
+
+void blendInNetwork(uint pixel, uint base, uint n) {
+  netClear();
+  for (uint i = 0u; i < n; ++i) {
+    uint src = recordOf(pixel, base, i);
+    NET_PUSH(ivec2(uvec2(frags[fragWord(src, OFF_DEPTH)], (frags[fragWord(src, OFF_PRIM)] << 4u) | i) ^ NET_FLIP))
+  }
+  NET_SORT
+  for (uint i = 0u; i < n; ++i) {
+    uint position = (uint(netKeys[0].y) ^ NET_FLIP) & 15u;
+    blendFragment(frags[fragWord(recordOf(pixel, base, position), TLAB_OFF_COLOR)]);
+    NET_NEXT
+  }
+}
+#else
+const uint NETWORK_SORT = REGISTER_SORT;
+#endif
+
 // Longer lists: buffer/sort.comp's insertion sort of the keys, then the colours through them.
 bool keyBefore(uvec2 a, uvec2 b) {
   if (a.x != b.x) return a.x < b.x;
@@ -114,7 +142,10 @@ void main() {
   uint base = pixelHead[pixel];
 #endif
 #ifdef TLAB_FUSED
-  if (n > REGISTER_SORT) blendInOrderBuffer(pixel, base, n);
+  if (n > NETWORK_SORT) blendInOrderBuffer(pixel, base, n);
+#ifdef TLAB_NETWORK_SORT
+  else if (n > REGISTER_SORT) blendInNetwork(pixel, base, n);
+#endif
   else if (n > 0u) blendInRegisters(pixel, base, n);
 #else
   for (uint i = 0u; i < n; ++i) blendFragment(sorted[fragWord(base + i, TLAB_OFF_COLOR)]);

@@ -16,6 +16,10 @@ void composeBlend(FrameContext& frame, float alpha) {
   if (!buffer.sorted()) {
     defines.emplace_back("TLAB_FUSED", "1");
     if (buffer.bindUnsorted()) defines.emplace_back("TLAB_SLOTS", "1");
+    // The register network of 16 for frames whose slots hold lists longer than 8 (its keys hold
+    // triangle * 16 + position in one word), the order buffer for lists beyond 4 otherwise.
+    if (buffer.slotsUsed() > 8 && frame.gpuScene.triangleCount() <= (std::size_t{1} << 28))
+      defines.emplace_back("TLAB_NETWORK_SORT", "1");
   } else {
     buffer.bindSorted();
   }

@@ -193,12 +193,15 @@ TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByte
 }
 
 // Issue #29: `constant` leaves the sort to its compose pass, which sorts each list as it blends
-// (in registers up to 4 fragments, in the order buffer beyond). Its pictures must equal, float for
-// float, those of the linked-list fill, whose lists the sort pass sorts before the compose pass
-// blends them: for lists of 1 to 20 fragments (2 to 12 of varied length in the nested spheres), from the slots (second frame) and from the scatter
-// pass (a first frame whose lists outgrow the 8 slots it starts with).
+// (in registers up to 4 fragments; beyond, by the register network of 16 in frames whose slots
+// hold lists longer than 8, else in the order buffer). Its pictures must equal, float for float,
+// those of the linked-list fill, whose lists the sort pass sorts before the compose pass blends
+// them: for lists of 1 to 20 fragments (2 to 12 of varied length in the nested spheres: both
+// register paths in one frame; 16 in the stack of 16: the network full), from the slots (second
+// frame) and from the scatter pass (a first frame whose lists outgrow the 8 slots it starts with).
 TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
-  for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:quad-stack?n=5&m=3", "builtin:open-cylinders",
+  for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:quad-stack?n=16&m=3", "builtin:quad-stack?n=5&m=3",
+                             "builtin:open-cylinders",
                              "builtin:nested-spheres?n=6", "builtin:torus"}) {
     SCOPED_TRACE(source);
     Renderer sortPass(loadScene(source));
