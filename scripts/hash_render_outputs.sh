@@ -10,6 +10,8 @@
 # A render that fails prints "failed" in place of its hash (the same on both sides is no change).
 set -uo pipefail
 tlab=$(realpath "${1:-build/bin/tlab}")
+meshes=()  # absolute paths: the renders run in a temporary folder
+for mesh in ${TLAB_HASH_MESHES:-}; do meshes+=("$(realpath "$mesh")"); done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -42,7 +44,7 @@ for scene in 'torus?triangles=100000' 'quad-stack?n=16'; do
 done
 # the live views' scene (issue #30), whose lists run up to 18 long: both paths of compose/blend.comp's sort
 render "constant-512-abstract" "builtin:abstract?seed=1" --style constant --size 512x512
-for mesh in ${TLAB_HASH_MESHES:-}; do
+for mesh in "${meshes[@]}"; do
   for style in constant smart; do render "$style-$(basename "$mesh")" "$mesh" --style "$style" --size 384x384; done
 done
 if "$tlab" figures --out figures > /dev/null 2>&1; then

@@ -8,7 +8,6 @@ layout(std430, binding = BIND_PIXEL_COUNT) buffer PixelCount { uint pixelCount[]
 layout(std430, binding = BIND_PIXEL_CURSOR) buffer ListHead { uint listHead[]; };
 layout(std430, binding = BIND_LIST_NEXT) writeonly buffer ListNext { uint listNext[]; };
 layout(std430, binding = BIND_COUNTERS) buffer Counters { uint fragCount; uint total; };
-layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };
 uniform int uWidth;
 uniform uint uCapacity;
 #include "buffer/fragment_record.glsl"

@@ -5,7 +5,6 @@
 #include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_HEAD) readonly buffer PixelHead { uint pixelHead[]; };
 layout(std430, binding = BIND_PIXEL_CURSOR) buffer PixelCursor { uint pixelCursor[]; };
-layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };
 uniform int uWidth;
 uniform uint uCapacity;
 #include "buffer/fragment_record.glsl"

@@ -11,7 +11,6 @@
 #include "frame/surface_shading.glsl"
 layout(std430, binding = BIND_PIXEL_COUNT) buffer PixelCount { uint pixelCount[]; };
 layout(std430, binding = BIND_COUNTERS) buffer Counters { uint fragCount; uint total; uint overflowMax; };
-layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };
 uniform int uWidth;
 uniform uint uSlots;
 uniform uint uPixels;

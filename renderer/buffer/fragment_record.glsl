@@ -21,35 +21,49 @@ void captureDerivatives() {
   gStGradient = vec4(dFdx(vST.x), dFdy(vST.x), dFdx(vST.y), dFdy(vST.y));
 }
 
+// The record is put together in registers (every index a constant), then stored: as whole
+// uvec4s where the layout pads it to quads of words (TLAB_RECORD_QUADS; the padding is 0), else
+// word by word.
+#ifdef TLAB_RECORD_QUADS
+layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uvec4 fragQuads[]; };
+#else
+layout(std430, binding = BIND_FRAGS_UNSORTED) writeonly buffer Frags { uint frags[]; };
+#endif
 void writeFragmentRecord(uint frag) {
+  uint record[TLAB_STRIDE];
+  for (uint w = 0u; w < uint(TLAB_STRIDE); ++w) record[w] = 0u;
   float depth = -vViewPosition.z;  // eye-space distance along the view axis
-  frags[fragWord(frag, OFF_DEPTH)] = floatBitsToUint(depth);
-  frags[fragWord(frag, OFF_PRIM)] = uPrimitiveBase + uint(gl_PrimitiveID);
+  record[OFF_DEPTH] = floatBitsToUint(depth);
+  record[OFF_PRIM] = uPrimitiveBase + uint(gl_PrimitiveID);
 #ifdef TLAB_HAS_COLOR
-  frags[fragWord(frag, TLAB_OFF_COLOR)] =
-      packUnorm4x8(vec4(shadeSurface(vObject, gl_FrontFacing, vViewNormal, vViewPosition), 1.0));
+  record[TLAB_OFF_COLOR] = packUnorm4x8(vec4(shadeSurface(vObject, gl_FrontFacing, vViewNormal, vViewPosition), 1.0));
 #endif
 #ifdef TLAB_HAS_NORMAL
-  frags[fragWord(frag, TLAB_OFF_NORMAL)] = encodeNormal(normalize(vViewNormal));
+  record[TLAB_OFF_NORMAL] = encodeNormal(normalize(vViewNormal));
 #endif
 #ifdef TLAB_HAS_DEPTH_GRADIENT
-  frags[fragWord(frag, TLAB_OFF_DEPTH_GRADIENT) + 0u] = floatBitsToUint(gDepthGradient.x);
-  frags[fragWord(frag, TLAB_OFF_DEPTH_GRADIENT) + 1u] = floatBitsToUint(gDepthGradient.y);
+  record[TLAB_OFF_DEPTH_GRADIENT + 0u] = floatBitsToUint(gDepthGradient.x);
+  record[TLAB_OFF_DEPTH_GRADIENT + 1u] = floatBitsToUint(gDepthGradient.y);
 #endif
 #ifdef TLAB_HAS_IDS
   // object id (16 bits) | component id (15 bits) | front-facing flag (bit 31)
-  frags[fragWord(frag, TLAB_OFF_IDS)] =
-      (vObject & 0xFFFFu) | ((vComponent & 0x7FFFu) << 16) | (gl_FrontFacing ? 0x80000000u : 0u);
+  record[TLAB_OFF_IDS] = (vObject & 0xFFFFu) | ((vComponent & 0x7FFFu) << 16) | (gl_FrontFacing ? 0x80000000u : 0u);
 #endif
 #ifdef TLAB_HAS_ST
-  frags[fragWord(frag, TLAB_OFF_ST) + 0u] = floatBitsToUint(vST.x);
-  frags[fragWord(frag, TLAB_OFF_ST) + 1u] = floatBitsToUint(vST.y);
+  record[TLAB_OFF_ST + 0u] = floatBitsToUint(vST.x);
+  record[TLAB_OFF_ST + 1u] = floatBitsToUint(vST.y);
 #endif
 #ifdef TLAB_HAS_NZ_GRADIENT
-  frags[fragWord(frag, TLAB_OFF_NZ_GRADIENT) + 0u] = floatBitsToUint(gNzGradient.x);
-  frags[fragWord(frag, TLAB_OFF_NZ_GRADIENT) + 1u] = floatBitsToUint(gNzGradient.y);
+  record[TLAB_OFF_NZ_GRADIENT + 0u] = floatBitsToUint(gNzGradient.x);
+  record[TLAB_OFF_NZ_GRADIENT + 1u] = floatBitsToUint(gNzGradient.y);
 #endif
 #ifdef TLAB_HAS_ST_GRADIENT
-  for (uint k = 0u; k < 4u; ++k) frags[fragWord(frag, TLAB_OFF_ST_GRADIENT) + k] = floatBitsToUint(gStGradient[k]);
+  for (uint k = 0u; k < 4u; ++k) record[TLAB_OFF_ST_GRADIENT + k] = floatBitsToUint(gStGradient[k]);
+#endif
+#ifdef TLAB_RECORD_QUADS
+  for (uint q = 0u; q < TLAB_RECORD_QUADS; ++q)
+    fragQuads[frag * TLAB_RECORD_QUADS + q] = uvec4(record[4u * q], record[4u * q + 1u], record[4u * q + 2u], record[4u * q + 3u]);
+#else
+  for (uint w = 0u; w < uint(TLAB_STRIDE); ++w) frags[fragWord(frag, w)] = record[w];
 #endif
 }

@@ -9,6 +9,11 @@
 ivec2 netKeys[NET_SIZE];
 const uint NET_FLIP = 0x80000000u;
 bool netBefore(ivec2 a, ivec2 b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+// The key of a list's i-th fragment (i < 16): (depth bits, triangle * 16 + i), flipped; the
+// order (depth, triangle, position). netPosition reads i back, netWords the unflipped words.
+ivec2 netKey(uint depthBits, uint triangle, uint i) { return ivec2(uvec2(depthBits, (triangle << 4u) | i) ^ NET_FLIP); }
+uvec2 netWords(ivec2 key) { return uvec2(key) ^ NET_FLIP; }
+uint netPosition(ivec2 key) { return netWords(key).y & 15u; }
 // No key: 0xFFFFFFFF unflipped, after every real key (a depth is never NaN).
 void netClear() {
   for (uint k = 0u; k < uint(NET_SIZE); ++k) netKeys[k] = ivec2(0x7FFFFFFF);

@@ -31,7 +31,24 @@ uniform uint uPixels;
 // The longest list sorted in registers (REGISTER_SORT, or 0: every list in the order buffer).
 uniform uint uRegisterSortMax;
 
-// The copy into the sorted block: words 0 and 1 (depth, triangle) are known, the rest are read.
+// The copy into the sorted block: words 0 and 1 (depth, triangle) are known, the rest are read;
+// records padded to quads of words (TLAB_RECORD_QUADS) are copied a uvec4 at a time.
+#ifdef TLAB_RECORD_QUADS
+layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer FragQuads { uvec4 fragQuads[]; };
+layout(std430, binding = BIND_FRAGS_SORTED) writeonly buffer SortedQuads { uvec4 sortedQuads[]; };
+void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
+  uvec4 quads[TLAB_RECORD_QUADS];
+  for (uint q = 0u; q < TLAB_RECORD_QUADS; ++q) {
+    quads[q] = fragQuads[src * TLAB_RECORD_QUADS + q];
+    sortedQuads[dst * TLAB_RECORD_QUADS + q] = quads[q];
+  }
+#ifdef TLAB_HAS_DEPTH_GRADIENT
+  const uint g = TLAB_OFF_DEPTH_GRADIENT;
+  vec2 gradient = uintBitsToFloat(uvec2(quads[g / 4u][g % 4u], quads[(g + 1u) / 4u][(g + 1u) % 4u]));
+  gListStep = max(gListStep, abs(gradient));
+#endif
+}
+#else
 void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
   sorted[fragWord(dst, OFF_DEPTH)] = depthBits;
   sorted[fragWord(dst, OFF_PRIM)] = prim;
@@ -41,6 +58,7 @@ void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
   gListStep = max(gListStep, abs(vec2(uintBitsToFloat(unsortedWord(g)), uintBitsToFloat(unsortedWord(g + 1u)))));
 #endif
 }
+#endif
 
 // Longer lists, and every linked list: insertion sort of (depth, source) keys in the order
 // buffer, ties by triangle, then by position (the sort is stable).
@@ -110,9 +128,17 @@ uint sourceOf(uint pixel, uint base, uint i) {
 #endif
 }
 
+// A record's words 0 and 1 (depth, triangle): one uvec2 where records are padded to quads.
+#ifdef TLAB_RECORD_QUADS
+layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer FragPairs { uvec2 fragPairs[]; };
+uvec2 depthAndTriangle(uint src) { return fragPairs[src * TLAB_RECORD_QUADS * 2u]; }
+#else
+uvec2 depthAndTriangle(uint src) { return uvec2(unsortedWord(fragWord(src, OFF_DEPTH)), unsortedWord(fragWord(src, OFF_PRIM))); }
+#endif
+
 ivec2 keyAt(uint pixel, uint base, uint i) {
-  uint src = sourceOf(pixel, base, i);
-  return ivec2(uvec2(unsortedWord(fragWord(src, OFF_DEPTH)), (unsortedWord(fragWord(src, OFF_PRIM)) << 4u) | i) ^ NET_FLIP);
+  uvec2 words = depthAndTriangle(sourceOf(pixel, base, i));
+  return netKey(words.x, words.y, i);
 }
 
 void sortInRegisters(uint pixel, uint base, uint n) {
@@ -120,8 +146,8 @@ void sortInRegisters(uint pixel, uint base, uint n) {
   for (uint i = 0u; i < n; ++i) { NET_PUSH(keyAt(pixel, base, i)) }
   NET_SORT
   for (uint i = 0u; i < n; ++i) {  // front to back: store the first, move the rest down
-    uvec2 key = uvec2(netKeys[0]) ^ NET_FLIP;
-    storeRecord(base + i, key.x, key.y >> 4u, sourceOf(pixel, base, key.y & 15u));
+    uvec2 key = netWords(netKeys[0]);
+    storeRecord(base + i, key.x, key.y >> 4u, sourceOf(pixel, base, netPosition(netKeys[0])));
     NET_NEXT
   }
 }

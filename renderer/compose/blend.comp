@@ -94,12 +94,11 @@ void blendInNetwork(uint pixel, uint base, uint n) {
   netClear();
   for (uint i = 0u; i < n; ++i) {
     uint src = recordOf(pixel, base, i);
-    NET_PUSH(ivec2(uvec2(frags[fragWord(src, OFF_DEPTH)], (frags[fragWord(src, OFF_PRIM)] << 4u) | i) ^ NET_FLIP))
+    NET_PUSH(netKey(frags[fragWord(src, OFF_DEPTH)], frags[fragWord(src, OFF_PRIM)], i))
   }
   NET_SORT
   for (uint i = 0u; i < n; ++i) {
-    uint position = (uint(netKeys[0].y) ^ NET_FLIP) & 15u;
-    blendFragment(frags[fragWord(recordOf(pixel, base, position), TLAB_OFF_COLOR)]);
+    blendFragment(frags[fragWord(recordOf(pixel, base, netPosition(netKeys[0])), TLAB_OFF_COLOR)]);
     NET_NEXT
   }
 }

@@ -71,12 +71,10 @@ uvec4 linksOf(uint f) { return texelFetch(uLinkTexels, int(f)); }
 #else
 uvec4 linksOf(uint f) { return links[f]; }
 #endif
-#if defined(TLAB_GRADIENT_PAIR) && defined(TLAB_SORTED_TEXELS)
-// The same records two words a texel (RG32UI): the gradient in one fetch (stride and offset are even).
-uniform usamplerBuffer uSortedPairs;
-uvec2 sortedPair(uint i) { return texelFetch(uSortedPairs, int(i)).xy; }
-#elif defined(TLAB_GRADIENT_PAIR)
-// The same records two words at a time: the gradient in one load (stride and offset are even).
+#ifdef TLAB_GRADIENT_PAIR
+// The storage buffer's records two words at a time: the gradient in one load (stride and offset
+// are even). (Read as RG32UI texels instead, the pass executed more instructions than with two
+// R32UI fetches, issue #29: the texel path reads the gradient word by word.)
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer SortedPairs { uvec2 sortedPairs[]; };
 uvec2 sortedPair(uint i) { return sortedPairs[i]; }
 #endif

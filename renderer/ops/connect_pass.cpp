@@ -20,15 +20,13 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
-  constexpr GLuint kSortedWordsUnit = 0, kSortedPairsUnit = 2;
+  constexpr GLuint kSortedWordsUnit = 0;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = layout.defines();
   for (const auto& d : fields.defines()) defines.push_back(d);
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
-  const bool gradientPair = layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0;
-  if (gradientPair) defines.emplace_back("TLAB_GRADIENT_PAIR", "1");
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -44,14 +42,14 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   GLint maxTexels = 0, sortedId = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
-  gpu::Texture sortedWords, sortedPairs;
+  gpu::Texture sortedWords;
   if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
     const std::size_t bytes = buffer.fragmentCount() * layout.stride * 4;
     sortedWords = gpu::bindBufferTexture(GLuint(sortedId), GL_R32UI, bytes, kSortedWordsUnit);
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
-    if (gradientPair)  // and two words a texel, for the gradient
-      sortedPairs = gpu::bindBufferTexture(GLuint(sortedId), GL_RG32UI, bytes, kSortedPairsUnit);
+  } else if (layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0) {
+    defines.emplace_back("TLAB_GRADIENT_PAIR", "1");  // the storage buffer's gradient in one load
   }
   // Eq. 9 spreads only from fragments above 0: phase 2 lists them for the solve's frontier.
   const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
@@ -94,7 +92,6 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
-    glUniform1i(program.uniform("uSortedPairs"), kSortedPairsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
     glUniform1i(program.uniform("uPixelCounts"), kPixelCountsUnit);
     glUniform1i(program.uniform("uPixelHeads"), kPixelHeadsUnit);

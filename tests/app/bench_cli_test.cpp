@@ -126,15 +126,16 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   EXPECT_EQ(constant["compose"]["bytes_read"].get<double>(), pixels * 24 + fragments * record);
   EXPECT_EQ(constant["compose"]["bytes_written"].get<double>(), pixels * 32);
   EXPECT_GT(constant["compose"]["floor_ms"].get<double>(), 0.0);
-  // Smart's connect pass: records of 7 words (depth, triangle, colour, normal, ∇z, ids: the quads
-  // are 4 components), links of 4 words, 3 fields (α, β, γ) and the flags, maxStep 2 floats a
-  // pixel, which smart's sort writes beside the sorted records.
+  // Smart's connect pass: records of 8 words (depth, triangle, colour, normal, ∇z, ids: 7 words
+  // padded to two quads; the scene's quads are 4 components), links of 4 words, 3 fields (α, β,
+  // γ) and the flags, maxStep 2 floats a pixel, which smart's sort writes beside the sorted records.
   ASSERT_FALSE(connect.is_null()) << j;
-  EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (28 + 16));
+  const double smartRecord = 32;
+  EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (smartRecord + 16));
   EXPECT_EQ(connect["bytes_written"].get<double>(), fragments * (16 + 3 * 4 + 4));
   ASSERT_FALSE(smartSort.is_null()) << j;
-  EXPECT_EQ(smartSort["bytes_read"].get<double>(), fragments * 28 + pixels * 8);
-  EXPECT_EQ(smartSort["bytes_written"].get<double>(), fragments * 28 + pixels * 8);
+  EXPECT_EQ(smartSort["bytes_read"].get<double>(), fragments * smartRecord + pixels * 8);
+  EXPECT_EQ(smartSort["bytes_written"].get<double>(), fragments * smartRecord + pixels * 8);
   // The streaming rate of a copying compute shader, and each row's time over it.
   EXPECT_GT(j["gl_copy_bandwidth"].get<double>(), 0.0);
   const int words = j["gl_copy_words_per_invocation"];

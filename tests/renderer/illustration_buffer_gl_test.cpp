@@ -1,6 +1,8 @@
 // The illustration buffer against analytic layer counts, its overflow handling and determinism.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "renderer/frame/frame_context.hpp"
@@ -183,6 +185,56 @@ TEST(IllustrationBuffer, SlotFillAndItsScatterFallbackGiveTheSameSortedBuffer) {
   EXPECT_EQ(buffer.fragmentCount(), 20u * 48u * 40u);
   EXPECT_EQ(buffer.pixelHeads(), heads);
   EXPECT_EQ(buffer.sortedRecords(0, buffer.fragmentCount()), scattered);
+}
+
+// Issue #29: records of 4 words or more are padded to quads of words, written by the fill and
+// copied by the sort as uvec4s; shorter ones word by word. The two paths give the same words: a
+// padded record (smart's 7 words with the ids, padded to 8) and `constant`'s 3-word record of the
+// same scene hold the same depth, triangle and colour, record by record; the second quad arrives
+// too (the ids differ between the stack's quads) and the padding is 0 — through the scatter pass
+// (first frame: 20 layers overflow 8 slots), the slots (second frame) and the linked lists.
+TEST(IllustrationBuffer, RecordsPaddedToQuadsHoldTheWordsOfTheWordByWordPath) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour, padded;
+  colour |= FragmentProperty::Color;
+  padded |= FragmentProperty::Color;
+  padded |= FragmentProperty::Normal;
+  padded |= FragmentProperty::DepthGradient;
+  padded |= FragmentProperty::Ids;
+  const FragmentLayout wordLayout(colour), quadLayout(padded);
+  ASSERT_EQ(wordLayout.quads, 0u);
+  ASSERT_EQ(quadLayout.stride, 8u);
+  ASSERT_EQ(quadLayout.idsOffset, 6u);
+  const Scene scene = loadScene("builtin:quad-stack?n=20&m=4");
+  GpuScene gpu(scene);
+  RasterUniforms u;
+  u.view = scene.camera->view();
+  u.projection = scene.camera->projection(48.0f / 40.0f);
+  PassTimer timer(false);
+  for (const FillMethod method : {FillMethod::CountScatter, FillMethod::LinkedList}) {
+    FragmentBuffer words(shaders, 48, 40, wordLayout, method), quads(shaders, 48, 40, quadLayout, method);
+    for (int frame = 0; frame < 2; ++frame) {
+      words.build(gpu, u, timer);
+      quads.build(gpu, u, timer);
+      ASSERT_EQ(quads.fragmentCount(), 20u * 48u * 40u);
+      ASSERT_EQ(words.fragmentCount(), quads.fragmentCount());
+      const auto a = words.sortedRecords(0, words.fragmentCount());
+      const auto b = quads.sortedRecords(0, quads.fragmentCount());
+      std::size_t mismatches = 0, nonzeroPadding = 0;
+      std::set<std::uint32_t> ids;
+      for (std::size_t f = 0; f < quads.fragmentCount(); ++f) {
+        for (std::size_t w = 0; w < 3; ++w) mismatches += a[f * 3 + w] != b[f * 8 + w];
+        ids.insert(b[f * 8 + 6]);
+        nonzeroPadding += b[f * 8 + 7] != 0;
+      }
+      EXPECT_EQ(mismatches, 0u) << fillMethodName(method) << ", frame " << frame;
+      EXPECT_GE(ids.size(), 4u) << fillMethodName(method) << ", frame " << frame;
+      EXPECT_EQ(nonzeroPadding, 0u) << fillMethodName(method) << ", frame " << frame;
+    }
+    if (method == FillMethod::CountScatter) {
+      EXPECT_EQ(quads.slotsUsed(), 20u) << "the second frame fills the slots";
+    }
+  }
 }
 
 TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByteIdentical) {
