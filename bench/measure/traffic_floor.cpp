@@ -76,14 +76,22 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   s.fragments = stats.fragments;
   const render::FragmentLayout layout(propertiesNamed(stats.fragmentProperties));
   s.recordWords = layout.stride;
+  s.dataWords = layout.words;
   s.listSteps = layout.properties.has(render::FragmentProperty::DepthGradient);
-  // Every compositor reads whole records; constant's, which sorts each list as it blends (issue #29),
-  // its depth and triangle for the sort and its colour.
-  s.composeWords = s.recordWords;
+  // The fill stores and the sort copies whole records, their padding too (uvec4 at a time); the
+  // passes that read records read only the words they use. A compositor reads every property of the
+  // record (constant's, which sorts each list as it blends (issue #29), its depth and triangle for
+  // the sort and its colour); smart's reads the colour and the solved fields.
+  s.composeWords = layout.words;
   if (style == "smart") {
     const auto smart = render::SmartSettings::from(params);
     s.fieldsPerFragment = 1 + (smart.silhouettes ? 1 : 0) + (smart.halos ? 1 : 0);
     s.solve = solveShape(smart, fields);
+    s.composeWords = 1;
+    s.composeFields = s.fieldsPerFragment;
+    const auto has = [&](render::FragmentProperty p) { return layout.properties.has(p) ? 1u : 0u; };
+    s.connectWords = 1 + has(render::FragmentProperty::Normal) + 2 * has(render::FragmentProperty::DepthGradient) +
+                     has(render::FragmentProperty::Ids);
   }
   return s;
 }
@@ -91,32 +99,37 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
 std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std::string>& passes) {
   const double px = double(s.pixels), fr = double(s.fragments);
   const double record = 4.0 * s.recordWords;
+  const std::string recordText = std::to_string(s.recordWords) + " words" + 
+                                 (s.recordWords > s.dataWords ? " with " + std::to_string(s.recordWords - s.dataWords) + " of padding" : "");
   std::vector<PassTraffic> out;
   for (const auto& name : passes) {
     PassTraffic t;
     t.pass = name;
     if (name == "fill") {
       t.bytesWritten = fr * record + px * 8;
-      t.model = "writes each record once, a count and a head per pixel";
+      t.model = "writes each record once (" + recordText + "), a count and a head per pixel";
     } else if (name == "sort") {
       t.bytesRead = fr * record + px * 8;
       t.bytesWritten = fr * record + (s.listSteps ? px * 8 : 0);
-      t.model = std::string("reads count, head and each record once, writes each record once") +
+      t.model = "reads count, head and each record once, writes each record once (" + recordText + ")" +
                 (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "");
     } else if (name == "compose") {
-      t.bytesRead = px * (8 + 16) + fr * 4.0 * s.composeWords;
+      t.bytesRead = px * (8 + 16) + fr * 4.0 * (s.composeWords + s.composeFields);
       t.bytesWritten = px * (16 + 16);
-      t.model = "reads count, head and " + std::to_string(s.composeWords) +
-                " word(s) per fragment; writes RGBA32F per pixel, read back into the image";
+      t.model = "reads count, head and " + std::to_string(s.composeWords) + " word(s) of each record" +
+                (s.composeFields ? " and " + std::to_string(s.composeFields) + " field(s)" : std::string()) +
+                " per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {
-      // Phase 1 reads count, head and maxStep (written by the sort) of each pixel and each record once, and writes each link once (each pair of adjacent pixels
-      // settled once); phase 2 reads count and head again and each fragment's own links, and
-      // writes the fields and the flags. Phase 3's full search of the few listed pairs depends on
-      // the scene and is not counted.
-      t.bytesRead = px * (16 + 8) + fr * (record + 16);
+      // Phase 1 reads count, head and maxStep (written by the sort) of each pixel and the words ε
+      // needs of each record once (depth, ∇z, normal, ids), and writes each link once (each pair
+      // of adjacent pixels settled once); phase 2 reads count and head again and each fragment's
+      // own links, and writes the fields and the flags. Phase 3's full search of the few listed
+      // pairs depends on the scene and is not counted.
+      t.bytesRead = px * (16 + 8) + fr * (4.0 * s.connectWords + 16);
       t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4);
-      t.model = "maxStep (from the sort) read per pixel; each record read once; links written once and read once; " +
-                std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
+      t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) +
+                " word(s) of each record read once; links written once and read once; " + std::to_string(s.fieldsPerFragment) +
+                " field(s) and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and
       // value are read and its value written (its neighbours' values are other fragments' own,

@@ -21,6 +21,7 @@ FragmentLayout::FragmentLayout(FragmentProperties p) : properties(p) {
   // Records of 4 words or more are padded to whole quads of words (TLAB_RECORD_QUADS): the
   // passes then move them as uvec4s, which llvmpipe loads and stores at about half the cost
   // of four single words (issue #29).
+  words = stride;
   if (stride >= 4) {
     stride = (stride + 3) / 4 * 4;
     quads = stride / 4;

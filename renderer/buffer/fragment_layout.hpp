@@ -35,6 +35,7 @@ struct FragmentLayout {
   explicit FragmentLayout(FragmentProperties properties);
   FragmentProperties properties;
   std::uint32_t stride = 2;  // words per fragment
+  std::uint32_t words = 2;   // the words the properties take: stride without the padding
   std::uint32_t quads = 0;   // stride / 4 where the record is padded to whole uvec4s, else 0
   std::uint32_t colorOffset = 0, normalOffset = 0, depthGradientOffset = 0, idsOffset = 0, stOffset = 0;
   std::uint32_t nzGradientOffset = 0, stGradientOffset = 0;

@@ -112,12 +112,13 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_GT(j["copy_bandwidth_1_thread"].get<double>(), 0);
   std::map<std::string, nlohmann::json> constant;
-  nlohmann::json connect, smartSort;
+  nlohmann::json connect, smartSort, smartCompose;
   for (const auto& row : j["rows"]) {
     EXPECT_EQ(row["fragments"], 3072) << row;
     if (row["style"] == "constant") constant[row["pass"]] = row;
     if (row["style"] == "smart" && row["pass"] == "connect") connect = row;
     if (row["style"] == "smart" && row["pass"] == "sort") smartSort = row;
+    if (row["style"] == "smart" && row["pass"] == "compose") smartCompose = row;
   }
   ASSERT_EQ(constant.size(), 2u) << j;  // fill and compose: constant's compose pass sorts (issue #29)
   const double pixels = 32 * 24, fragments = 3072, record = 12;
@@ -126,16 +127,20 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   EXPECT_EQ(constant["compose"]["bytes_read"].get<double>(), pixels * 24 + fragments * record);
   EXPECT_EQ(constant["compose"]["bytes_written"].get<double>(), pixels * 32);
   EXPECT_GT(constant["compose"]["floor_ms"].get<double>(), 0.0);
-  // Smart's connect pass: records of 8 words (depth, triangle, colour, normal, ∇z, ids: 7 words
-  // padded to two quads; the scene's quads are 4 components), links of 4 words, 3 fields (α, β,
-  // γ) and the flags, maxStep 2 floats a pixel, which smart's sort writes beside the sorted records.
+  // Smart's records: 8 words (depth, triangle, colour, normal, ∇z, ids: 7 words padded to two
+  // quads; the scene's quads are 4 components), which the fill and the sort move whole. Its connect
+  // pass reads 5 of them (depth, ∇z, normal, ids), maxStep (2 floats a pixel, which smart's sort
+  // writes beside the sorted records) and links of 4 words, and writes the links, 3 fields (α, β,
+  // γ) and the flags; its compose reads the colour word and the 3 fields.
   ASSERT_FALSE(connect.is_null()) << j;
   const double smartRecord = 32;
-  EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (smartRecord + 16));
+  EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (5 * 4 + 16));
   EXPECT_EQ(connect["bytes_written"].get<double>(), fragments * (16 + 3 * 4 + 4));
   ASSERT_FALSE(smartSort.is_null()) << j;
   EXPECT_EQ(smartSort["bytes_read"].get<double>(), fragments * smartRecord + pixels * 8);
   EXPECT_EQ(smartSort["bytes_written"].get<double>(), fragments * smartRecord + pixels * 8);
+  ASSERT_FALSE(smartCompose.is_null()) << j;
+  EXPECT_EQ(smartCompose["bytes_read"].get<double>(), pixels * 24 + fragments * (1 + 3) * 4);
   // The streaming rate of a copying compute shader, and each row's time over it.
   EXPECT_GT(j["gl_copy_bandwidth"].get<double>(), 0.0);
   const int words = j["gl_copy_words_per_invocation"];

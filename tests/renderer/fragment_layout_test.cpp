@@ -29,6 +29,7 @@ TEST(FragmentLayout, RecordsOfThreeWordsOrFewerAreNotPadded) {
   EXPECT_EQ(bare.quads, 0u);
   const FragmentLayout colour(with({FragmentProperty::Color}));  // constant's record
   EXPECT_EQ(colour.stride, 3u);
+  EXPECT_EQ(colour.words, 3u);
   EXPECT_EQ(colour.quads, 0u);
   EXPECT_EQ(colour.colorOffset, 2u);
   EXPECT_EQ(defineOf(colour, "TLAB_STRIDE"), "3u");
@@ -42,6 +43,7 @@ TEST(FragmentLayout, LongerRecordsArePaddedToWholeQuadsWithTheirOffsetsUnchanged
     if (ids) p |= FragmentProperty::Ids;
     const FragmentLayout smart(p);
     EXPECT_EQ(smart.stride, 8u);
+    EXPECT_EQ(smart.words, ids ? 7u : 6u);  // the words the properties take, without the padding
     EXPECT_EQ(smart.quads, 2u);
     EXPECT_EQ(smart.colorOffset, 2u);
     EXPECT_EQ(smart.normalOffset, 3u);
@@ -54,12 +56,14 @@ TEST(FragmentLayout, LongerRecordsArePaddedToWholeQuadsWithTheirOffsetsUnchanged
   }
   const FragmentLayout four(with({FragmentProperty::Color, FragmentProperty::Normal}));  // a whole quad: no padding
   EXPECT_EQ(four.stride, 4u);
+  EXPECT_EQ(four.words, 4u);
   EXPECT_EQ(four.quads, 1u);
   // Every property: 2 + 1 + 1 + 2 + 1 + 2 + 2 + 4 = 15 words -> 16; (s, t)'s gradient straddles quads 2 and 3.
   const FragmentLayout all(with({FragmentProperty::Color, FragmentProperty::Normal, FragmentProperty::DepthGradient,
                                  FragmentProperty::Ids, FragmentProperty::SurfaceParams,
                                  FragmentProperty::NormalZGradient, FragmentProperty::StGradient}));
   EXPECT_EQ(all.stride, 16u);
+  EXPECT_EQ(all.words, 15u);
   EXPECT_EQ(all.quads, 4u);
   EXPECT_EQ(all.stGradientOffset, 11u);
 }
