@@ -42,12 +42,17 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   GLint maxTexels = 0, sortedId = 0;
   glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
-  gpu::Texture sortedWords;
+  gpu::Texture sortedWords, sortedQuads;
+  constexpr GLuint kSortedQuadsUnit = 2;
   if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
     const std::size_t bytes = buffer.fragmentCount() * layout.stride * 4;
     sortedWords = gpu::bindBufferTexture(GLuint(sortedId), GL_R32UI, bytes, kSortedWordsUnit);
     defines.emplace_back("TLAB_SORTED_TEXELS", "1");
+    if (layout.quads > 0) {  // the same words as RGBA32UI texels: a record's surfel in a texel per quad
+      sortedQuads = gpu::bindBufferTexture(GLuint(sortedId), GL_RGBA32UI, bytes, kSortedQuadsUnit);
+      defines.emplace_back("TLAB_SORTED_QUADS", "1");
+    }
   } else if (layout.stride % 2 == 0 && layout.depthGradientOffset % 2 == 0) {
     defines.emplace_back("TLAB_GRADIENT_PAIR", "1");  // the storage buffer's gradient in one load
   }
@@ -92,6 +97,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uS"), float(settings.s));
     glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
+    glUniform1i(program.uniform("uSortedQuads"), kSortedQuadsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
     glUniform1i(program.uniform("uPixelCounts"), kPixelCountsUnit);
     glUniform1i(program.uniform("uPixelHeads"), kPixelHeadsUnit);
