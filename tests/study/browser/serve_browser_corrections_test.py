@@ -28,12 +28,18 @@ import serve_browser_test as base  # noqa: E402
 from serve_browser_test import ActionChains, Keys, check  # noqa: E402
 
 
+def error_texts(p):
+    """The texts of the refusal messages on show, read in the page at once (a message the page
+    replaces while Selenium reads it would be a stale element)."""
+    return p.driver.execute_script("return Array.from(document.querySelectorAll('#screen .error'), (e) => e.textContent);")
+
+
 def refusal_shown(p, what, containing=""):
     """Waits for the page's message of a refusal (containing a given text) and checks the trial stays."""
     seq = p.state()["seq"]
-    error = p.until(lambda: [e for e in p.finds("#screen .error") if e.text and containing in e.text], what)[0]
+    text = p.until(lambda: [t for t in error_texts(p) if t and containing in t], what)[0]
     check(p.state()["seq"] == seq and p.state()["kind"] == "trial", f"{what}: the trial was left")
-    return error.text
+    return text
 
 
 def answer_sent_count(p):
@@ -69,7 +75,7 @@ def correct_layer_number(p, seq):
     again = p.next_screen(-1)
     check(again["seq"] == seq and again["kind"] == "trial", f"after the reload: {again}, expected trial screen {seq}")
     p.trial_ready()
-    check(not [e for e in p.finds("#screen .error") if e.text], "the refusal's message is still shown after the reload")
+    check(not [t for t in error_texts(p) if t], "the refusal's message is still shown after the reload")
     p.type_number(2, select_all=True)
     return "2"
 
@@ -91,8 +97,9 @@ def correct_label(p):
     p.press_at(p.finds("#stage .hit")[0])
     refusal_shown(p, "label: the refused click")
     button = p.finds("#screen button.label")[-1]
+    label = button.get_attribute("data-label")  # read before the click: the next screen replaces the button
     p.press_at(button)
-    return button.get_attribute("data-label")
+    return label
 
 
 def correct_label_set(p):
