@@ -99,7 +99,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
 std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std::string>& passes) {
   const double px = double(s.pixels), fr = double(s.fragments);
   const double record = 4.0 * s.recordWords;
-  const std::string recordText = std::to_string(s.recordWords) + " words" + 
+  const std::string recordText = std::to_string(s.recordWords) + " words" +
                                  (s.recordWords > s.dataWords ? " with " + std::to_string(s.recordWords - s.dataWords) + " of padding" : "");
   std::vector<PassTraffic> out;
   for (const auto& name : passes) {

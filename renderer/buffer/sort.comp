@@ -44,7 +44,7 @@ void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
   }
 #ifdef TLAB_HAS_DEPTH_GRADIENT
   const uint g = TLAB_OFF_DEPTH_GRADIENT;
-  vec2 gradient = uintBitsToFloat(uvec2(quads[g / 4u][g % 4u], quads[(g + 1u) / 4u][(g + 1u) % 4u]));
+  vec2 gradient = uintBitsToFloat(uvec2(quadWord(quads, g), quadWord(quads, g + 1u)));
   gListStep = max(gListStep, abs(gradient));
 #endif
 }

@@ -23,6 +23,10 @@
 #define OFF_PRIM 1u
 
 uint fragWord(uint frag, uint offset) { return frag * uint(TLAB_STRIDE) + offset; }
+#ifdef TLAB_RECORD_QUADS
+// Word `offset` of a record held as its quads of words (a constant offset picks one register).
+uint quadWord(uvec4 q[TLAB_RECORD_QUADS], uint offset) { return q[offset >> 2u][offset & 3u]; }
+#endif
 
 // Unit normals in one word: octahedral mapping, two 16-bit signed-normalised components
 // (angular error below 0.01 degrees), so a record stays within the 128 MiB block limit longer.

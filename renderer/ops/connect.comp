@@ -88,22 +88,6 @@ uniform float uS;
 uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
 
 float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH))); }
-vec3 normalOf(uint f) { return decodeNormal(sortedWord(fragWord(f, TLAB_OFF_NORMAL))); }
-vec2 gradientOf(uint f) {
-  uint o = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
-#ifdef TLAB_GRADIENT_PAIR
-  return uintBitsToFloat(sortedPair(o >> 1));
-#else
-  return vec2(uintBitsToFloat(sortedWord(o)), uintBitsToFloat(sortedWord(o + 1u)));
-#endif
-}
-uint componentOf(uint f) {
-#ifdef TLAB_HAS_IDS
-  return (sortedWord(fragWord(f, TLAB_OFF_IDS)) >> 16) & 0x7FFFu;
-#else
-  return 0u;
-#endif
-}
 
 // What ε reads of a fragment, loaded once per fragment rather than once per comparison.
 struct Surfel {
@@ -112,6 +96,10 @@ struct Surfel {
   vec3 n;
   uint comp;   // connected component (0 without ids)
 };
+// The surfel of a record's words: depth, ∇z, normal and ids (0 where records carry no ids).
+Surfel surfelOf(uint depthWord, uvec2 gradientWords, uint normalWord, uint idsWord) {
+  return Surfel(uintBitsToFloat(depthWord), uintBitsToFloat(gradientWords), decodeNormal(normalWord), (idsWord >> 16) & 0x7FFFu);
+}
 #ifdef TLAB_SORTED_QUADS
 // The record's quads of words as RGBA32UI texels (records padded to quads): a surfel in 2 fetches
 // where it takes 5 words. llvmpipe fetches such a texel with one 16-byte load a lane, an R32UI
@@ -119,29 +107,32 @@ struct Surfel {
 // memory): natively on the 16-layer stack the pass took about 13 % less time, while it executed
 // about 1 % more instructions (issue #29, twelfth round).
 uniform usamplerBuffer uSortedQuads;
-uint quadWord(uvec4 q[TLAB_RECORD_QUADS], uint offset) { return q[offset >> 2u][offset & 3u]; }
 Surfel surfel(uint f) {
   uvec4 q[TLAB_RECORD_QUADS];
   for (uint k = 0u; k < TLAB_RECORD_QUADS; ++k) q[k] = texelFetch(uSortedQuads, int(f * TLAB_RECORD_QUADS + k));
-  Surfel s;
-  s.z = uintBitsToFloat(quadWord(q, OFF_DEPTH));
-  s.g = uintBitsToFloat(uvec2(quadWord(q, TLAB_OFF_DEPTH_GRADIENT), quadWord(q, TLAB_OFF_DEPTH_GRADIENT + 1u)));
-  s.n = decodeNormal(quadWord(q, TLAB_OFF_NORMAL));
 #ifdef TLAB_HAS_IDS
-  s.comp = (quadWord(q, TLAB_OFF_IDS) >> 16) & 0x7FFFu;
+  uint ids = quadWord(q, TLAB_OFF_IDS);
 #else
-  s.comp = 0u;
+  uint ids = 0u;
 #endif
-  return s;
+  const uint g = TLAB_OFF_DEPTH_GRADIENT;
+  return surfelOf(quadWord(q, OFF_DEPTH), uvec2(quadWord(q, g), quadWord(q, g + 1u)), quadWord(q, TLAB_OFF_NORMAL), ids);
 }
 #else
+// The record word by word (its gradient in one load where TLAB_GRADIENT_PAIR).
 Surfel surfel(uint f) {
-  Surfel s;
-  s.z = depthOf(f);
-  s.g = gradientOf(f);
-  s.n = normalOf(f);
-  s.comp = componentOf(f);
-  return s;
+  uint g = fragWord(f, TLAB_OFF_DEPTH_GRADIENT);
+#ifdef TLAB_GRADIENT_PAIR
+  uvec2 gradient = sortedPair(g >> 1);
+#else
+  uvec2 gradient = uvec2(sortedWord(g), sortedWord(g + 1u));
+#endif
+#ifdef TLAB_HAS_IDS
+  uint ids = sortedWord(fragWord(f, TLAB_OFF_IDS));
+#else
+  uint ids = 0u;
+#endif
+  return surfelOf(sortedWord(fragWord(f, OFF_DEPTH)), gradient, sortedWord(fragWord(f, TLAB_OFF_NORMAL)), ids);
 }
 #endif
 

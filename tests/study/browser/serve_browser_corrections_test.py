@@ -42,18 +42,6 @@ def refusal_shown(p, what, containing=""):
     return text
 
 
-def answer_sent_count(p):
-    return p.driver.execute_script("return (window.sentAnswers || []).length;")
-
-
-def count_answers_sent(p):
-    """Counts the answers the page sends from now on (the fetch the page calls is wrapped)."""
-    p.driver.execute_script(
-        "window.sentAnswers = []; const send = window.fetch;"
-        "window.fetch = (url, options) => { if (options && options.body && JSON.parse(options.body).type === 'answer')"
-        " sentAnswers.push(JSON.parse(options.body)); return send(url, options); };")
-
-
 def correct_training(p):
     p.type_number(0)
     refusal_shown(p, "training: the refusal of 0")
@@ -63,11 +51,11 @@ def correct_training(p):
 
 
 def correct_layer_number(p, seq):
-    count_answers_sent(p)
+    base.record_replies(p)
     p.type_number("")  # Enter on the empty box: the page refuses it itself
     text = refusal_shown(p, "the page's own refusal of an empty answer")
     check("whole number" in text, f"the page's refusal of an empty answer says: {text!r}")
-    check(answer_sent_count(p) == 0, "the page sent an empty answer to the server")
+    check(len(base.sent_replies(p, "answer")) == 0, "the page sent an empty answer to the server")
     p.type_number(0, select_all=True)
     refusal_shown(p, "the server's refusal of 0", "1")
     p.screenshot("layer-number-refused")
@@ -83,12 +71,13 @@ def correct_layer_number(p, seq):
 def correct_count(p):
     p.type_number(1000001)
     refusal_shown(p, "count: the refusal of 1000001")
-    count_answers_sent(p)
+    base.record_replies(p)
     box = p.find("#answer")
     box.send_keys(Keys.CONTROL, "a")
     box.send_keys("3", Keys.ENTER, Keys.ENTER)  # a double Enter sends one answer
     p.until(lambda: p.state()["kind"] != "trial", "the count trial to end")
-    check(answer_sent_count(p) == 1, f"{answer_sent_count(p)} answers sent for one corrected count")
+    sent = len(base.sent_replies(p, "answer"))
+    check(sent == 1, f"{sent} answers sent for one corrected count")
     return "3"
 
 

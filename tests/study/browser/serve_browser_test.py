@@ -426,6 +426,18 @@ def corrupt_next_answer(p, answer):
         " return send(url, options); };", json.dumps(answer))
 
 
+def record_replies(p):
+    """From now on the replies the page sends (their JSON bodies) are kept, for sent_replies."""
+    p.driver.execute_script(
+        "window.sentReplies = []; const send = window.fetch;"
+        "window.fetch = (url, options) => { if (options && options.body) sentReplies.push(JSON.parse(options.body)); return send(url, options); };")
+
+
+def sent_replies(p, kind):
+    """The replies of type `kind` the page sent since record_replies."""
+    return [r for r in p.driver.execute_script("return window.sentReplies || [];") if r.get("type") == kind]
+
+
 def provoke_refusal(p, answer_kind, seq):
     """A first answer the server refuses (typed, or clicked and changed on its way): the page says
     why and stays on the trial, ready for the corrected answer that answer_trial then gives."""
@@ -489,14 +501,11 @@ def answer_trial(p, answer_kind, training):
             "const i = document.getElementById('floor-plan'); const r = i.getBoundingClientRect();"
             "return {left: r.left, top: r.top, border: i.clientLeft, width: i.clientWidth, height: i.clientHeight, plan: current.floor_plan};")
         check(box["width"] == box["plan"]["width"] and box["height"] == box["plan"]["height"], f"the floor plan is scaled: {box}")
-        # The replies the page sends, to compare the clicked plan pixel (the store has world coordinates).
-        p.driver.execute_script(
-            "window.sentReplies = []; const send = window.fetch;"
-            "window.fetch = (url, options) => { if (options && options.body) sentReplies.push(JSON.parse(options.body)); return send(url, options); };")
+        record_replies(p)  # to compare the clicked plan pixel (the store has world coordinates)
         target = (box["width"] // 4, box["height"] * 3 // 4)  # in the plan's pixels
         centre = (plan.size["width"] / 2, plan.size["height"] / 2)  # Selenium's offsets are from the element's centre
         ActionChains(p.driver).move_to_element_with_offset(plan, int(box["border"] + target[0] - centre[0]), int(box["border"] + target[1] - centre[1])).click().perform()
-        sent = p.until(lambda: [r for r in p.driver.execute_script("return window.sentReplies || [];") if r.get("type") == "answer"], "the floor-plan answer")
+        sent = p.until(lambda: sent_replies(p, "answer"), "the floor-plan answer")
         point = sent[0]["answer"]
         check(abs(point["x"] - target[0]) <= 1.5 and abs(point["y"] - target[1]) <= 1.5, f"clicked the plan at {target}, the page sent {point}")
         return "floor-point"  # world coordinates in the store: checked for their form
