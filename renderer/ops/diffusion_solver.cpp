@@ -13,7 +13,7 @@ constexpr GLuint kFieldIn = 13, kFieldOut = 14;  // BIND_BETA_IN/OUT of ops/fiel
 constexpr unsigned kFreeBeta = 2, kFreeGamma = 4;  // also the bits of the change record
 constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 constexpr GLuint kLinks = 10, kFlags = 17;           // BIND_LINKS, BIND_FLAGS
-constexpr GLuint kFrontierIn = 23, kFrontierOut = 24, kStamps = 26;
+constexpr GLuint kFrontierIn = 23, kFrontierOut = 24;
 
 // A frontier pass over the fragments of `list` (its header is the indirect dispatch).
 void runOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
@@ -173,7 +173,6 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   fields.links().bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
   fields.flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
-  fields.stamps().bindBase(GL_SHADER_STORAGE_BUFFER, kStamps);
   // Where the GL allows that many texels, the step reads links, flags and the field through
   // buffer textures (units 0-3; TLAB_FIELD_TEXELS), else through the storage buffers.
   GLint maxTexels = 0;
@@ -195,10 +194,10 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   }
   glUniform1f(stepProgram.uniform("uLambda"), static_cast<float>(lambda));
   glUniform1ui(stepProgram.uniform("uFreeBit"), freeBit);
-  changed_.clearToZero();
-  changed_.bindBase(GL_SHADER_STORAGE_BUFFER, kChangedBinding);
   int run = 0;
   bool raisedOutput = false;  // whether the last step raised the output copy
+  int lastCheck = -1;         // the step of the last check (0-based)
+  bool movedSinceCheck = false;
   for (int i = 0; i < steps; ++i) {
     const bool readCurrent = i % 2 == 0;  // step 1 reads the current copy and raises the other
     (readCurrent ? fields.current(field) : fields.output(field)).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
@@ -207,14 +206,19 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     previous->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierIn);
     changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
     stepProgram.use();
-    glUniform1ui(stepProgram.uniform("uTag"), fields.nextTag());
     if (texels) glUniform1i(stepProgram.uniform("uValues"), readCurrent ? 2 : 3);
     runOnList(stepProgram, *previous);
     raisedOutput = readCurrent;
     ++run;
     // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
-    // since the last check), so the same steps are run.
-    if ((i & (i + 1)) == 0 && (takeChanges() & freeBit) == 0) break;
+    // since the last check), so the same steps are run. A step changed the field iff it listed a
+    // fragment, and a step after one that listed none has nothing to spread from: the field moved
+    // since the last check iff the first step after it listed something.
+    if (i == lastCheck + 1) movedSinceCheck = TransparencyFields::listCount(*changed) > 0;
+    if ((i & (i + 1)) == 0) {
+      if (!movedSinceCheck) break;
+      lastCheck = i;
+    }
     std::swap(previous, changed);
   }
   if (raisedOutput) fields.swap(field);

@@ -17,7 +17,6 @@
 #define BIND_FRONTIER_OUT 24
 #define BIND_SEEDS_BETA 23
 #define BIND_SEEDS_GAMMA 24
-#define BIND_STAMPS 26           // per fragment: the tag of the last step that listed it
 #define FRONTIER_GROUP 64u       // invocations per group of a frontier dispatch
 #define FRONTIER_MAX_GROUPS 65535u
 

@@ -20,16 +20,21 @@
 // exactly the invocations: each first raises its own entry to its value of step t − 1, then makes
 // its offers. Every write is an atomic max, so their order does not matter, and no value of the
 // step is read before every offer is made (a Jacobi step, not Gauss-Seidel). Each raised
-// neighbour is listed once per step (the stamp) for the next. The host dispatches indirectly from
-// the list header; invocations loop over lists longer than the dispatch limit.
+// neighbour is listed once per step for the next, by the offer that raises it first: the atomic max
+// returns the entry it raised, and until this step raises f that entry is at most f's value after
+// step t − 1 (u[f]: the copy holds f's value of step t − 2 ≤ u[f], or u[f] itself once f's own
+// invocation raised it), after it above (every offer that raises f exceeds u[f]). So no stamp per
+// fragment and no second atomic per offer (issue #29: a CPU rasterizer runs atomics lane by lane,
+// and the stamps were 4 of the up to 12 an invocation ran). The host dispatches
+// indirectly from the list header; invocations loop over lists longer than the dispatch limit.
+// Whether a step changed the field is whether its list is empty: the host reads the list's count
+// (no flag every invocation that raised something sets with a further atomic).
 #include "ops/field_bindings.glsl"
 layout(local_size_x = 64) in;
 // The values after step t − 1 (read only), and the other copy: those after step t − 2, raised
 // to those after step t (bits of floats ≥ 0).
 layout(std430, binding = BIND_BETA_IN) readonly buffer Field { float u[]; };
 layout(std430, binding = BIND_BETA_OUT) buffer Next { uint next[]; };
-// Whether the field changed since the host last looked (uFreeBit), as the full steps record it.
-layout(std430, binding = BIND_CHANGED) buffer Moved { uint moved; };
 #ifdef TLAB_FIELD_TEXELS
 // The links, flags and values read as buffer textures where the GL allows that many texels (one
 // fetch for all lanes, where a CPU rasterizer reads a storage buffer lane by lane): the same words.
@@ -46,12 +51,10 @@ uvec4 linksOf(uint f) { return links[f]; }
 uint flagsOf(uint f) { return flags[f]; }
 float valueOf(uint f) { return u[f]; }
 #endif
-layout(std430, binding = BIND_STAMPS) buffer Stamps { uint stamps[]; };
 FRONTIER_LIST(readonly, BIND_FRONTIER_IN, Previous, previous);
 FRONTIER_LIST(, BIND_FRONTIER_OUT, Changed, changed);
 uniform float uLambda;
 uniform uint uFreeBit;
-uniform uint uTag;  // this step's stamp: no fragment holds it before the step
 
 void main() {
   for (uint i = gl_GlobalInvocationID.x; i < previous.count; i += gl_NumWorkGroups.x * FRONTIER_GROUP) {
@@ -63,11 +66,11 @@ void main() {
     uint listed = 0u;  // bit k: neighbour k is this step's first to be raised
     for (int k = 0; k < 4; ++k) {
       uint f = around[k];
-      if (f == NO_NEIGHBOR || (flagsOf(f) & uFreeBit) == 0u || !(offer > valueOf(f))) continue;
-      atomicMax(next[f], floatBitsToUint(offer));
-      if (atomicExchange(stamps[f], uTag) != uTag) listed |= 1u << uint(k);
+      if (f == NO_NEIGHBOR || (flagsOf(f) & uFreeBit) == 0u) continue;
+      float before = valueOf(f);  // u[f], f's value after step t − 1
+      if (!(offer > before)) continue;
+      if (atomicMax(next[f], floatBitsToUint(offer)) <= floatBitsToUint(before)) listed |= 1u << uint(k);
     }
-    if (listed != 0u && (moved & uFreeBit) == 0u) atomicOr(moved, uFreeBit);
     // One atomic for the invocation's listed neighbours (every append to the list's count is an
     // atomic on one word, which the CPU rasterizer's threads pass between their caches).
     uint at = 0u;

@@ -36,11 +36,6 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
   fit(frontier_[int(Field::Alpha)], list);
   if (withBeta) fit(frontier_[int(Field::Beta)], list);
   if (withGamma) fit(frontier_[int(Field::Gamma)], list);
-  if (!stamps_ || stamps_.size() < floats) {  // new stamps hold no tag yet
-    stamps_ = gpu::Buffer(floats);
-    stamps_.clearToZero();
-    lastTag_ = 0;
-  }
 }
 
 gpu::Buffer& TransparencyFields::frontier(Field field) {
@@ -66,14 +61,6 @@ std::vector<std::uint32_t> TransparencyFields::readList(Field field) {
   std::vector<std::uint32_t> items(listCount(list));
   list.download(items.data(), items.size() * 4, 4 * 4);
   return items;
-}
-
-std::uint32_t TransparencyFields::nextTag() {
-  if (lastTag_ == 0xFFFFFFFFu) {  // after 2^32 − 1 steps: start over
-    stamps_.clearToZero();
-    lastTag_ = 0;
-  }
-  return ++lastTag_;
 }
 
 gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {

@@ -49,9 +49,6 @@ class TransparencyFields {
   gpu::Buffer& frontier(Field field);
   static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
   static std::uint32_t listCount(const gpu::Buffer& list);
-  // One word per fragment: the tag of the step that last listed it; nextTag() is one no stamp holds.
-  const gpu::Buffer& stamps() const { return stamps_; }
-  std::uint32_t nextTag();
   // Whether the seed lists describe the current β and γ (set by the connect pass): true once,
   // for the solve that spreads from them.
   void setSeedsListed(bool listed) { seedsListed_ = listed; }
@@ -76,8 +73,7 @@ class TransparencyFields {
   bool withBeta_ = false, withGamma_ = false;
   gpu::Buffer links_, flags_, alphaOld_, connectWork_;
   PingPong alpha_, beta_, gamma_;
-  gpu::Buffer frontier_[3], stamps_;  // frontier_ by Field
-  std::uint32_t lastTag_ = 0;
+  gpu::Buffer frontier_[3];  // by Field
   bool seedsListed_ = false;
 };
 
