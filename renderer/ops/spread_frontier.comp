@@ -19,16 +19,16 @@
 // holds the values of step t − 2 — all but those of the fragments step t − 1 changed, which are
 // exactly the invocations: each first raises its own entry to its value of step t − 1, then makes
 // its offers. Every write is an atomic max, so their order does not matter, and no value of the
-// step is read before every offer is made (a Jacobi step, not Gauss-Seidel). Each raised
-// neighbour is listed once per step for the next, by the offer that raises it first: the atomic max
-// returns the entry it raised, and until this step raises f that entry is at most f's value after
-// step t − 1 (u[f]: the copy holds f's value of step t − 2 ≤ u[f], or u[f] itself once f's own
-// invocation raised it), after it above (every offer that raises f exceeds u[f]). So no stamp per
-// fragment and no second atomic per offer (issue #29: a CPU rasterizer runs atomics lane by lane,
-// and the stamps were 4 of the up to 12 an invocation ran). The host dispatches
-// indirectly from the list header; invocations loop over lists longer than the dispatch limit.
-// Whether a step changed the field is whether its list is empty: the host reads the list's count
-// (no flag every invocation that raised something sets with a further atomic).
+// step is read before every offer is made (a Jacobi step, not Gauss-Seidel).
+// Each raised neighbour is listed once per step for the next, by the offer that raises it first:
+// the atomic max returns the entry it raised, and until this step raises f that entry is at most
+// f's value after step t − 1, u[f] (the copy holds f's value of step t − 2 ≤ u[f], or u[f] itself
+// once f's own invocation raised it), after it above (every offer that raises f exceeds u[f]). So
+// no stamp per fragment and no second atomic per offer; and whether a step changed the field is
+// whether its list is empty, which the host reads, so no flag either (issue #29: a CPU rasterizer
+// runs atomics lane by lane; stamps and flag were 5 of the up to 12 an invocation ran).
+// The host dispatches indirectly from the list header; invocations loop over lists longer than
+// the dispatch limit.
 #include "ops/field_bindings.glsl"
 layout(local_size_x = 64) in;
 // The values after step t − 1 (read only), and the other copy: those after step t − 2, raised
