@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Hashes the pictures the renderer produces — every style on the six built-in scenes, smart
 # transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, the profile
-# modifiers of Eqs. 10-11, several components), `--fill list`, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
+# modifiers of Eqs. 10-11, several components), `--fill list`, the three lighting models, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
 # the live views' `builtin:abstract?seed=1`, any glTF meshes
 # given in $TLAB_HASH_MESHES, and every PNG of `tlab figures` — so that a change to the fills,
 # the sort, the connect pass or the compositors can prove its pictures byte-identical:
@@ -41,6 +41,13 @@ for scene in $scenes; do
 done
 for scene in 'torus?triangles=100000' 'quad-stack?n=16'; do
   for style in constant smart; do render "$style-512-$scene" "builtin:$scene" --style "$style" --size 512x512; done
+done
+# every lighting model through the fills and the raster pass, which compile it in (withLighting)
+for lighting in none headlight pbr; do
+  for style in opaque constant unsorted smart; do
+    render "$style-$lighting-torus" builtin:torus --style "$style" --set lighting="$lighting" --size 160x128
+  done
+  render "constant-list-$lighting-torus" builtin:torus --style constant --fill list --set lighting="$lighting" --size 160x128
 done
 # the live views' scene (issue #30), whose lists run up to 18 long: both paths of compose/blend.comp's sort
 render "constant-512-abstract" "builtin:abstract?seed=1" --style constant --size 512x512

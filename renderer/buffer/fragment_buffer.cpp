@@ -46,7 +46,7 @@ std::string fillMethodName(FillMethod m) { return m == FillMethod::CountScatter 
 
 FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height, FragmentLayout layout,
                                FillMethod method, std::size_t initialCapacity, std::size_t maxBytes)
-    : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes) {
+    : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes), shaders_(shaders) {
   if (maxBytes_ == 0) {
     GLint64 limit = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
@@ -67,14 +67,14 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   const auto defines = layout_.defines();
   if (method_ == FillMethod::CountScatter) {
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
-    scatterProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_scatter.frag", defines);
-    slotProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_slots.frag", defines);
+    shadingFill("buffer/fill_scatter.frag", RasterUniforms{});  // (the default model's fills, compiled now)
+    shadingFill("buffer/fill_slots.frag", RasterUniforms{});
     sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
     sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
     sortShortSlotsProgram_ =
         &shaders.compute("buffer/sort.comp", with(with(defines, "TLAB_SLOTS", "1"), "TLAB_REGISTER_SORT", "8"));
   } else {
-    listProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_list.frag", defines);
+    shadingFill("buffer/fill_list.frag", RasterUniforms{});
     sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
   }
   for (int phase = 0; phase < 3; ++phase)
@@ -109,6 +109,10 @@ void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene
   glUniform1ui(program.uniform("uSlots"), slotsUsed_);
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   endFragmentCapture(scene);
+}
+
+const gpu::ShaderProgram& FragmentBuffer::shadingFill(const char* fragmentShader, const RasterUniforms& u) const {
+  return shaders_.graphics("buffer/scene_geometry.vert", fragmentShader, withLighting(layout_.defines(), u.lighting));
 }
 
 std::uint32_t FragmentBuffer::prefixSum() {
@@ -163,7 +167,7 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
       counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
       slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
     }
-    rasterize(slotsUsed_ > 0 ? *slotProgram_ : *countProgram_, scene, u);
+    rasterize(slotsUsed_ > 0 ? shadingFill("buffer/fill_slots.frag", u) : *countProgram_, scene, u);
     if (slotsUsed_ > 0) {
       std::uint32_t counters[3] = {0, 0, 0};
       counters_.download(counters, sizeof(counters));
@@ -180,7 +184,7 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
     fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
-    rasterize(*scatterProgram_, scene, u);
+    rasterize(shadingFill("buffer/fill_scatter.frag", u), scene, u);
   });
 }
 
@@ -194,7 +198,7 @@ void FragmentBuffer::fillLinkedList(const GpuScene& scene, const RasterUniforms&
       listNext_.bindBase(GL_SHADER_STORAGE_BUFFER, kListNext);
       counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
       fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
-      rasterize(*listProgram_, scene, u);
+      rasterize(shadingFill("buffer/fill_list.frag", u), scene, u);
       std::uint32_t written = 0;
       counters_.download(&written, 4);
       if (written <= capacity_) break;

@@ -103,6 +103,9 @@ class FragmentBuffer final : public Fill {
  private:
   void ensureCapacity(std::size_t fragments);
   void rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const;
+  // The fill whose fragment shader shades (buffer/fill_scatter, fill_slots or fill_list.frag), for
+  // u's lighting model (withLighting; compiled on the first frame that model is drawn).
+  const gpu::ShaderProgram& shadingFill(const char* fragmentShader, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
   void ensureHeads();  // this frame's prefix sum (heads, fragment count) and a pool that holds it
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
@@ -135,12 +138,10 @@ class FragmentBuffer final : public Fill {
   bool listStepsWritten_ = false;
   gpu::Buffer slotOrder_;  // a compositor's sort keys beside the slots (i * pixels + pixel)
   mutable gpu::Buffer composeOutput_;
+  gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* countProgram_ = nullptr;
-  const gpu::ShaderProgram* scatterProgram_ = nullptr;
-  const gpu::ShaderProgram* listProgram_ = nullptr;
   const gpu::ShaderProgram* prefix_[3] = {nullptr, nullptr, nullptr};
   const gpu::ShaderProgram* sortProgram_ = nullptr;
-  const gpu::ShaderProgram* slotProgram_ = nullptr;
   const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
   const gpu::ShaderProgram* sortShortSlotsProgram_ = nullptr;  // lists of at most 8 (8 registers)
   bool registerSort_ = true;

@@ -17,7 +17,8 @@ void rasterScene(FrameContext& frame, RasterMode mode, float alpha) {
   glNamedFramebufferRenderbuffer(fbo.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.id());
   if (glCheckNamedFramebufferStatus(fbo.id(), GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
     throw gpu::GlError("the opaque colour/depth framebuffer is incomplete");
-  const auto& program = frame.shaders.graphics("buffer/scene_geometry.vert", "compose/raster.frag");
+  const auto& program =
+      frame.shaders.graphics("buffer/scene_geometry.vert", "compose/raster.frag", withLighting({}, frame.raster.lighting));
   glBindFramebuffer(GL_FRAMEBUFFER, fbo.id());
   glViewport(0, 0, w, h);
   glDisable(GL_CULL_FACE);
@@ -36,7 +37,6 @@ void rasterScene(FrameContext& frame, RasterMode mode, float alpha) {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   program.use();
   setCameraUniforms(program, frame.raster);
-  glUniform1i(program.uniform("uLighting"), frame.raster.lighting);
   glUniform1f(program.uniform("uAlpha"), mode == RasterMode::ZBuffer ? 1.0f : alpha);
   frame.gpuScene.bindObjectTable();
   frame.gpuScene.draw();

@@ -9,14 +9,24 @@ struct ObjectRecord {
 };
 layout(std430, binding = BIND_OBJECTS) readonly buffer ObjectTable { ObjectRecord objects[]; };
 
-uniform int uLighting;  // 0: none, 1: headlight, 2: physically based
+// The lighting model, 0: none, 1: headlight, 2: physically based. TLAB_LIGHTING where the host
+// compiled a program for the model (withLighting, frame/raster_uniforms.hpp), else the uniform
+// uLighting: llvmpipe runs both sides of an `if` under a lane mask, so with the uniform every
+// fragment also paid for the shading it did not use — the physically based one (issue #29: a
+// sixth of the torus's fill).
+#ifdef TLAB_LIGHTING
+#define LIGHTING_MODEL TLAB_LIGHTING
+#else
+uniform int uLighting;
+#define LIGHTING_MODEL uLighting
+#endif
 
 vec3 shadeSurface(uint object, bool frontFacing, vec3 viewNormal, vec3 viewPosition) {
   vec3 base = frontFacing ? objects[object].frontColor.rgb : objects[object].backColor.rgb;
-  if (uLighting == 0) return base;
+  if (LIGHTING_MODEL == 0) return base;
   vec3 n = normalize(viewNormal);
   vec3 toEye = normalize(-viewPosition);
-  if (uLighting == 2) return shadePhysical(base, dot(n, toEye) < 0.0 ? -n : n, toEye);
+  if (LIGHTING_MODEL == 2) return shadePhysical(base, dot(n, toEye) < 0.0 ? -n : n, toEye);
   float diffuse = abs(dot(n, toEye));
   return base * (0.25 + 0.75 * diffuse);
 }

@@ -15,7 +15,7 @@ enum Binding : GLuint { kZ = 0, kTable = 1, kData = 2, kLinks = 3, kCurvature = 
 }  // namespace
 
 BucketedKBuffer::BucketedKBuffer(gpu::ShaderCache& shaders, int width, int height, KBufferSettings settings)
-    : width_(width), height_(height), settings_(settings) {
+    : shaders_(shaders), width_(width), height_(height), settings_(settings) {
   if (width <= 0 || height <= 0) throw std::invalid_argument("image size must be positive");
   if (settings_.k < 1 || settings_.k > kbuffer::kMaxLayers)
     throw std::invalid_argument("k-buffer depth k = " + std::to_string(settings_.k) + " is outside 1..32");
@@ -38,7 +38,7 @@ BucketedKBuffer::BucketedKBuffer(gpu::ShaderCache& shaders, int width, int heigh
   glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
   const auto d = defines();
   insertProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "kbuffer/kbuffer_insert.frag", d);
-  dataProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "kbuffer/kbuffer_data.frag", d);
+  dataProgram(RasterUniforms{});  // (the default lighting model's, compiled now)
   if (settings_.buckets) bucketProgram_ = &shaders.compute("kbuffer/bucket_table.comp", d);
 }
 
@@ -46,6 +46,10 @@ gpu::ShaderDefines BucketedKBuffer::defines() const {
   gpu::ShaderDefines d{{"TLAB_K", std::to_string(settings_.k) + "u"}};
   if (settings_.buckets) d.emplace_back("TLAB_BUCKETS", "1");
   return d;
+}
+
+const gpu::ShaderProgram& BucketedKBuffer::dataProgram(const RasterUniforms& u) const {
+  return shaders_.graphics("buffer/scene_geometry.vert", "kbuffer/kbuffer_data.frag", withLighting(defines(), u.lighting));
 }
 
 void BucketedKBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {
@@ -74,7 +78,7 @@ void BucketedKBuffer::build(const GpuScene& scene, const RasterUniforms& uniform
     });
   timer.time("data", [&] {
     data_.clearToZero();
-    rasterize(*dataProgram_, scene, uniforms);
+    rasterize(dataProgram(uniforms), scene, uniforms);
   });
   gpu::checkGl("building the bucketed k-buffer");
 }

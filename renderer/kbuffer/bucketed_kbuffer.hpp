@@ -72,14 +72,16 @@ class BucketedKBuffer final : public Fill {
 
  private:
   void rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const;
+  // The data pass (kbuffer/kbuffer_data.frag shades) for u's lighting model (withLighting).
+  const gpu::ShaderProgram& dataProgram(const RasterUniforms& u) const;
 
+  gpu::ShaderCache& shaders_;
   int width_, height_;
   KBufferSettings settings_;
   gpu::Framebuffer emptyFbo_;
   gpu::Buffer z_, table_, data_, links_, curvature_;
   const gpu::ShaderProgram* insertProgram_ = nullptr;
   const gpu::ShaderProgram* bucketProgram_ = nullptr;
-  const gpu::ShaderProgram* dataProgram_ = nullptr;
 };
 
 }  // namespace tlab::render
