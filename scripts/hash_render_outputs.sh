@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Hashes the pictures the renderer produces — every style on the six built-in scenes, smart
 # transparency's variants (adaptive α, halos or silhouettes off, Eq. 8 spreading, the profile
-# modifiers of Eqs. 10-11, several components), `--fill list`, the three lighting models, 512² `constant` and `smart` on the timing scenes, 512² `constant` on
+# modifiers of Eqs. 10-11, several components), `--fill list`, the three lighting models, IRIS's modes (buffer and peeling), 512² `constant` and `smart` on the timing scenes, 512² `constant` on
 # the live views' `builtin:abstract?seed=1`, any glTF meshes
 # given in $TLAB_HASH_MESHES, and every PNG of `tlab figures` — so that a change to the fills,
 # the sort, the connect pass or the compositors can prove its pictures byte-identical:
@@ -48,6 +48,14 @@ for lighting in none headlight pbr; do
     render "$style-$lighting-torus" builtin:torus --style "$style" --set lighting="$lighting" --size 160x128
   done
   render "constant-list-$lighting-torus" builtin:torus --style constant --fill list --set lighting="$lighting" --size 160x128
+done
+# IRIS's modes, which the illustrative shaders compile in (IllustrativeSettings::defines), through
+# the buffer and through depth peeling
+for renderer in buffer peel; do
+  for mode in "opacity=constant" "opacity=angle" "shading=phong" "shading=gooch" "lighting=pbr" "lighting=none" \
+              "stripes=t" "stripes=both" "stripes=lic" "silhouettes=off" "window_layers=2"; do
+    render "iris-$renderer-$mode-torus" builtin:torus --style iris --renderer "$renderer" --set "$mode" --size 160x128
+  done
 done
 # the live views' scene (issue #30), whose lists run up to 18 long: both paths of compose/blend.comp's sort
 render "constant-512-abstract" "builtin:abstract?seed=1" --style constant --size 512x512

@@ -95,7 +95,7 @@ void main() {
     s.stGradient = vec4(0.0);
     screenDerivatives(f, s);
     vec4 ca = illustrate(s);
-    if (uSilhouettes != 0) ca = applySilhouette(ca, layerSilhouette(xy, i));
+    if (SILHOUETTES != 0) ca = applySilhouette(ca, layerSilhouette(xy, i));
     c += T * ca.a * ca.rgb;
     T *= 1.0 - ca.a;
   }

@@ -18,12 +18,22 @@ struct SurfaceSample {
   vec4 stGradient;    // (∂s/∂i, ∂s/∂j, ∂t/∂i, ∂t/∂j)
 };
 
+#ifdef TLAB_OPACITY_MODE  // compiled in (IllustrativeSettings::defines)
+#define OPACITY_MODE TLAB_OPACITY_MODE
+#else
 uniform int uOpacityMode;  // 0 constant, 1 angle, 2 normal variation
+#define OPACITY_MODE uOpacityMode
+#endif
 uniform float uAlpha;
 uniform float uAlphaMin;
 uniform float uAlphaMax;
 uniform float uGamma;
-uniform int uShading;      // 0 flat, 1 headlight, 2 Phong, 3 Gooch, 4 physically based
+#ifdef TLAB_SHADING  // compiled in (IllustrativeSettings::defines)
+#define SHADING_MODEL TLAB_SHADING
+#else
+uniform int uShading;  // 0 flat, 1 headlight, 2 Phong, 3 Gooch, 4 physically based
+#define SHADING_MODEL uShading
+#endif
 uniform int uTwoSided;
 uniform float uSpecular;
 uniform float uShininess;
@@ -32,7 +42,12 @@ uniform vec2 uWindowCenter;
 uniform float uWindowRadius;
 uniform float uWindowFalloff;
 uniform float uWindowOpacity;
-uniform int uStripes;      // bit 0: s, bit 1: t
+#ifdef TLAB_STRIPES  // compiled in (IllustrativeSettings::defines)
+#define STRIPE_AXES TLAB_STRIPES
+#else
+uniform int uStripes;  // bit 0: s, bit 1: t
+#define STRIPE_AXES uStripes
+#endif
 uniform float uStripePeriod;
 uniform float uStripeWidth;
 uniform float uStripeStrength;
@@ -43,9 +58,9 @@ bool isContext(uint object) { return (objects[object].info.x & 2u) != 0u; }  // 
 
 // α_view mapped to [α_min, α_max] (IRIS Sec. 3.2: α = (1 − α_view)·α_min + α_view·α_max).
 float viewOpacity(SurfaceSample s) {
-  if (uOpacityMode == 0) return uAlpha;
+  if (OPACITY_MODE == 0) return uAlpha;
   float a;
-  if (uOpacityMode == 1) {
+  if (OPACITY_MODE == 1) {
     // IRIS Sec. 3.1: α_view = (2/π)·arccos|n·v|, v the unit vector towards the eye.
     float c = clamp(abs(dot(normalize(s.normal), normalize(-s.viewPosition))), 0.0, 1.0);
     a = 2.0 / kPi * acos(c);
@@ -87,10 +102,10 @@ float licPattern(vec2 u) {
 // The pattern P(s, t) over the unit period: stripes across s, across t, or both (a grid), or
 // the LIC-like noise.
 float stripePattern(vec2 u) {
-  if ((uStripes & 4) != 0) return licPattern(u);
+  if ((STRIPE_AXES & 4) != 0) return licPattern(u);
   float p = 0.0;
-  if ((uStripes & 1) != 0 && fract(u.x) < uStripeWidth) p = 1.0;
-  if ((uStripes & 2) != 0 && fract(u.y) < uStripeWidth) p = 1.0;
+  if ((STRIPE_AXES & 1) != 0 && fract(u.x) < uStripeWidth) p = 1.0;
+  if ((STRIPE_AXES & 2) != 0 && fract(u.y) < uStripeWidth) p = 1.0;
   return p;
 }
 
@@ -124,22 +139,22 @@ Shaded shadeIllustrative(SurfaceSample s) {
   vec3 n = normalize(s.normal);
   if (dot(n, v) < 0.0) n = -n;  // two-sided lighting
   Shaded r = Shaded(base, vec3(0.0), 0.0);
-  if (uShading == 1) {
+  if (SHADING_MODEL == 1) {
     r.diffuse = base * (0.25 + 0.75 * dot(n, v));  // as frame/surface_shading.glsl
-  } else if (uShading == 2) {
+  } else if (SHADING_MODEL == 2) {
     // Phong with a headlight (l = v): ambient + diffuse, and a separate specular term.
     r.diffuse = base * (0.2 + 0.8 * dot(n, v));
     float spec = uSpecular * pow(max(dot(reflect(-v, n), v), 0.0), uShininess);
     r.specular = vec3(spec);
     r.specularAlpha = spec;
-  } else if (uShading == 3) {
+  } else if (SHADING_MODEL == 3) {
     // Gooch et al. 1998 tones: k_cool = (0, 0, 0.4) + 0.2·k_d, k_warm = (0.4, 0.4, 0) + 0.6·k_d,
     // blended by (1 + n·l)/2 with a key light above and to the left of the viewer.
     vec3 l = normalize(vec3(-0.4, 0.8, 0.6));
     float t = 0.5 * (1.0 + dot(n, l));
     vec3 cool = vec3(0.0, 0.0, 0.4) + 0.2 * base, warm = vec3(0.4, 0.4, 0.0) + 0.6 * base;
     r.diffuse = t * warm + (1.0 - t) * cool;
-  } else if (uShading == 4) {
+  } else if (SHADING_MODEL == 4) {
     r.diffuse = shadePhysical(base, n, v);  // frame/physical_shading.glsl
   }
   return r;
@@ -153,7 +168,7 @@ vec4 illustrate(SurfaceSample s) {
   float alphaView = viewOpacity(s);
   float alpha = alphaView;
   vec3 ctex = vec3(1.0);
-  if (uStripes != 0) {
+  if (STRIPE_AXES != 0) {
     float c = adaptivePattern(s.st, s.stGradient);
     ctex = vec3(1.0 - uStripeDarken * c);
     alpha = uStripeAdditive != 0 ? alphaView + uStripeStrength * c : alphaView * (1.0 - uStripeStrength * (1.0 - c));

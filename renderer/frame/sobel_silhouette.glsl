@@ -4,7 +4,12 @@
 // counts as twice as far with a zero normal, so every layer's outline is an edge. As in IRIS, a
 // mask keeps silhouettes off context geometry: no silhouette where any of the nine samples is
 // context (depth < 0 marks a context sample).
+#ifdef TLAB_SILHOUETTES  // compiled in (IllustrativeSettings::defines)
+#define SILHOUETTES TLAB_SILHOUETTES
+#else
 uniform int uSilhouettes;
+#define SILHOUETTES uSilhouettes
+#endif
 uniform vec3 uSilhouetteColor;
 uniform float uSilhouetteThreshold;
 uniform float uSilhouetteSoftness;
@@ -32,7 +37,7 @@ float sobelStrength(float depth[9], vec3 normal[9]) {
 
 // Fades (c, α) into the silhouette colour (opaque) with the silhouette strength.
 vec4 applySilhouette(vec4 ca, float strength) {
-  if (uSilhouettes == 0) return ca;
+  if (SILHOUETTES == 0) return ca;
   float f = smoothstep(uSilhouetteThreshold, uSilhouetteThreshold + uSilhouetteSoftness, strength);
   return vec4(mix(ca.rgb, uSilhouetteColor, f), mix(ca.a, 1.0, f));
 }

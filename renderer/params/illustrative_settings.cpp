@@ -1,5 +1,7 @@
 #include "renderer/params/illustrative_settings.hpp"
 
+#include <string>
+
 #include <stdexcept>
 
 #include "renderer/gpu/gl.hpp"
@@ -83,6 +85,13 @@ IllustrativeSettings IllustrativeSettings::constant(float alpha, Shading shading
   s.alpha = alpha;
   s.shading = shading;
   return s;
+}
+
+gpu::ShaderDefines IllustrativeSettings::defines() const {
+  return {{"TLAB_OPACITY_MODE", std::to_string(static_cast<int>(opacity))},
+          {"TLAB_SHADING", std::to_string(static_cast<int>(shading))},
+          {"TLAB_STRIPES", std::to_string(stripes)},
+          {"TLAB_SILHOUETTES", silhouettes ? "1" : "0"}};
 }
 
 void IllustrativeSettings::setUniforms(const gpu::ShaderProgram& program, int width, int height) const {

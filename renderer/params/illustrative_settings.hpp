@@ -58,6 +58,11 @@ struct IllustrativeSettings {
 
   // Sets every uniform of frame/illustrative_shading.glsl and frame/sobel_silhouette.glsl.
   void setUniforms(const gpu::ShaderProgram& program, int width, int height) const;
+  // The modes the shaders branch on (opacity, shading, stripes, silhouettes) as defines, compiled
+  // into a program instead of read from uniforms: llvmpipe runs every side of an `if` under a lane
+  // mask, so with uniforms every fragment paid for each mode it did not use (issue #29).
+  // setUniforms then sets only the uniforms the program still has.
+  gpu::ShaderDefines defines() const;
 };
 
 }  // namespace tlab::render

@@ -42,7 +42,7 @@ DepthPeeling::DepthPeeling(gpu::ShaderCache& shaders, int width, int height, int
 // Peel stage: renders the nearest layer behind layer − 1 into fbo_[layer % 2]; returns whether
 // any fragment was rendered (the occlusion query of IRIS Sec. 5.1).
 bool DepthPeeling::peel(const GpuScene& scene, const RasterUniforms& u, const IllustrativeSettings& settings, int layer) {
-  const auto& program = shaders_.graphics("buffer/scene_geometry.vert", "peel/peel_layer.frag");
+  const auto& program = shaders_.graphics("buffer/scene_geometry.vert", "peel/peel_layer.frag", settings.defines());
   const int current = layer % 2;
   glBindFramebuffer(GL_FRAMEBUFFER, fbo_[current].id());
   glViewport(0, 0, width_, height_);
@@ -76,7 +76,7 @@ bool DepthPeeling::peel(const GpuScene& scene, const RasterUniforms& u, const Il
 
 // Blend stage: silhouettes and under-blending of the layer just peeled.
 void DepthPeeling::blend(const IllustrativeSettings& settings) {
-  const auto& program = shaders_.compute("peel/peel_blend.comp");
+  const auto& program = shaders_.compute("peel/peel_blend.comp", settings.defines());
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   program.use();
   glUniform1i(program.uniform("uWidth"), width_);

@@ -17,7 +17,7 @@ void main() {
   vec4 nd = texelFetch(uLayerNormalDepth, xy, 0);
   if (nd.w == 0.0) return;  // no fragment in this layer
   vec4 ca = texelFetch(uLayerColor, xy, 0);
-  if (uSilhouettes != 0) {
+  if (SILHOUETTES != 0) {
     float depth[9];
     vec3 normal[9];
     for (int dy = -1; dy <= 1; ++dy)

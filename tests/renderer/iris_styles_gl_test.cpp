@@ -5,8 +5,12 @@
 
 #include <cmath>
 #include <complex>
+#include <map>
 #include <optional>
+#include <string>
 
+#include "renderer/pipeline/renderer.hpp"
+#include "renderer/scene/builtin_scenes.hpp"
 #include "tests/renderer/iris_probe.hpp"
 #include "tests/support/gl_fixture.hpp"
 
@@ -156,5 +160,33 @@ TEST(StripePerspective, PeriodStaysWithinAFactorTwoNearAndFar) {
     const double measured = dominantPeriod(column);
     EXPECT_GE(measured, period / 2) << "window from row " << first;
     EXPECT_LE(measured, period * 2) << "window from row " << first;
+  }
+}
+
+// The modes IRIS's shaders branch on (opacity, shading, stripes, silhouettes) are compiled into
+// their programs (IllustrativeSettings::defines, issue #29): one renderer that changes them from
+// frame to frame draws each frame's own, through the buffer and through depth peeling.
+TEST(IrisModes, OneRendererSwitchesModesBetweenFrames) {
+  using tlab::render::RenderRequest;
+  for (const bool peel : {false, true}) {
+    tlab::render::Renderer renderer(
+        tlab::render::buildBuiltinScene("torus", tlab::render::builtinScenes()));
+    const auto frame = [&](std::map<std::string, std::string> settings) {
+      RenderRequest r;
+      r.width = r.height = 64;
+      r.style = "iris";
+      r.depthPeeling = peel;
+      r.settings = std::move(settings);
+      return renderer.render(r).pixels;
+    };
+    const std::map<std::string, std::string> first = {{"shading", "phong"}, {"stripes", "s"}, {"silhouettes", "on"}};
+    const auto before = frame(first);
+    const auto other = frame({{"opacity", "angle"}, {"shading", "gooch"}, {"stripes", "t"}, {"silhouettes", "off"}});
+    const auto flat = frame({{"opacity", "constant"}, {"lighting", "none"}, {"stripes", "both"}, {"silhouettes", "on"}});
+    const auto after = frame(first);
+    EXPECT_EQ(before, after) << (peel ? "peeling" : "buffer");
+    EXPECT_NE(before, other) << (peel ? "peeling" : "buffer");
+    EXPECT_NE(other, flat) << (peel ? "peeling" : "buffer");
+    EXPECT_NE(flat, after) << (peel ? "peeling" : "buffer");
   }
 }
