@@ -67,14 +67,11 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   const auto defines = layout_.defines();
   if (method_ == FillMethod::CountScatter) {
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
-    shadingFill("buffer/fill_scatter.frag", RasterUniforms{});  // (the default model's fills, compiled now)
-    shadingFill("buffer/fill_slots.frag", RasterUniforms{});
     sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
     sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
     sortShortSlotsProgram_ =
         &shaders.compute("buffer/sort.comp", with(with(defines, "TLAB_SLOTS", "1"), "TLAB_REGISTER_SORT", "8"));
   } else {
-    shadingFill("buffer/fill_list.frag", RasterUniforms{});
     sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
   }
   for (int phase = 0; phase < 3; ++phase)

@@ -17,9 +17,8 @@ void composeIllustrative(FrameContext& frame, const IllustrativeSettings& settin
   if ((settings.opacity == IllustrativeSettings::Opacity::NormalVariation && !stored.has(FragmentProperty::NormalZGradient)) ||
       (settings.stripes != 0 && !stored.has(FragmentProperty::StGradient)))
     throw std::logic_error("normal variation and stripes need the screen-space derivatives stored at fill time");
-  gpu::ShaderDefines defines = buffer.layout().defines();
-  for (auto& d : settings.defines()) defines.push_back(std::move(d));
-  const auto& program = frame.shaders.compute("compose/illustrative_compose.comp", defines);
+  const auto& program =
+      frame.shaders.compute("compose/illustrative_compose.comp", gpu::joined(buffer.layout().defines(), settings.defines()));
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4));
   buffer.bindSorted();
   frame.gpuScene.bindObjectTable();

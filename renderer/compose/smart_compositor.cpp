@@ -8,8 +8,7 @@ namespace tlab::render {
 
 void composeSmart(FrameContext& frame, const TransparencyFields& fields, const SmartSettings& settings) {
   const FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
-  gpu::ShaderDefines defines = buffer.layout().defines();
-  for (const auto& d : fields.defines()) defines.push_back(d);
+  gpu::ShaderDefines defines = gpu::joined(buffer.layout().defines(), fields.defines());
   defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
   const gpu::Buffer& output = buffer.composeOutput();

@@ -48,9 +48,8 @@ void drawLines(FrameContext& frame, const std::vector<SilhouetteSegment>& segmen
 
 void composeViewDependent(FrameContext& frame, const ViewDependentAlpha& alpha, const ViewDependentSettings& settings) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
-  gpu::ShaderDefines defines = buffer.layout().defines();
-  for (auto& d : settings.shading.defines()) defines.push_back(std::move(d));
-  const auto& program = frame.shaders.compute("compose/view_dependent_compose.comp", defines);
+  const auto& program = frame.shaders.compute("compose/view_dependent_compose.comp",
+                                              gpu::joined(buffer.layout().defines(), settings.shading.defines()));
   gpu::Buffer output(buffer.pixels() * sizeof(glm::vec4)), visibleDepth(buffer.pixels() * 2 * sizeof(float));
   buffer.bindSorted();
   frame.gpuScene.bindObjectTable();

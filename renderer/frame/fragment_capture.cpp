@@ -13,7 +13,6 @@ void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int he
   glDisable(GL_BLEND);
   program.use();
   setCameraUniforms(program, u);
-  glUniform1i(program.uniform("uLighting"), u.lighting);  // -1 (absent) is ignored by GL
   glUniform1i(program.uniform("uWidth"), width);
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // A raster pass that captures fragments into storage buffers (the illustration buffer's fills,
 // the k-buffer's passes): binds the attachment-less framebuffer at width × height with depth
-// test, culling and blending off, uses `program` and sets uView, uProjection, uLighting and uWidth.
+// test, culling and blending off, uses `program` and sets uView, uProjection and uWidth (a program
+// that shades compiled the lighting model in: withLighting).
 // The caller sets its own uniforms, then endFragmentCapture draws the scene and waits for the
 // storage writes.
 #include "renderer/frame/gpu_scene.hpp"

@@ -18,22 +18,15 @@ struct SurfaceSample {
   vec4 stGradient;    // (∂s/∂i, ∂s/∂j, ∂t/∂i, ∂t/∂j)
 };
 
-#ifdef TLAB_OPACITY_MODE  // compiled in (IllustrativeSettings::defines)
+// The modes below are compiled in, not uniforms (IllustrativeSettings::defines): llvmpipe runs
+// every side of an `if` under a lane mask, so with uniforms each fragment paid for every mode
+// (issue #29). TLAB_OPACITY_MODE: 0 constant, 1 angle, 2 normal variation.
 #define OPACITY_MODE TLAB_OPACITY_MODE
-#else
-uniform int uOpacityMode;  // 0 constant, 1 angle, 2 normal variation
-#define OPACITY_MODE uOpacityMode
-#endif
 uniform float uAlpha;
 uniform float uAlphaMin;
 uniform float uAlphaMax;
 uniform float uGamma;
-#ifdef TLAB_SHADING  // compiled in (IllustrativeSettings::defines)
-#define SHADING_MODEL TLAB_SHADING
-#else
-uniform int uShading;  // 0 flat, 1 headlight, 2 Phong, 3 Gooch, 4 physically based
-#define SHADING_MODEL uShading
-#endif
+#define SHADING_MODEL TLAB_SHADING  // 0 flat, 1 headlight, 2 Phong, 3 Gooch, 4 physically based
 uniform int uTwoSided;
 uniform float uSpecular;
 uniform float uShininess;
@@ -42,12 +35,7 @@ uniform vec2 uWindowCenter;
 uniform float uWindowRadius;
 uniform float uWindowFalloff;
 uniform float uWindowOpacity;
-#ifdef TLAB_STRIPES  // compiled in (IllustrativeSettings::defines)
-#define STRIPE_AXES TLAB_STRIPES
-#else
-uniform int uStripes;  // bit 0: s, bit 1: t
-#define STRIPE_AXES uStripes
-#endif
+#define STRIPE_AXES TLAB_STRIPES  // bit 0: s, bit 1: t, bit 2: the LIC-like noise
 uniform float uStripePeriod;
 uniform float uStripeWidth;
 uniform float uStripeStrength;

@@ -12,7 +12,7 @@ void setCameraUniforms(const gpu::ShaderProgram& program, const RasterUniforms& 
 }
 
 gpu::ShaderDefines withLighting(gpu::ShaderDefines defines, int lighting) {
-  if (lighting >= 0 && lighting <= 2) defines.emplace_back("TLAB_LIGHTING", std::to_string(lighting));
+  defines.emplace_back("TLAB_LIGHTING", std::to_string(lighting));
   return defines;
 }
 

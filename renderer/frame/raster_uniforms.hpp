@@ -1,6 +1,7 @@
 #pragma once
 // The camera and lighting of a frame's geometry passes: what every raster pass (the fills, the
-// silhouette lines, the opaque and unsorted styles) sets as uView, uProjection and uLighting.
+// silhouette lines, the opaque and unsorted styles) sets as uView and uProjection, and the lighting
+// model the shading passes compile in (withLighting).
 #include <glm/glm.hpp>
 
 #include "renderer/gpu/shader_program.hpp"
@@ -16,9 +17,8 @@ struct RasterUniforms {
 // Sets uView and uProjection of `program` (in use) from `u`.
 void setCameraUniforms(const gpu::ShaderProgram& program, const RasterUniforms& u);
 
-// `defines` with TLAB_LIGHTING = `lighting` for a shader that includes frame/surface_shading.glsl:
-// its lighting model compiled in rather than read from the uniform uLighting (which then does not
-// exist: GL ignores setting it). Unchanged for a model outside 0-2.
+// `defines` with TLAB_LIGHTING = `lighting` (0-2), for a shader that calls shadeSurface
+// (frame/surface_shading.glsl): the model compiled in.
 gpu::ShaderDefines withLighting(gpu::ShaderDefines defines, int lighting);
 
 }  // namespace tlab::render

@@ -4,12 +4,7 @@
 // counts as twice as far with a zero normal, so every layer's outline is an edge. As in IRIS, a
 // mask keeps silhouettes off context geometry: no silhouette where any of the nine samples is
 // context (depth < 0 marks a context sample).
-#ifdef TLAB_SILHOUETTES  // compiled in (IllustrativeSettings::defines)
-#define SILHOUETTES TLAB_SILHOUETTES
-#else
-uniform int uSilhouettes;
-#define SILHOUETTES uSilhouettes
-#endif
+#define SILHOUETTES TLAB_SILHOUETTES  // 0 or 1, compiled in (IllustrativeSettings::defines)
 uniform vec3 uSilhouetteColor;
 uniform float uSilhouetteThreshold;
 uniform float uSilhouetteSoftness;

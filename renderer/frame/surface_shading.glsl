@@ -9,18 +9,12 @@ struct ObjectRecord {
 };
 layout(std430, binding = BIND_OBJECTS) readonly buffer ObjectTable { ObjectRecord objects[]; };
 
-// The lighting model, 0: none, 1: headlight, 2: physically based. TLAB_LIGHTING where the host
-// compiled a program for the model (withLighting, frame/raster_uniforms.hpp), else the uniform
-// uLighting: llvmpipe runs both sides of an `if` under a lane mask, so with the uniform every
-// fragment also paid for the shading it did not use — the physically based one (issue #29: a
-// sixth of the torus's fill).
+// shadeSurface exists where the program compiled a lighting model in, TLAB_LIGHTING = 0: none,
+// 1: headlight, 2: physically based (withLighting, frame/raster_uniforms.hpp). It was a uniform,
+// and llvmpipe runs both sides of an `if` under a lane mask: every fragment also paid for the
+// shading it did not use, the physically based one (issue #29: a sixth of the torus's fill).
 #ifdef TLAB_LIGHTING
 #define LIGHTING_MODEL TLAB_LIGHTING
-#else
-uniform int uLighting;
-#define LIGHTING_MODEL uLighting
-#endif
-
 vec3 shadeSurface(uint object, bool frontFacing, vec3 viewNormal, vec3 viewPosition) {
   vec3 base = frontFacing ? objects[object].frontColor.rgb : objects[object].backColor.rgb;
   if (LIGHTING_MODEL == 0) return base;
@@ -30,3 +24,4 @@ vec3 shadeSurface(uint object, bool frontFacing, vec3 viewNormal, vec3 viewPosit
   float diffuse = abs(dot(n, toEye));
   return base * (0.25 + 0.75 * diffuse);
 }
+#endif

@@ -112,4 +112,9 @@ ShaderProgram ShaderProgram::computeFromSource(const std::string& source, std::s
   return p;
 }
 
+ShaderDefines joined(ShaderDefines a, const ShaderDefines& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
 }  // namespace tlab::gpu

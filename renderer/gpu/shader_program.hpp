@@ -26,6 +26,8 @@ class ShaderCompileError : public GlError {
 };
 
 using ShaderDefines = std::vector<std::pair<std::string, std::string>>;
+// `a` followed by the defines of `b`.
+ShaderDefines joined(ShaderDefines a, const ShaderDefines& b);
 
 class ShaderProgram {
  public:

@@ -38,7 +38,6 @@ BucketedKBuffer::BucketedKBuffer(gpu::ShaderCache& shaders, int width, int heigh
   glNamedFramebufferParameteri(emptyFbo_.id(), GL_FRAMEBUFFER_DEFAULT_HEIGHT, height);
   const auto d = defines();
   insertProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "kbuffer/kbuffer_insert.frag", d);
-  dataProgram(RasterUniforms{});  // (the default lighting model's, compiled now)
   if (settings_.buckets) bucketProgram_ = &shaders.compute("kbuffer/bucket_table.comp", d);
 }
 

@@ -24,8 +24,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
-  gpu::ShaderDefines defines = layout.defines();
-  for (const auto& d : fields.defines()) defines.push_back(d);
+  gpu::ShaderDefines defines = gpu::joined(layout.defines(), fields.defines());
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;

@@ -97,12 +97,10 @@ gpu::ShaderDefines IllustrativeSettings::defines() const {
 void IllustrativeSettings::setUniforms(const gpu::ShaderProgram& program, int width, int height) const {
   const auto f = [&](const char* name, float v) { glUniform1f(program.uniform(name), v); };
   const auto i = [&](const char* name, int v) { glUniform1i(program.uniform(name), v); };
-  i("uOpacityMode", static_cast<int>(opacity));
   f("uAlpha", alpha);
   f("uAlphaMin", alphaMin);
   f("uAlphaMax", alphaMax);
   f("uGamma", gamma);
-  i("uShading", static_cast<int>(shading));
   i("uTwoSided", twoSided ? 1 : 0);
   f("uSpecular", specular);
   f("uShininess", shininess);
@@ -113,13 +111,11 @@ void IllustrativeSettings::setUniforms(const gpu::ShaderProgram& program, int wi
   f("uWindowRadius", windowRadius * h);
   f("uWindowFalloff", windowFalloff * h);
   f("uWindowOpacity", windowOpacity);
-  i("uStripes", static_cast<int>(stripes));
   f("uStripePeriod", stripePeriod);
   f("uStripeWidth", stripeWidth);
   f("uStripeStrength", stripeStrength);
   f("uStripeDarken", stripeDarken);
   i("uStripeAdditive", stripeAdditive ? 1 : 0);
-  i("uSilhouettes", silhouettes ? 1 : 0);
   glUniform3fv(program.uniform("uSilhouetteColor"), 1, &silhouetteColor[0]);
   f("uSilhouetteThreshold", silhouetteThreshold);
   f("uSilhouetteSoftness", silhouetteSoftness);

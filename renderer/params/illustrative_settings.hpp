@@ -61,7 +61,7 @@ struct IllustrativeSettings {
   // The modes the shaders branch on (opacity, shading, stripes, silhouettes) as defines, compiled
   // into a program instead of read from uniforms: llvmpipe runs every side of an `if` under a lane
   // mask, so with uniforms every fragment paid for each mode it did not use (issue #29).
-  // setUniforms then sets only the uniforms the program still has.
+  // setUniforms sets the rest.
   gpu::ShaderDefines defines() const;
 };
 

@@ -55,7 +55,7 @@ class Style {
 };
 
 // The common `lighting` key (every style has it; a style may declare it with its own default) and
-// the uLighting value of frame/surface_shading.glsl it selects: 0 none, 1 headlight, 2 pbr.
+// the TLAB_LIGHTING value of frame/surface_shading.glsl it selects: 0 none, 1 headlight, 2 pbr.
 ParamSpec lightingParam(const std::string& defaultValue);
 int lightingModel(const StyleParams& params);
 
