@@ -9,6 +9,7 @@
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
+#include "renderer/styles/style.hpp"
 
 namespace tlab::bench {
 
@@ -78,6 +79,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   s.recordWords = layout.stride;
   s.dataWords = layout.words;
   s.listSteps = layout.properties.has(render::FragmentProperty::DepthGradient);
+  s.colorPlane = render::findStyle(style).fill(params).colorPlane && layout.properties.has(render::FragmentProperty::Color);
   // The fill stores and the sort copies whole records, their padding too (uvec4 at a time); the
   // passes that read records read only the words they use. A compositor reads every property of the
   // record (constant's, which sorts each list as it blends (issue #29), its depth and triangle for
@@ -88,7 +90,11 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
     s.fieldsPerFragment = 1 + (smart.silhouettes ? 1 : 0) + (smart.halos ? 1 : 0);
     s.solve = solveShape(smart, fields);
     s.composeWords = 1;
-    s.composeFields = s.fieldsPerFragment;
+    // α only where it varies (Eq. 5; Eq. 4's s is a uniform), β and γ only where the connect pass
+    // listed a seed (a field of zeros is left out: render/compose/smart_compositor.cpp).
+    const auto varies = [&](bool has, render::Field f) { return has && !(fields && fields->allZero(f)) ? 1 : 0; };
+    s.composeFields = (smart.adaptiveAlpha ? 1 : 0) + varies(smart.silhouettes, render::Field::Beta) +
+                      varies(smart.halos, render::Field::Gamma);
     const auto has = [&](render::FragmentProperty p) { return layout.properties.has(p) ? 1u : 0u; };
     s.connectWords = 1 + has(render::FragmentProperty::Normal) + 2 * has(render::FragmentProperty::DepthGradient) +
                      has(render::FragmentProperty::Ids);
@@ -110,13 +116,15 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "writes each record once (" + recordText + "), a count and a head per pixel";
     } else if (name == "sort") {
       t.bytesRead = fr * record + px * 8;
-      t.bytesWritten = fr * record + (s.listSteps ? px * 8 : 0);
+      t.bytesWritten = fr * record + (s.listSteps ? px * 8 : 0) + (s.colorPlane ? fr * 4 : 0);
       t.model = "reads count, head and each record once, writes each record once (" + recordText + ")" +
-                (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "");
+                (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "") +
+                (s.colorPlane ? " and each colour word again (the colour plane)" : "");
     } else if (name == "compose") {
       t.bytesRead = px * (8 + 16) + fr * 4.0 * (s.composeWords + s.composeFields);
       t.bytesWritten = px * (16 + 16);
-      t.model = "reads count, head and " + std::to_string(s.composeWords) + " word(s) of each record" +
+      t.model = "reads count, head and " + std::to_string(s.composeWords) +
+                (s.colorPlane ? " word(s) of the colour plane" : " word(s) of each record") +
                 (s.composeFields ? " and " + std::to_string(s.composeFields) + " field(s)" : std::string()) +
                 " per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {

@@ -43,9 +43,10 @@ struct FrameShape {
   std::uint32_t recordWords = 2;   // words per fragment record, padding included (render::FragmentLayout::stride)
   std::uint32_t dataWords = 2;     // of those, the words the properties take (render::FragmentLayout::words)
   std::uint32_t composeWords = 2;  // words of each record the style's compositor reads
-  int composeFields = 0;           // smart: the fields (α, β, γ) its compositor reads per fragment
+  int composeFields = 0;           // smart: the fields (α, β, γ) its compositor reads per fragment (those that vary)
   std::uint32_t connectWords = 0;  // smart: the words of each record the connect pass reads (depth, ∇z, normal, ids)
   bool listSteps = false;          // records with a depth gradient: the sort also writes each list's maxStep
+  bool colorPlane = false;         // the sort also writes each colour word into a plane (render::FillSpec::colorPlane)
   int fieldsPerFragment = 1;       // smart: α plus β (silhouettes) plus γ (halos)
   SolveShape solve;                // smart
 };

@@ -16,7 +16,7 @@ namespace {
 // Binding points of frame/fragment_layout.glsl.
 enum Binding : GLuint {
   kPixelCount = 0, kPixelHead = 1, kPixelCursor = 2, kListNext = 3, kCounters = 4,
-  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7, kListSteps = 27, kCovered = 28,
+  kFragsUnsorted = 5, kFragsSorted = 6, kOrder = 7, kListSteps = 27, kCovered = 28, kColorPlane = 29,
 };
 constexpr std::uint32_t kPrefixBlock = 256;  // pixels per block in buffer/prefix_sum.comp
 constexpr std::size_t kSlotBudgetBytes = std::size_t(256) << 20;  // at most this for per-pixel slots
@@ -67,13 +67,10 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   const auto defines = layout_.defines();
   if (method_ == FillMethod::CountScatter) {
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
-    sortProgram_ = &shaders.compute("buffer/sort.comp", defines);
-    sortSlotsProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_SLOTS", "1"));
-    sortShortSlotsProgram_ =
-        &shaders.compute("buffer/sort.comp", with(with(defines, "TLAB_SLOTS", "1"), "TLAB_REGISTER_SORT", "8"));
-  } else {
-    sortProgram_ = &shaders.compute("buffer/sort.comp", with(defines, "TLAB_LINKED_LIST", "1"));
+    sortSlotsProgram_ = &sortProgram(SortSource::Slots, false);
+    sortShortSlotsProgram_ = &sortProgram(SortSource::ShortSlots, false);
   }
+  sortProgram_ = &sortProgram(SortSource::Block, false);
   for (int phase = 0; phase < 3; ++phase)
     prefix_[phase] = &shaders.compute("buffer/prefix_sum.comp", with(defines, "TLAB_PHASE", std::to_string(phase + 1)));
   ensureCapacity(initialCapacity == 0 ? n : initialCapacity);
@@ -214,6 +211,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   slotsUsed_ = 0;
   sorted_ = false;
   listStepsWritten_ = false;
+  colorPlaneWritten_ = false;
   headsReady_ = false;
   fragmentCountKnown_ = false;
   triangles_ = scene.triangleCount();
@@ -221,6 +219,17 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   else fillLinkedList(scene, uniforms, timer);
   if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { ensureSorted(); });
   gpu::checkGl("building the illustration buffer");
+}
+
+// buffer/sort.comp for where the unsorted records sit (a block, a linked list or slots) and
+// whether it writes the colour plane; compiled on first use, kept by the shader cache.
+const gpu::ShaderProgram& FragmentBuffer::sortProgram(SortSource source, bool colorPlane) const {
+  gpu::ShaderDefines defines = layout_.defines();
+  if (method_ == FillMethod::LinkedList) defines = with(defines, "TLAB_LINKED_LIST", "1");
+  if (source != SortSource::Block) defines = with(defines, "TLAB_SLOTS", "1");
+  if (source == SortSource::ShortSlots) defines = with(defines, "TLAB_REGISTER_SORT", "8");
+  if (colorPlane) defines = with(defines, "TLAB_COLOR_PLANE", "1");
+  return shaders_.compute("buffer/sort.comp", defines);
 }
 
 void FragmentBuffer::ensureSorted() {
@@ -242,9 +251,18 @@ void FragmentBuffer::sortLists() {
     if (listSteps_.size() < pixels() * 8) listSteps_ = gpu::Buffer(pixels() * 8);
     listSteps_.bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
   }
+  const bool plane = colorPlane_ && layout_.properties.has(FragmentProperty::Color);
+  if (plane) {
+    if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
+    colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
+  }
   // Lists in at most 8 slots all fit the sort's 8-register network (buffer/sort.comp).
   const bool shortLists = slotsUsed_ > 0 && slotsUsed_ <= 8;
-  const gpu::ShaderProgram& program = shortLists ? *sortShortSlotsProgram_ : slotsUsed_ > 0 ? *sortSlotsProgram_ : *sortProgram_;
+  const SortSource source = shortLists ? SortSource::ShortSlots : slotsUsed_ > 0 ? SortSource::Slots : SortSource::Block;
+  const gpu::ShaderProgram& program = plane ? sortProgram(source, true)
+                                      : source == SortSource::ShortSlots ? *sortShortSlotsProgram_
+                                      : source == SortSource::Slots      ? *sortSlotsProgram_
+                                                                         : *sortProgram_;
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   // The register sort's key holds triangle * 16 + position in one word (buffer/sort.comp).
@@ -254,6 +272,7 @@ void FragmentBuffer::sortLists() {
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   sorted_ = true;
   listStepsWritten_ = steps;
+  colorPlaneWritten_ = plane;
 }
 
 void FragmentBuffer::bindSorted() {

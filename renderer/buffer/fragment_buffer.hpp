@@ -56,6 +56,13 @@ class FragmentBuffer final : public Fill {
   // written by this frame's sort when the records carry a depth gradient; null otherwise (no
   // gradient, or the lists not sorted yet). Pixels without fragments are left as they were.
   const gpu::Buffer* listSteps() const { return listStepsWritten_ ? &listSteps_ : nullptr; }
+  // When on (FillSpec::colorPlane), the sort also writes each fragment's colour word alone, one
+  // word a fragment in the sorted order, for a compositor that reads nothing else of the records
+  // (issue #29: reading one word of each 8-word record cost smart's compose on the 16-layer stack
+  // about 20 of its 24 ms). colorPlane() is that buffer once this frame's lists are sorted, null
+  // otherwise (off, records without a colour, or not sorted yet).
+  void setColorPlane(bool on) { colorPlane_ = on; }
+  const gpu::Buffer* colorPlane() const { return colorPlaneWritten_ ? &colorPlaneBuffer_ : nullptr; }
   // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
   // in the order buffer (off): the same sorted buffer either way (tests compare the two).
   void setRegisterSort(bool on) { registerSort_ = on; }
@@ -111,6 +118,8 @@ class FragmentBuffer final : public Fill {
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();
   void ensureSorted();  // the heads, then sortLists(), unless this frame's lists are sorted
+  enum class SortSource { Block, Slots, ShortSlots };  // where the unsorted records sit (ShortSlots: at most 8)
+  const gpu::ShaderProgram& sortProgram(SortSource source, bool colorPlane) const;
   void sortLists();
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
@@ -136,6 +145,9 @@ class FragmentBuffer final : public Fill {
   gpu::Buffer coveredPixels_;  // the pixels with a fragment, in pixel order (buffer/prefix_sum.comp)
   std::uint32_t coveredCount_ = 0;
   bool listStepsWritten_ = false;
+  bool colorPlane_ = false;         // see setColorPlane()
+  bool colorPlaneWritten_ = false;  // this frame's sort wrote colorPlaneBuffer_
+  gpu::Buffer colorPlaneBuffer_;
   gpu::Buffer slotOrder_;  // a compositor's sort keys beside the slots (i * pixels + pixel)
   mutable gpu::Buffer composeOutput_;
   gpu::ShaderCache& shaders_;

@@ -27,6 +27,12 @@ layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
 layout(std430, binding = BIND_LIST_STEPS) writeonly buffer ListSteps { vec2 listSteps[]; };
 vec2 gListStep = vec2(0.0);
 #endif
+#ifdef TLAB_COLOR_PLANE
+// Each fragment's colour word again, one word a fragment in the sorted order (FillSpec::colorPlane):
+// a compositor that reads nothing of the records but the colour (compose/smart_compose.comp) then
+// reads 4 contiguous bytes a fragment, not one word of each record (issue #29).
+layout(std430, binding = BIND_COLOR_PLANE) writeonly buffer ColorPlane { uint colorPlane[]; };
+#endif
 uniform uint uPixels;
 // The longest list sorted in registers (REGISTER_SORT, or 0: every list in the order buffer).
 uniform uint uRegisterSortMax;
@@ -42,6 +48,9 @@ void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
     quads[q] = fragQuads[src * TLAB_RECORD_QUADS + q];
     sortedQuads[dst * TLAB_RECORD_QUADS + q] = quads[q];
   }
+#ifdef TLAB_COLOR_PLANE
+  colorPlane[dst] = quadWord(quads, TLAB_OFF_COLOR);
+#endif
 #ifdef TLAB_HAS_DEPTH_GRADIENT
   const uint g = TLAB_OFF_DEPTH_GRADIENT;
   vec2 gradient = uintBitsToFloat(uvec2(quadWord(quads, g), quadWord(quads, g + 1u)));
@@ -53,6 +62,9 @@ void storeRecord(uint dst, uint depthBits, uint prim, uint src) {
   sorted[fragWord(dst, OFF_DEPTH)] = depthBits;
   sorted[fragWord(dst, OFF_PRIM)] = prim;
   for (uint w = 2u; w < uint(TLAB_STRIDE); ++w) sorted[fragWord(dst, w)] = unsortedWord(fragWord(src, w));
+#ifdef TLAB_COLOR_PLANE
+  colorPlane[dst] = unsortedWord(fragWord(src, TLAB_OFF_COLOR));
+#endif
 #ifdef TLAB_HAS_DEPTH_GRADIENT
   uint g = fragWord(src, TLAB_OFF_DEPTH_GRADIENT);
   gListStep = max(gListStep, abs(vec2(uintBitsToFloat(unsortedWord(g)), uintBitsToFloat(unsortedWord(g + 1u)))));

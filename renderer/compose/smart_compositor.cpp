@@ -8,11 +8,20 @@ namespace tlab::render {
 
 void composeSmart(FrameContext& frame, const TransparencyFields& fields, const SmartSettings& settings) {
   const FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
-  gpu::ShaderDefines defines = gpu::joined(buffer.layout().defines(), fields.defines());
+  // What the compose reads of the fields: β and γ where they may be above 0 (a field that is 0
+  // everywhere adds nothing: modifier(0) = 0), α where it varies (Eq. 4's α is s everywhere).
+  gpu::ShaderDefines defines = buffer.layout().defines();
+  if (fields.hasBeta() && !fields.allZero(Field::Beta)) defines.emplace_back("TLAB_HAS_BETA", "1");
+  if (fields.hasGamma() && !fields.allZero(Field::Gamma)) defines.emplace_back("TLAB_HAS_GAMMA", "1");
+  if (!settings.adaptiveAlpha) defines.emplace_back("TLAB_UNIFORM_ALPHA", "1");
   defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
+  // The colours from the sort's colour plane where it wrote one (SmartStyle::fill asks for it).
+  const gpu::Buffer* colorPlane = buffer.colorPlane();
+  if (colorPlane) defines.emplace_back("TLAB_COLOR_PLANE", "1");
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
   const gpu::Buffer& output = buffer.composeOutput();
   buffer.bindSorted();
+  if (colorPlane) colorPlane->bindBase(GL_SHADER_STORAGE_BUFFER, 29);  // BIND_COLOR_PLANE
   fields.bindCurrent();
   // A pixel without fragments composes to c + T·c_background with c = 0, T = 1: the background,
   // exactly. The buffer is cleared to it, and the shader runs for the pixels with fragments only.
@@ -22,6 +31,7 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   program.use();
   glUniform4fv(program.uniform("uBackground"), 1, &frame.background[0]);
   glUniform1f(program.uniform("uP"), static_cast<float>(settings.p));
+  glUniform1f(program.uniform("uS"), static_cast<float>(settings.s));
   buffer.dispatchCovered(program);
   finishCompose(frame, output, "compose/smart_compose.comp");
 }

@@ -14,6 +14,7 @@
 #define BIND_OUTPUT 9
 #define BIND_LIST_STEPS 27  // each list's max |∂z/∂x|, max |∂z/∂y| (buffer/sort.comp, read by ops/connect.comp)
 #define BIND_COVERED 28      // the pixels holding a fragment, in pixel order (buffer/prefix_sum.comp)
+#define BIND_COLOR_PLANE 29  // each fragment's colour word alone, in sorted order (buffer/sort.comp, TLAB_COLOR_PLANE)
 
 #ifndef TLAB_STRIDE
 #define TLAB_STRIDE 2u  // passes that read no fragment records

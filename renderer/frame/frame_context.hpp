@@ -10,6 +10,7 @@
 #include "renderer/frame/gpu_scene.hpp"
 #include "renderer/frame/pass_timer.hpp"
 #include "renderer/frame/raster_uniforms.hpp"
+#include "renderer/frame/scene_cache.hpp"
 #include "renderer/gpu/shader_cache.hpp"
 #include "renderer/params/style_params.hpp"
 #include "renderer/scene/scene.hpp"
@@ -33,6 +34,7 @@ struct FrameContext {
   gpu::ShaderCache& shaders;
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
   TransparencyFields* fields = nullptr;  // per-fragment fields whose memory is kept across frames (smart style)
+  SceneCache* sceneCache = nullptr;      // what styles derive from the scene alone, kept across frames
 
   // The fill as the type a pass needs (a style's passes know which fill the style declared).
   template <typename T>
@@ -40,6 +42,12 @@ struct FrameContext {
     T* const typed = dynamic_cast<T*>(fill);
     if (!typed) throw std::logic_error("a render pass ran on a fill its style did not declare");
     return *typed;
+  }
+  // What a style derives from the scene alone (T(scene)), kept by the renderer across frames.
+  template <typename T>
+  T& derived() const {
+    if (!sceneCache) throw std::logic_error("a render pass needs the renderer's scene cache");
+    return sceneCache->get<T>(scene);
   }
 };
 

@@ -31,6 +31,7 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
   if (withGamma)
     for (auto& b : gamma_.copies) fit(b, floats);
   seedsListed_ = false;
+  for (bool& zero : allZero_) zero = false;
   if (!withBeta && !withGamma) return;
   const std::size_t list = (fragments + 4) * 4;
   fit(frontier_[int(Field::Alpha)], list);

@@ -55,6 +55,12 @@ class TransparencyFields {
   bool takeSeedsListed() { return std::exchange(seedsListed_, false); }
   bool seedsListed() const { return seedsListed_; }
   std::vector<std::uint32_t> readList(Field field);  // the fragments of frontier(field), as listed
+  // Whether β (or γ) is 0 at every fragment for the rest of the frame: the connect pass listed no
+  // seed for it (no fragment starts above 0), and Eq. 9's max-propagation keeps a field of zeros
+  // so. The compose then reads nothing of it (issue #29: a stack without silhouettes). Set by the
+  // connect pass; false after resize.
+  void setAllZero(Field field, bool zero) { allZero_[int(field)] = zero; }
+  bool allZero(Field field) const { return allZero_[int(field)]; }
 
   // Read-backs for tests, inspection and the diffusion benchmark.
   std::vector<float> read(Field field) const;
@@ -75,6 +81,7 @@ class TransparencyFields {
   PingPong alpha_, beta_, gamma_;
   gpu::Buffer frontier_[3];  // by Field
   bool seedsListed_ = false;
+  bool allZero_[3] = {false, false, false};  // by Field
 };
 
 }  // namespace tlab::render

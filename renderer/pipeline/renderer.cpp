@@ -68,6 +68,7 @@ Fill* Renderer::prepareFill(const Style& style, const StyleParams& params, const
     fill_ = std::make_unique<FragmentBuffer>(shaders_, w, h, FragmentLayout(props), request.fill, request.initialPoolFragments);
   auto* const buffer = static_cast<FragmentBuffer*>(fill_.get());
   buffer->setSortInCompose(spec.sortsInCompose);
+  buffer->setColorPlane(spec.colorPlane);
   return buffer;
 }
 
@@ -87,7 +88,7 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   timer.stopAfter(request.lastPass);
   Fill* const fill = prepareFill(style, params, request, camera);
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, fill, image, shaders_, &drawOrder_, &fields_};
+                     scene_.background, fill, image, shaders_, &drawOrder_, &fields_, &sceneCache_};
   if (fill) fill->build(frame, timer);
   std::vector<std::string> operations;
   if (!fill || !fill->composesPicture())

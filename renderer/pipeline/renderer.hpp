@@ -14,6 +14,7 @@
 #include "renderer/ops/transparency_fields.hpp"
 #include "renderer/kbuffer/bucketed_kbuffer.hpp"
 #include "renderer/frame/gpu_scene.hpp"
+#include "renderer/frame/scene_cache.hpp"
 #include "renderer/scene/scene.hpp"
 #include "renderer/params/style_params.hpp"
 
@@ -103,6 +104,7 @@ class Renderer {
   std::unique_ptr<Fill> fill_;  // kept across frames of the same size and settings (its pool, its GL objects)
   GroupDrawOrder drawOrder_;    // state across successive frames (seed 004, Alg. 1 line 1)
   TransparencyFields fields_;   // smart transparency's fields: memory kept across frames (issue #29)
+  SceneCache sceneCache_;       // what styles derive from the scene alone (view-dependent's edges)
 };
 
 // Sets near/far so the scene's bounding sphere lies between them.

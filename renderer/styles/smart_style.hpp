@@ -14,6 +14,12 @@ class SmartStyle final : public Style {
   std::vector<ParamSpec> params() const override;
   void validate(const StyleParams& params) const override;
   FragmentProperties properties(const StyleParams& params, const SceneFacts& facts) const override;
+  // The buffer with the colour plane: Alg. 3's compositing reads only the colour of the records.
+  FillSpec fill(const StyleParams&) const override {
+    FillSpec spec;
+    spec.colorPlane = true;
+    return spec;
+  }
   std::vector<std::unique_ptr<RenderPass>> passes(const StyleParams& params) const override;
 };
 

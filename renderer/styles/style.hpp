@@ -27,6 +27,9 @@ struct FillSpec {
   // compose/blend.comp), so the fill may leave the lists unsorted; a pass that binds the sorted
   // lists all the same gets them sorted then.
   bool sortsInCompose = false;
+  // For Kind::FragmentBuffer: the sort also writes each fragment's colour word into a plane of its
+  // own (FragmentBuffer::setColorPlane), for a compositor that reads only the colour of the records.
+  bool colorPlane = false;
 };
 
 // Facts about the scene a style may use to leave out what it does not need.

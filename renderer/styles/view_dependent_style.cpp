@@ -8,7 +8,7 @@ namespace {
 
 struct ViewDependentFrame {
   ViewDependentSettings settings;
-  std::unique_ptr<ViewDependentAlpha> alpha;
+  ViewDependentAlpha* alpha = nullptr;  // the renderer's: its scene's edges, kept across frames
 };
 
 ViewDependentSettings settingsFrom(const StyleParams& p) {
@@ -51,9 +51,11 @@ std::vector<std::unique_ptr<RenderPass>> ViewDependentStyle::passes(const StyleP
   auto frame = std::make_shared<ViewDependentFrame>();
   frame->settings = settingsFrom(params);
   std::vector<std::unique_ptr<RenderPass>> p;
-  // Silhouette edges (Eq. 1) and per-vertex α (Eq. 2) for this frame's eye.
+  // Silhouette edges (Eq. 1) and per-vertex α (Eq. 2) for this frame's eye. The edge adjacency
+  // and the uploaded mesh depend on the scene alone: built on the renderer's first frame of this
+  // style, only the silhouettes and α are redone per frame.
   p.push_back(functionPass("silhouettes", [frame](FrameContext& f) {
-    frame->alpha = std::make_unique<ViewDependentAlpha>(f.scene);
+    frame->alpha = &f.derived<ViewDependentAlpha>();
     frame->alpha->update(f.camera.eye, frame->settings.k);
   }));
   p.push_back(functionPass("compose", [frame](FrameContext& f) { composeViewDependent(f, *frame->alpha, frame->settings); }));

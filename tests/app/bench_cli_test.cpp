@@ -131,16 +131,18 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   // quads; the scene's quads are 4 components), which the fill and the sort move whole. Its connect
   // pass reads 5 of them (depth, ∇z, normal, ids), maxStep (2 floats a pixel, which smart's sort
   // writes beside the sorted records) and links of 4 words, and writes the links, 3 fields (α, β,
-  // γ) and the flags; its compose reads the colour word and the 3 fields.
+  // γ) and the flags; its compose reads the colour plane and only the fields that vary: none here
+  // (α is s everywhere by Eq. 4, and without a silhouette β and γ have no seed).
   ASSERT_FALSE(connect.is_null()) << j;
   const double smartRecord = 32;
   EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (5 * 4 + 16));
   EXPECT_EQ(connect["bytes_written"].get<double>(), fragments * (16 + 3 * 4 + 4));
   ASSERT_FALSE(smartSort.is_null()) << j;
   EXPECT_EQ(smartSort["bytes_read"].get<double>(), fragments * smartRecord + pixels * 8);
-  EXPECT_EQ(smartSort["bytes_written"].get<double>(), fragments * smartRecord + pixels * 8);
+  // (and the colour words again: the colour plane smart's compose reads)
+  EXPECT_EQ(smartSort["bytes_written"].get<double>(), fragments * smartRecord + pixels * 8 + fragments * 4);
   ASSERT_FALSE(smartCompose.is_null()) << j;
-  EXPECT_EQ(smartCompose["bytes_read"].get<double>(), pixels * 24 + fragments * (1 + 3) * 4);
+  EXPECT_EQ(smartCompose["bytes_read"].get<double>(), pixels * 24 + fragments * 1 * 4);
   // The streaming rate of a copying compute shader, and each row's time over it.
   EXPECT_GT(j["gl_copy_bandwidth"].get<double>(), 0.0);
   const int words = j["gl_copy_words_per_invocation"];
@@ -154,16 +156,21 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
 // defaults the fragments it reached are written once each. α diffusion (Eq. 5's adaptive α)
 // counts full sweeps: 20 steps, 1 explicit dispatch each at λα = 1 with the normalized Laplacian,
 // 4 sub-steps with the sum (λ ≤ 1/4); Eq. 8 spreading likewise for β and γ.
+namespace {
+// The row of `pass` in `tlab bench floor --styles smart` at 48x40 with `args`.
+nlohmann::json smartFloorRow(const std::string& args, const std::string& pass) {
+  const auto r = runCommand(kTlab + " bench floor --styles smart --size 48x40 --frames 1 --copy-mib 16 --gl osmesa --json " + args);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  for (const auto& row : j["rows"])
+    if (row["pass"] == pass) return row;
+  ADD_FAILURE() << "no " << pass << " row: " << r.out;
+  return nlohmann::json();
+}
+}  // namespace
+
 TEST(BenchCli, FloorCountsTheSolveFromWhatItSpreadFromAndReached) {
-  const auto solveRow = [](const std::string& args) {
-    const auto r = runCommand(kTlab + " bench floor --styles smart --size 48x40 --frames 1 --copy-mib 16 --gl osmesa --json " + args);
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    const auto j = nlohmann::json::parse(r.out);
-    for (const auto& row : j["rows"])
-      if (row["pass"] == "solve") return row;
-    ADD_FAILURE() << "no solve row: " << r.out;
-    return nlohmann::json();
-  };
+  const auto solveRow = [](const std::string& args) { return smartFloorRow(args, "solve"); };
   const auto quads = solveRow("--scenes 'builtin:quad-stack?n=4&m=4'");
   EXPECT_EQ(quads["solve"]["beta_seeds"], 0);
   EXPECT_EQ(quads["bytes_read"].get<double>() + quads["bytes_written"].get<double>(), 0.0);
@@ -195,6 +202,25 @@ TEST(BenchCli, FloorCountsTheSolveFromWhatItSpreadFromAndReached) {
   EXPECT_EQ(diffusion["solve"]["beta_sweeps"], 20);
   EXPECT_EQ(diffusion["solve"]["gamma_sweeps"], 20);
   EXPECT_EQ(diffusion["bytes_written"].get<double>(), 40 * fragments * 4);
+}
+
+// What smart's compose reads of the fields (issue #29): around two nested spheres β (silhouettes)
+// and γ (halos: the inner sphere's silhouette behind the outer surface) have seeds; α is read only
+// where it varies (Eq. 5); a field switched off is not read, nor one without a seed (one sphere has
+// silhouettes but nothing behind another surface's edge: no halo).
+TEST(BenchCli, FloorCountsTheFieldsSmartsComposeReads) {
+  const auto composeFields = [](const std::string& args) {
+    const auto row = smartFloorRow(args, "compose");
+    if (row.is_null()) return -1.0;
+    const double pixels = 48 * 40, fragments = row["fragments"];
+    return (row["bytes_read"].get<double>() - pixels * 24) / (fragments * 4) - 1;  // less the colour word
+  };
+  const std::string nested = "--scenes 'builtin:nested-spheres?n=2' ";
+  EXPECT_EQ(composeFields(nested), 2.0);
+  EXPECT_EQ(composeFields(nested + "--set alpha_init=adaptive"), 3.0);
+  EXPECT_EQ(composeFields(nested + "--set halos=off"), 1.0);
+  EXPECT_EQ(composeFields(nested + "--set silhouettes=off --set halos=off"), 0.0);
+  EXPECT_EQ(composeFields("--scenes builtin:sphere"), 1.0);
 }
 
 TEST(BenchCli, FloorRefusesASettingAStyleDoesNotHave) {

@@ -450,3 +450,55 @@ TEST(IllustrationBuffer, ConstantComposesEveryCoveredPixelAndPaintsTheRestBackgr
     }
   }
 }
+
+// Issue #29: with the colour plane on, the sort also writes each fragment's colour word alone, in
+// the sorted order — the colour word of the sorted record at the same index — wherever the
+// unsorted records sit (the scatter pass's block, the slots, at most 8 slots, the linked lists)
+// and whether records are copied word by word or in quads. Off, no plane is written.
+TEST(IllustrationBuffer, TheColorPlaneHoldsEachSortedRecordsColour) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour, padded;
+  colour |= FragmentProperty::Color;
+  padded = colour;
+  padded |= FragmentProperty::Normal;
+  padded |= FragmentProperty::DepthGradient;
+  padded |= FragmentProperty::Ids;
+  PassTimer timer(false);
+  // 20 layers (the first frame scatters, the second fills 20 slots) and at most 4 (8 slots or fewer).
+  for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:nested-spheres?n=2"}) {
+    const Scene scene = loadScene(source);
+    GpuScene gpu(scene);
+    RasterUniforms u;
+    u.view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
+    u.projection = glm::perspective(0.9f, 48.0f / 40.0f, 0.1f, 20.0f);
+    for (const FragmentLayout& layout : {FragmentLayout(colour), FragmentLayout(padded)})
+      for (const FillMethod method : {FillMethod::CountScatter, FillMethod::LinkedList}) {
+        FragmentBuffer buffer(shaders, 48, 40, layout, method);
+        buffer.build(gpu, u, timer);
+        EXPECT_EQ(buffer.colorPlane(), nullptr);
+        buffer.setColorPlane(true);
+        std::set<std::uint32_t> slotsSeen;
+        for (int frame = 0; frame < 2; ++frame) {
+          SCOPED_TRACE(std::string(source) + ", stride " + std::to_string(layout.stride) + ", " + fillMethodName(method) +
+                       ", frame " + std::to_string(frame));
+          buffer.build(gpu, u, timer);
+          slotsSeen.insert(buffer.slotsUsed());
+          const std::size_t n = buffer.fragmentCount();
+          ASSERT_GT(n, 0u);
+          ASSERT_NE(buffer.colorPlane(), nullptr);
+          std::vector<std::uint32_t> plane(n);
+          buffer.colorPlane()->download(plane.data(), n * 4);
+          const auto records = buffer.sortedRecords(0, n);
+          std::size_t mismatches = 0;
+          std::set<std::uint32_t> colours;
+          for (std::size_t f = 0; f < n; ++f) {
+            mismatches += plane[f] != records[f * layout.stride + layout.colorOffset];
+            colours.insert(plane[f]);
+          }
+          EXPECT_EQ(mismatches, 0u);
+          EXPECT_GT(colours.size(), 1u);  // the scenes' layers have colours of their own
+        }
+        if (method == FillMethod::CountScatter) EXPECT_GT(*slotsSeen.rbegin(), 0u) << "the second frame fills slots";
+      }
+  }
+}

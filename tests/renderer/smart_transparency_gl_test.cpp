@@ -3,6 +3,7 @@
 // smart_diffusion_gl_test.cpp, the connect pass's search and the image edge in smart_connect_gl_test.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -267,4 +268,32 @@ TEST(SmartTransparency, HalosOffAllocatesNoGammaField) {
   EXPECT_FALSE(rig.fields->hasGamma());
   EXPECT_TRUE(rig.fields->hasBeta());
   EXPECT_THROW(rig.fields->read(Field::Gamma), std::logic_error);
+}
+
+// The compose leaves out a field the connect pass listed no seed for (issue #29): that is only
+// right where the field is 0 at every fragment, and it must not be claimed where one is above 0.
+TEST(SmartTransparency, FieldsWithoutSeedsAreKnownToBeZero) {
+  struct Case {
+    const char* name;
+    Scene scene;
+    bool betaZero, gammaZero;
+  };
+  // A stack seen straight on whose quads cover the view: no silhouette and no occluding edge. The
+  // occluder's front edge: silhouettes (β) and a halo (γ) on the quad behind it.
+  const Case cases[] = {{"quad-stack", loadScene("builtin:quad-stack?n=3"), true, true},
+                        {"occluder", occluderScene(), false, false}};
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.name);
+    SmartRig rig(c.scene, 40, 30);
+    ASSERT_TRUE(rig.fields->seedsListed());
+    for (auto [field, zero] : {std::pair{Field::Beta, c.betaZero}, std::pair{Field::Gamma, c.gammaZero}}) {
+      EXPECT_EQ(rig.fields->allZero(field), zero);
+      const auto values = rig.fields->read(field);
+      const bool allValuesZero = std::all_of(values.begin(), values.end(), [](float v) { return v == 0.0f; });
+      EXPECT_EQ(allValuesZero, zero);
+    }
+  }
+  // Without seed lists (the Eq. 8 spreading reads every fragment) nothing is claimed.
+  SmartRig spreading(loadScene("builtin:quad-stack?n=3"), 40, 30, {{"spread", "diffusion"}});
+  EXPECT_FALSE(spreading.fields->allZero(Field::Beta));
 }

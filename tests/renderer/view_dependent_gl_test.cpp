@@ -201,3 +201,29 @@ TEST(DiepstratenLines, SilhouettesInsideATransparentObjectAreUnbroken) {
   }
   EXPECT_EQ(broken, 0) << "of " << columns << " columns";
 }
+
+// The renderer keeps the edge adjacency of its scene across frames (SceneCache): the silhouettes
+// and Eq. 2's α still follow each frame's eye. One renderer drawing eyes A, B, A gives A's picture
+// twice and, from B, the picture a renderer that never saw A draws; B's differs from A's.
+TEST(ViewDependentAlpha, OneRendererRedoesTheSilhouettesForEveryEye) {
+  const Scene scene = sceneOf({shell(1.0f, glm::vec3(0.3f, 0.0f, 0.0f)), opaqueBox(0.25f, glm::vec3(0.2f, 0.1f, 0))});
+  const auto request = [&](glm::vec3 eye) {
+    RenderRequest r;
+    r.width = r.height = kSize;
+    r.style = "view-dependent";
+    Camera c = *scene.camera;
+    c.eye = eye;
+    r.camera = c;
+    return r;
+  };
+  const glm::vec3 a(0, 0, 6), b(4.2f, 1.5f, 4.0f);
+  Renderer renderer(scene);
+  const tlab::core::Image first = renderer.render(request(a));
+  const tlab::core::Image second = renderer.render(request(b));
+  const tlab::core::Image third = renderer.render(request(a));
+  Renderer fresh(scene);
+  const tlab::core::Image freshB = fresh.render(request(b));
+  EXPECT_TRUE(first.pixels == third.pixels);
+  EXPECT_TRUE(second.pixels == freshB.pixels);
+  EXPECT_FALSE(first.pixels == second.pixels);
+}
