@@ -67,10 +67,10 @@ FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height,
   const auto defines = layout_.defines();
   if (method_ == FillMethod::CountScatter) {
     countProgram_ = &shaders.graphics("buffer/scene_geometry.vert", "buffer/fill_count.frag", defines);
-    sortSlotsProgram_ = &sortProgram(SortSource::Slots, false);
-    sortShortSlotsProgram_ = &sortProgram(SortSource::ShortSlots, false);
+    sortProgram(SortSource::Slots, false);
+    sortProgram(SortSource::ShortSlots, false);
   }
-  sortProgram_ = &sortProgram(SortSource::Block, false);
+  sortProgram(SortSource::Block, false);
   for (int phase = 0; phase < 3; ++phase)
     prefix_[phase] = &shaders.compute("buffer/prefix_sum.comp", with(defines, "TLAB_PHASE", std::to_string(phase + 1)));
   ensureCapacity(initialCapacity == 0 ? n : initialCapacity);
@@ -222,14 +222,17 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
 }
 
 // buffer/sort.comp for where the unsorted records sit (a block, a linked list or slots) and
-// whether it writes the colour plane; compiled on first use, kept by the shader cache.
+// whether it writes the colour plane; compiled on first use, then kept.
 const gpu::ShaderProgram& FragmentBuffer::sortProgram(SortSource source, bool colorPlane) const {
+  const gpu::ShaderProgram*& kept = sortPrograms_[int(source)][colorPlane ? 1 : 0];
+  if (kept) return *kept;
   gpu::ShaderDefines defines = layout_.defines();
   if (method_ == FillMethod::LinkedList) defines = with(defines, "TLAB_LINKED_LIST", "1");
   if (source != SortSource::Block) defines = with(defines, "TLAB_SLOTS", "1");
   if (source == SortSource::ShortSlots) defines = with(defines, "TLAB_REGISTER_SORT", "8");
   if (colorPlane) defines = with(defines, "TLAB_COLOR_PLANE", "1");
-  return shaders_.compute("buffer/sort.comp", defines);
+  kept = &shaders_.compute("buffer/sort.comp", defines);
+  return *kept;
 }
 
 void FragmentBuffer::ensureSorted() {
@@ -259,10 +262,7 @@ void FragmentBuffer::sortLists() {
   // Lists in at most 8 slots all fit the sort's 8-register network (buffer/sort.comp).
   const bool shortLists = slotsUsed_ > 0 && slotsUsed_ <= 8;
   const SortSource source = shortLists ? SortSource::ShortSlots : slotsUsed_ > 0 ? SortSource::Slots : SortSource::Block;
-  const gpu::ShaderProgram& program = plane ? sortProgram(source, true)
-                                      : source == SortSource::ShortSlots ? *sortShortSlotsProgram_
-                                      : source == SortSource::Slots      ? *sortSlotsProgram_
-                                                                         : *sortProgram_;
+  const gpu::ShaderProgram& program = sortProgram(source, plane);
   program.use();
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   // The register sort's key holds triangle * 16 + position in one word (buffer/sort.comp).
@@ -285,6 +285,7 @@ void FragmentBuffer::bindSorted() const {
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
   fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
+  if (colorPlaneWritten_) colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
 }
 
 bool FragmentBuffer::bindUnsorted() const {

@@ -67,8 +67,9 @@ class FragmentBuffer final : public Fill {
   // in the order buffer (off): the same sorted buffer either way (tests compare the two).
   void setRegisterSort(bool on) { registerSort_ = on; }
 
-  // Binds pixelCount, pixelHead and the sorted fragment records for operator/compose passes,
-  // sorting them first when this frame's build left them unsorted.
+  // Binds pixelCount, pixelHead and the sorted fragment records (and the colour plane, where this
+  // frame's sort wrote one) for operator/compose passes, sorting them first when this frame's
+  // build left them unsorted.
   void bindSorted();
   void bindSorted() const;  // the same where the lists are sorted; throws where they are not
   // Binds pixelCount, the unsorted records (binding FRAGS_UNSORTED) and the order buffer (ORDER)
@@ -153,9 +154,7 @@ class FragmentBuffer final : public Fill {
   gpu::ShaderCache& shaders_;
   const gpu::ShaderProgram* countProgram_ = nullptr;
   const gpu::ShaderProgram* prefix_[3] = {nullptr, nullptr, nullptr};
-  const gpu::ShaderProgram* sortProgram_ = nullptr;
-  const gpu::ShaderProgram* sortSlotsProgram_ = nullptr;
-  const gpu::ShaderProgram* sortShortSlotsProgram_ = nullptr;  // lists of at most 8 (8 registers)
+  mutable const gpu::ShaderProgram* sortPrograms_[3][2] = {};  // by SortSource, without/with the colour plane
   bool registerSort_ = true;
   std::size_t triangles_ = 0;  // of the last build's scene: the register sort's keys hold triangle * 16
 };

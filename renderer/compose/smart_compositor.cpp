@@ -16,12 +16,10 @@ void composeSmart(FrameContext& frame, const TransparencyFields& fields, const S
   if (!settings.adaptiveAlpha) defines.emplace_back("TLAB_UNIFORM_ALPHA", "1");
   defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
   // The colours from the sort's colour plane where it wrote one (SmartStyle::fill asks for it).
-  const gpu::Buffer* colorPlane = buffer.colorPlane();
-  if (colorPlane) defines.emplace_back("TLAB_COLOR_PLANE", "1");
+  if (buffer.colorPlane()) defines.emplace_back("TLAB_COLOR_PLANE", "1");
   const auto& program = frame.shaders.compute("compose/smart_compose.comp", defines);
   const gpu::Buffer& output = buffer.composeOutput();
   buffer.bindSorted();
-  if (colorPlane) colorPlane->bindBase(GL_SHADER_STORAGE_BUFFER, 29);  // BIND_COLOR_PLANE
   fields.bindCurrent();
   // A pixel without fragments composes to c + T·c_background with c = 0, T = 1: the background,
   // exactly. The buffer is cleared to it, and the shader runs for the pixels with fragments only.

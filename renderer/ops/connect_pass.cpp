@@ -118,9 +118,6 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   if (fields.hasBeta()) fields.swap(Field::Beta);
   if (fields.hasGamma()) fields.swap(Field::Gamma);
   fields.setSeedsListed(listSeeds);
-  // A field no fragment starts above 0 stays 0 under Eq. 9: its seed list says so.
-  fields.setAllZero(Field::Beta, listSeeds && fields.hasBeta() && TransparencyFields::listCount(fields.frontier(Field::Beta)) == 0);
-  fields.setAllZero(Field::Gamma, listSeeds && fields.hasGamma() && TransparencyFields::listCount(fields.frontier(Field::Gamma)) == 0);
   gpu::checkGl("ops/connect.comp");
   return listed;
 }

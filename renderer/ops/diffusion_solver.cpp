@@ -165,7 +165,7 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);  // the connect pass wrote the seed list's header
   // Without seeds the first step changes nothing, and the full steps stop after it: so do these,
   // without copying the field (the 16-layer stack has 4 M fragments and no seed).
-  if (TransparencyFields::listCount(*previous) == 0) return 1;
+  if (fields.allZero(field)) return 1;
   // Both copies start as the current values (see ops/spread_frontier.comp for why a copy two
   // steps old is enough for the step that raises it).
   const std::size_t n = fields.fragments();

@@ -50,6 +50,12 @@ void TransparencyFields::clearList(const gpu::Buffer& list) {
   glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
 }
 
+void TransparencyFields::setSeedsListed(bool listed) {
+  seedsListed_ = listed;
+  allZero_[int(Field::Beta)] = listed && hasBeta() && listCount(frontier(Field::Beta)) == 0;
+  allZero_[int(Field::Gamma)] = listed && hasGamma() && listCount(frontier(Field::Gamma)) == 0;
+}
+
 std::uint32_t TransparencyFields::listCount(const gpu::Buffer& list) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::uint32_t count = 0;

@@ -50,16 +50,15 @@ class TransparencyFields {
   static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
   static std::uint32_t listCount(const gpu::Buffer& list);
   // Whether the seed lists describe the current β and γ (set by the connect pass): true once,
-  // for the solve that spreads from them.
-  void setSeedsListed(bool listed) { seedsListed_ = listed; }
+  // for the solve that spreads from them. Listing also settles allZero (below).
+  void setSeedsListed(bool listed);
   bool takeSeedsListed() { return std::exchange(seedsListed_, false); }
   bool seedsListed() const { return seedsListed_; }
   std::vector<std::uint32_t> readList(Field field);  // the fragments of frontier(field), as listed
-  // Whether β (or γ) is 0 at every fragment for the rest of the frame: the connect pass listed no
-  // seed for it (no fragment starts above 0), and Eq. 9's max-propagation keeps a field of zeros
-  // so. The compose then reads nothing of it (issue #29: a stack without silhouettes). Set by the
-  // connect pass; false after resize.
-  void setAllZero(Field field, bool zero) { allZero_[int(field)] = zero; }
+  // Whether β (or γ) is 0 at every fragment for the rest of the frame: its seeds were listed and
+  // there are none (no fragment starts above 0), and Eq. 9's max-propagation keeps a field of
+  // zeros so. The solve then spreads nothing and the compose reads nothing of it (issue #29: a
+  // stack without silhouettes). False unless the seeds are listed, and after resize.
   bool allZero(Field field) const { return allZero_[int(field)]; }
 
   // Read-backs for tests, inspection and the diffusion benchmark.
