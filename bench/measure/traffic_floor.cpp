@@ -96,6 +96,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
     s.composeFields = (smart.adaptiveAlpha ? 1 : 0) + varies(smart.silhouettes, render::Field::Beta) +
                       varies(smart.halos, render::Field::Gamma);
     const auto has = [&](render::FragmentProperty p) { return layout.properties.has(p) ? 1u : 0u; };
+    s.linkPairBits = fields && fields->linksFromPairBits();
     s.connectWords = 1 + has(render::FragmentProperty::Normal) + 2 * has(render::FragmentProperty::DepthGradient) +
                      has(render::FragmentProperty::Ids);
   }
@@ -132,12 +133,15 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       // needs of each record once (depth, ∇z, normal, ids), and writes each link once (each pair
       // of adjacent pixels settled once); phase 2 reads count and head again and each fragment's
       // own links, and writes the fields and the flags. Phase 3's full search of the few listed
-      // pairs depends on the scene and is not counted.
-      t.bytesRead = px * (16 + 8) + fr * (4.0 * s.connectWords + 16);
-      t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4);
-      t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) +
-                " word(s) of each record read once; links written once and read once; " + std::to_string(s.fieldsPerFragment) +
-                " field(s) and the flags written";
+      // pairs depends on the scene and is not counted. With the links kept as pair bits, phase 1
+      // writes 16 bytes a pixel instead, which phase 2 reads before it writes each fragment's links.
+      const double links = s.linkPairBits ? px * 16 : fr * 16;
+      t.bytesRead = px * (16 + 8) + fr * 4.0 * s.connectWords + links;
+      t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4) + (s.linkPairBits ? px * 16 : 0);
+      t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) + " word(s) of each record read once; " +
+                (s.linkPairBits ? "links as bits of each pixel's pairs (16 bytes a pixel, written and read once), then written once"
+                                : "links written once and read once") +
+                "; " + std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and
       // value are read and its value written (its neighbours' values are other fragments' own,

@@ -167,9 +167,11 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
       counters_.download(counters, sizeof(counters));
       const std::uint32_t overflowMax = counters[2];  // the largest list beyond the slots (0: none)
       if (overflowMax == 0) {
+        longestListBound_ = slotsUsed_;
         if (!sortInCompose_) ensureHeads();  // the sort pass writes each list at its head
         return;
       }
+      longestListBound_ = overflowMax;  // the longest list, past the slots
       slotsWanted_ = overflowMax;  // some list outgrew the slots: scatter this frame, more slots next
       slotsUsed_ = 0;
     }
@@ -209,6 +211,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   rerenders_ = 0;
   poolGrowths_ = 0;
   slotsUsed_ = 0;
+  longestListBound_ = 0;
   sorted_ = false;
   listStepsWritten_ = false;
   colorPlaneWritten_ = false;

@@ -100,6 +100,9 @@ class FragmentBuffer final : public Fill {
   int poolGrowths() const { return poolGrowths_; }  // times the pool was enlarged
   // Slots per pixel the last build stored its records in (0: it ran the scatter pass).
   std::uint32_t slotsUsed() const { return slotsUsed_; }
+  // No list of the last build is longer than this (its slots, or the longest list the slot fill
+  // saw overflow them); 0 where the build did not learn it (count pass alone, linked lists).
+  std::uint32_t longestListBound() const { return longestListBound_; }
 
   // Read-backs, in GL pixel order (row 0 = bottom): per-pixel counts and heads (the exclusive
   // prefix sum of the counts, summed here when the fill skipped it), sorted records.
@@ -136,6 +139,7 @@ class FragmentBuffer final : public Fill {
   int poolGrowths_ = 0;
   std::uint32_t slotsWanted_ = 8;  // the largest list seen so far (slots to try next frame)
   std::uint32_t slotsUsed_ = 0;
+  std::uint32_t longestListBound_ = 0;  // see longestListBound()
   bool sortInCompose_ = false;
   bool sorted_ = false;  // this frame's lists are in fragsSorted_
 

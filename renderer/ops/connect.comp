@@ -14,6 +14,11 @@
 //     work list, its links written unfiltered;
 //  TLAB_PHASE 3: for the listed pairs only, the full bounded search (findNeighbor) of the
 //     UNRESOLVED links both ways, then the mutual test over both lists;
+//  TLAB_LINK_MASKS (every list at most 32 layers long): phase 1 writes no link word for the pairs
+//     it settles, only one bit per layer and pair in the pixel's pair word (a link settled by the
+//     fast path joins the same layer of both lists); phase 2 writes each fragment's four links
+//     from those bits at once. (On llvmpipe every single-word store is a loop over the lanes: the
+//     link words took about a fifth of phase 1 on the 16-layer stack, issue #29.)
 //  TLAB_PHASE 2: from each fragment's own (mutual) links, the initial α, constant s (Eq. 4) or
 //     adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the boundary conditions of Sec. 5.3 on β and γ with
 //     their b flags; with TLAB_LIST_SEEDS, the fragments where β and γ start above 0 (Eq. 9's
@@ -48,6 +53,18 @@ layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 // The pairs whose links need the full search: a count, then 2 × pixel A + axis (0: B to the
 // right of A, 1: B above).
 layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPairs[]; };
+#endif
+#ifdef TLAB_LINK_MASKS
+// Per pixel that holds a fragment, its pairs with the pixel to its right (.x) and the one above
+// (.y): bit L set where layer L of both lists link to each other; .z bit i set where pair i was
+// listed for phase 3 (its links then are the words of the links buffer, both ways).
+#if TLAB_PHASE == 2
+// Read by phase 2 as one RGBA32UI texel a pixel (a fetch for all lanes).
+uniform usamplerBuffer uPairTexels;
+uvec4 pairsOf(uint p) { return texelFetch(uPairTexels, int(p)); }
+#else
+layout(std430, binding = BIND_CONNECT_PAIRS) writeonly buffer Pairs { uvec4 pairWords[]; };
+#endif
 #endif
 #if TLAB_PHASE != 2
 // Per pixel, maxStep along x and y: max |d·∇z| over its list, written by the sort pass as it
@@ -371,7 +388,13 @@ void main() {
     bCur[i] = bNext[i];
   }
   bool listed[2] = bool[2](false, false);
+#ifdef TLAB_LINK_MASKS
+  // Bit L: layer L of A links to layer L of B (sameA), and the other way (sameB). A pair with no
+  // UNRESOLVED answer links both ways or not at all, so sameA is its pair word.
+  uint sameA[2] = uint[2](0u, 0u), sameB[2] = uint[2](0u, 0u);
+#else
   bool leftEmpty = countAt(xy - kPairDirections[0]) == 0u, belowEmpty = countAt(xy - kPairDirections[1]) == 0u;
+#endif
   for (uint L = 0u; L < layers; ++L) {
     aPrev = aCur;
     aCur = aNext;
@@ -388,14 +411,32 @@ void main() {
         fb = fastNeighbor(bCur[i], L, bPrev[i], bNext[i], b[i].count, head, n, aCur, aPrev.z, aNext.z,
                           -kPairDirections[i], b[i].step[i]);
       listed[i] = listed[i] || fa == UNRESOLVED || fb == UNRESOLVED;
+#ifdef TLAB_LINK_MASKS
+      if (L < n && settledLink(head + L, fa, fb) == b[i].head + L) sameA[i] |= 1u << L;
+      if (L < b[i].count && settledLink(b[i].head + L, fb, fa) == head + L) sameB[i] |= 1u << L;
+#else
       if (L < n) links[head + L][2 * i + 1] = settledLink(head + L, fa, fb);
       if (L < b[i].count) links[b[i].head + L][2 * i] = settledLink(b[i].head + L, fb, fa);
+#endif
     }
+#ifndef TLAB_LINK_MASKS
     // No pair writes these beyond the left and bottom edges, nor where the pixel there is empty
     // (no invocation for it).
     if (L < n && leftEmpty) links[head + L][0] = NO_NEIGHBOR;
     if (L < n && belowEmpty) links[head + L][2] = NO_NEIGHBOR;
+#endif
   }
+#ifdef TLAB_LINK_MASKS
+  // A listed pair's links are words for phase 3, both ways: the same layer where the fast path
+  // chose it, UNRESOLVED for the rest. (The fast path's other answers are findNeighbor's too, so
+  // phase 3's search gives them again: the same links as keeping them.)
+  for (int i = 0; i < 2; ++i)
+    for (uint L = 0u; listed[i] && L < layers; ++L) {
+      if (L < n) links[head + L][2 * i + 1] = (sameA[i] & (1u << L)) != 0u ? b[i].head + L : UNRESOLVED;
+      if (L < b[i].count) links[b[i].head + L][2 * i] = (sameB[i] & (1u << L)) != 0u ? head + L : UNRESOLVED;
+    }
+  pairWords[pixel] = uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
+#endif
   for (int i = 0; i < 2; ++i)
     if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);
 #elif TLAB_PHASE == 3
@@ -429,13 +470,36 @@ void main() {
     if (inside(q)) qHead[k] = headOf(indexAt(q));
     else ++outside;
   }
+#ifdef TLAB_LINK_MASKS
+  // The pair words of this pixel (its links right and up) and of the pixels to its left and
+  // below (their pairs with this one); none where such a pixel holds no list (or is beyond the
+  // edge), whose word no invocation wrote this frame.
+  uvec4 ownPairs = pairsOf(pixel);
+  ivec2 leftQ = xy + kDirections[0], belowQ = xy + kDirections[2];
+  bool leftHasList = countAt(leftQ) > 0u, belowHasList = countAt(belowQ) > 0u;
+  uvec4 leftPairs = pairsOf(indexAt(leftQ)), belowPairs = pairsOf(indexAt(belowQ));
+  // Whether any of the four pairs was listed: only then does a link come from the words.
+  bool anyListed = (ownPairs.z | (leftHasList ? leftPairs.z & 1u : 0u) | (belowHasList ? belowPairs.z & 2u : 0u)) != 0u;
+#endif
   // Seeds are listed 32 layers at a time: one atomic per list and chunk with a seed
   // (FRONTIER_RESERVE says why).
   for (uint chunk = 0u; chunk < n; chunk += 32u) {
   uint betaMask = 0u, gammaMask = 0u;  // the chunk's layers where β, γ start above 0
   for (uint layer = chunk; layer < min(n, chunk + 32u); ++layer) {
     uint f = head + layer;
+#ifdef TLAB_LINK_MASKS
+    // Each link from its pair's bit, or the word phase 1 (and 3) wrote where the pair was listed.
+    uvec4 link = uvec4(NO_NEIGHBOR);
+    if (anyListed) link = links[f];
+    uint bit = 1u << layer;
+    link[1] = (ownPairs.z & 1u) != 0u ? link[1] : (ownPairs.x & bit) != 0u ? qHead[1] + layer : NO_NEIGHBOR;
+    link[3] = (ownPairs.z & 2u) != 0u ? link[3] : (ownPairs.y & bit) != 0u ? qHead[3] + layer : NO_NEIGHBOR;
+    link[0] = !leftHasList ? NO_NEIGHBOR : (leftPairs.z & 1u) != 0u ? link[0] : (leftPairs.x & bit) != 0u ? qHead[0] + layer : NO_NEIGHBOR;
+    link[2] = !belowHasList ? NO_NEIGHBOR : (belowPairs.z & 2u) != 0u ? link[2] : (belowPairs.y & bit) != 0u ? qHead[2] + layer : NO_NEIGHBOR;
+    links[f] = link;
+#else
     const uvec4 link = linksOf(f);
+#endif
     uint found = 0u;
     bool nextToSilhouette = false, underSilhouette = false;
     for (int k = 0; k < 4; ++k) {

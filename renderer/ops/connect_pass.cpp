@@ -18,6 +18,7 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                              float objectRadius, TransparencyFields& fields, NeighborSearch search) {
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
+  constexpr GLuint kConnectPairs = 25;  // BIND_CONNECT_PAIRS
   constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
   constexpr GLuint kSortedWordsUnit = 0;
@@ -26,6 +27,24 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = gpu::joined(layout.defines(), fields.defines());
   if (search == NeighborSearch::AllPairs) defines.emplace_back("TLAB_ALL_PAIRS", "1");
+  GLint maxTexels = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  // The fast path's links as bits of each pixel's pairs, where a pair's 32 bits hold every layer
+  // (phase 2 reads them as one RGBA32UI texel a pixel, on unit 6).
+  constexpr GLuint kPairTexelsUnit = 6;
+  constexpr std::uint32_t kShortestForBits = 9, kLongestForBits = 32;
+  const std::uint32_t longest = buffer.longestListBound();
+  const bool linkMasks = (search == NeighborSearch::BoundedBits ||
+                          (search == NeighborSearch::Bounded && longest >= kShortestForBits)) &&
+                         longest > 0 && longest <= kLongestForBits && double(buffer.pixels()) <= double(maxTexels);
+  gpu::Texture pairTexels;
+  if (linkMasks) {
+    defines.emplace_back("TLAB_LINK_MASKS", "1");
+    const gpu::Buffer& pairs = fields.connectPairs(buffer.pixels());
+    pairs.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectPairs);
+    pairTexels = gpu::bindBufferTexture(pairs.id(), GL_RGBA32UI, buffer.pixels() * 16, kPairTexelsUnit);
+  }
+  const bool bounded = search != NeighborSearch::AllPairs;
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;
   glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
@@ -38,12 +57,11 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   fields.bindCurrent();
   // Where the GL can show the sorted records (as bindSorted bound them) as a buffer texture of
   // that many words, the pass reads them so (TLAB_SORTED_TEXELS); else as a storage buffer.
-  GLint maxTexels = 0, sortedId = 0;
-  glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+  GLint sortedId = 0;
   glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, kFragsSorted, &sortedId);
   gpu::Texture sortedWords, sortedQuads;
   constexpr GLuint kSortedQuadsUnit = 2;
-  if (search == NeighborSearch::Bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
+  if (bounded && sortedId != 0 && buffer.fragmentCount() > 0 &&
       double(buffer.fragmentCount()) * layout.stride <= double(maxTexels)) {
     const std::size_t bytes = buffer.fragmentCount() * layout.stride * 4;
     sortedWords = gpu::bindBufferTexture(GLuint(sortedId), GL_R32UI, bytes, kSortedWordsUnit);
@@ -67,7 +85,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // (TLAB_PIXEL_TEXELS), where the GL allows that many texels.
   constexpr GLuint kPixelCountsUnit = 3, kPixelHeadsUnit = 4, kListStepsUnit = 5;
   gpu::Texture pixelCounts, pixelHeads, stepTexels;
-  const bool pixelTexels = search == NeighborSearch::Bounded && double(buffer.pixels()) <= double(maxTexels);
+  const bool pixelTexels = bounded && double(buffer.pixels()) <= double(maxTexels);
   if (pixelTexels) {
     pixelCounts = gpu::bindBufferTexture(buffer.pixelCountBuffer().id(), GL_R32UI, buffer.pixels() * 4, kPixelCountsUnit);
     pixelHeads = gpu::bindBufferTexture(buffer.pixelHeadBuffer().id(), GL_R32UI, buffer.pixels() * 4, kPixelHeadsUnit);
@@ -76,7 +94,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // Phase 2 reads the links as a buffer texture of one RGBA32UI texel per fragment (TLAB_LINK_TEXELS).
   constexpr GLuint kLinkTexelsUnit = 1;
   gpu::Texture linkTexels;
-  if (search == NeighborSearch::Bounded && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
+  if (bounded && !linkMasks && buffer.fragmentCount() > 0 && double(buffer.fragmentCount()) <= double(maxTexels)) {
     linkTexels = gpu::bindBufferTexture(fields.links().id(), GL_RGBA32UI, buffer.fragmentCount() * 16, kLinkTexelsUnit);
   }
   const auto run = [&](const char* phase, std::size_t items = 0) {
@@ -98,6 +116,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
     glUniform1i(program.uniform("uSortedQuads"), kSortedQuadsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
+    glUniform1i(program.uniform("uPairTexels"), kPairTexelsUnit);
     glUniform1i(program.uniform("uPixelCounts"), kPixelCountsUnit);
     glUniform1i(program.uniform("uPixelHeads"), kPixelHeadsUnit);
     glUniform1i(program.uniform("uListSteps"), kListStepsUnit);
@@ -118,6 +137,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   if (fields.hasBeta()) fields.swap(Field::Beta);
   if (fields.hasGamma()) fields.swap(Field::Gamma);
   fields.setSeedsListed(listSeeds);
+  fields.setLinksFromPairBits(linkMasks);
   gpu::checkGl("ops/connect.comp");
   return listed;
 }

@@ -13,7 +13,13 @@ namespace tlab::render {
 
 // How a fragment's neighbour is found in the adjacent list: by binary search from the predicted
 // depth with a bound on ε (the default), or by comparing all pairs (the reference for tests).
-enum class NeighborSearch { Bounded, AllPairs };
+// The bounded search keeps the links the fast path settles either as words, written as phase 1
+// goes, or as bits of each pixel's pairs, written out as links by phase 2 (ops/connect.comp
+// TLAB_LINK_MASKS; every list at most 32 layers long, FragmentBuffer::longestListBound). Bounded
+// picks the bits for lists longer than 8 (issue #29: on the 16-layer stack the pass took about a
+// tenth less time; on the torus, lists of at most 8, a twentieth more: the bits cost per pixel
+// what they save per layer); BoundedWords and BoundedBits choose (tests compare the two).
+enum class NeighborSearch { Bounded, BoundedWords, BoundedBits, AllPairs };
 
 // Runs the pass into `fields`, resized for the buffer's fragments (kept memory is reused).
 // Returns how many pairs of adjacent pixels needed the full neighbour search (the rest took the

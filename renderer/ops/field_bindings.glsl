@@ -11,6 +11,7 @@
 #define BIND_ALPHA_OLD 18
 #define BIND_CHANGED 19  // one word: bit 1 β changed, bit 2 γ changed (fused spreading)
 #define BIND_CONNECT_WORK 22  // the connect pass's work list: a count, then pairs of pixels (ops/connect.comp)
+#define BIND_CONNECT_PAIRS 25  // the connect pass's links of each pixel's pairs as bits (ops/connect.comp, TLAB_LINK_MASKS)
 // Sparse Eq. 9 spreading (ops/spread_frontier.comp): fragment lists, each a dispatch header
 // (groups, 1, 1, count) then fragment indices; the connect pass lists β's and γ's seeds.
 #define BIND_FRONTIER_IN 23

@@ -75,6 +75,11 @@ gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
   return connectWork_;
 }
 
+gpu::Buffer& TransparencyFields::connectPairs(std::size_t pixels) {
+  if (!connectPairs_ || connectPairs_.size() < pixels * 16) connectPairs_ = gpu::Buffer(pixels * 16);
+  return connectPairs_;
+}
+
 gpu::ShaderDefines TransparencyFields::defines() const {
   gpu::ShaderDefines d;
   if (withBeta_) d.emplace_back("TLAB_HAS_BETA", "1");

@@ -42,6 +42,10 @@ class TransparencyFields {
   gpu::Buffer& scratch() { return alphaOld_; }
   // The connect pass's work list (a count, then up to 2 × `pixels` pairs of adjacent pixels), kept likewise.
   gpu::Buffer& connectWork(std::size_t pixels);
+  gpu::Buffer& connectPairs(std::size_t pixels);  // the connect pass's pair bits, a uvec4 a pixel
+  // Whether the last connect pass kept its settled links as pair bits (written out by its phase 2).
+  void setLinksFromPairBits(bool on) { linksFromPairBits_ = on; }
+  bool linksFromPairBits() const { return linksFromPairBits_; }
 
   // Sparse Eq. 9 spreading (ops/spread_frontier.comp): fragment lists, each a dispatch header
   // (groups, 1, 1, count) then up to `fragments` indices. frontier(Beta) and frontier(Gamma) are
@@ -76,7 +80,8 @@ class TransparencyFields {
 
   std::size_t fragments_ = 0;
   bool withBeta_ = false, withGamma_ = false;
-  gpu::Buffer links_, flags_, alphaOld_, connectWork_;
+  gpu::Buffer links_, flags_, alphaOld_, connectWork_, connectPairs_;
+  bool linksFromPairBits_ = false;
   PingPong alpha_, beta_, gamma_;
   gpu::Buffer frontier_[3];  // by Field
   bool seedsListed_ = false;

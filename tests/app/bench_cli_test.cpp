@@ -223,6 +223,27 @@ TEST(BenchCli, FloorCountsTheFieldsSmartsComposeReads) {
   EXPECT_EQ(composeFields("--scenes builtin:sphere"), 1.0);
 }
 
+// The connect pass's links: written once and read back once per fragment where phase 1 writes
+// them as words; where it keeps them as bits of each pixel's pairs (lists longer than 8, the
+// 12-layer stack), 16 bytes a pixel written and read instead, and the links written once.
+TEST(BenchCli, FloorCountsTheConnectPassesLinksAsWordsOrAsPairBits) {
+  const double pixels = 48 * 40;
+  const auto stack = smartFloorRow("--scenes 'builtin:quad-stack?n=12'", "connect");
+  const auto spheres = smartFloorRow("--scenes 'builtin:nested-spheres?n=2'", "connect");
+  ASSERT_FALSE(stack.is_null() || spheres.is_null());
+  EXPECT_NE(stack["model"].get<std::string>().find("links as bits of each pixel's pairs"), std::string::npos) << stack;
+  EXPECT_NE(spheres["model"].get<std::string>().find("links written once and read once"), std::string::npos) << spheres;
+  const double stackFragments = stack["fragments"], sphereFragments = spheres["fragments"];
+  EXPECT_EQ(stackFragments, 12 * pixels);
+  // Each fragment's links (16), α, β, γ and the flags (16); the pair words where kept as bits.
+  EXPECT_EQ(stack["bytes_written"].get<double>(), stackFragments * 32 + pixels * 16);
+  EXPECT_EQ(spheres["bytes_written"].get<double>(), sphereFragments * 32);
+  // Count, head and maxStep per pixel (24), 5 words of each record (depth, ∇z, normal, ids), and
+  // the pair words (16 a pixel) or each fragment's links (16).
+  EXPECT_EQ(stack["bytes_read"].get<double>(), pixels * 24 + stackFragments * 20 + pixels * 16);
+  EXPECT_EQ(spheres["bytes_read"].get<double>(), pixels * 24 + sphereFragments * (20 + 16));
+}
+
 TEST(BenchCli, FloorRefusesASettingAStyleDoesNotHave) {
   const auto r = runCommand(kTlab + " bench floor --styles constant,smart --set lambda_beta=1 --gl osmesa");
   EXPECT_EQ(r.exitCode, 1);

@@ -196,7 +196,8 @@ TEST(NeighborLinks, PairSplitBetweenFastPathAndFullSearch) {
 // Phases 1 and 2 run for the pixels that hold a fragment only (issue #29): a pixel next to an
 // empty one writes its own link towards it. Into fields whose every word held garbage, the pass
 // writes every link, flag and field value as into fresh fields, and a link towards an empty pixel
-// (or beyond the edge) is none — on scenes with background inside and around them.
+// (or beyond the edge) is none — on scenes with background inside and around them, the links
+// kept as words and as pair bits alike.
 TEST(NeighborLinks, EveryLinkIsWrittenWhereTheAdjacentPixelIsEmpty) {
   for (const char* source : {"builtin:torus", "builtin:nested-spheres?n=3", "builtin:open-cylinders"}) {
     SCOPED_TRACE(source);
@@ -205,12 +206,16 @@ TEST(NeighborLinks, EveryLinkIsWrittenWhereTheAdjacentPixelIsEmpty) {
     const auto freshFlags = rig.fields->readFlags();
     const auto freshBeta = rig.fields->read(Field::Beta);
     const std::uint32_t garbage = 0x5A5A5A5Au;
-    for (const tlab::gpu::Buffer* b : {&rig.fields->links(), &rig.fields->flags()})
-      glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &garbage);
-    connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, *rig.fields);
-    EXPECT_EQ(rig.fields->readLinks(), fresh);
-    EXPECT_EQ(rig.fields->readFlags(), freshFlags);
-    EXPECT_EQ(rig.fields->read(Field::Beta), freshBeta);
+    for (NeighborSearch search : {NeighborSearch::Bounded, NeighborSearch::BoundedBits}) {  // words, then pair bits
+      for (const tlab::gpu::Buffer* b : {&rig.fields->links(), &rig.fields->flags(),
+                                         static_cast<const tlab::gpu::Buffer*>(&rig.fields->connectPairs(rig.buffer->pixels()))})
+        glClearNamedBufferData(b->id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &garbage);
+      connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, *rig.fields, search);
+      EXPECT_EQ(rig.fields->linksFromPairBits(), search == NeighborSearch::BoundedBits);
+      EXPECT_EQ(rig.fields->readLinks(), fresh);
+      EXPECT_EQ(rig.fields->readFlags(), freshFlags);
+      EXPECT_EQ(rig.fields->read(Field::Beta), freshBeta);
+    }
     const glm::ivec2 kDirections[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
     std::size_t towardsEmpty = 0;
     for (int y = 0; y < rig.height; ++y)
@@ -224,6 +229,39 @@ TEST(NeighborLinks, EveryLinkIsWrittenWhereTheAdjacentPixelIsEmpty) {
             EXPECT_EQ(fresh[rig.fragment(x, y, int(layer))][k], 0xFFFFFFFFu) << x << "," << y << " layer " << layer << " direction " << k;
           }
     EXPECT_GT(towardsEmpty, 100u) << "fragments beside an empty pixel";
+  }
+}
+
+// Where every list is at most 32 layers long, phase 1 can keep the links it settles as one bit
+// per layer of each pixel's pairs, and phase 2 write the links from them (TLAB_LINK_MASKS; issue
+// #29): the same links, flags and fields as writing every link word in phase 1 — with pairs
+// listed for the full search beside them (the back quad's edge), background around the lists,
+// lists past the first frame's 8 slots (the stack), and past 32 layers, where the words are kept.
+// The default takes the bits for lists longer than 8 only.
+TEST(NeighborLinks, PairBitsGiveTheLinksOfWritingEveryWord) {
+  struct Case {
+    Scene scene;
+    int w, h;
+    bool bits, byDefault;  // every list within 32 layers; and longer than 8 somewhere
+  };
+  for (const auto& [scene, w, h, bits, byDefault] :
+       {Case{backHalfScene(), 40, 31, true, false}, Case{loadScene("builtin:torus"), 63, 47, true, false},
+        Case{loadScene("builtin:nested-spheres?n=3"), 45, 37, true, false},
+        Case{loadScene("builtin:open-cylinders"), 48, 40, true, false}, Case{loadScene("builtin:quad-stack?n=16"), 24, 20, true, true},
+        Case{loadScene("builtin:quad-stack?n=40"), 12, 10, false, false}}) {
+    SCOPED_TRACE(scene.name);
+    SmartRig rig(scene, w, h, {{"alpha_init", "adaptive"}});
+    EXPECT_EQ(rig.fields->linksFromPairBits(), byDefault);
+    const float radius = rig.scene.boundingSphere().radius;
+    const auto words = connectFragments(*rig.buffer, rig.shaders, rig.smart, radius, NeighborSearch::BoundedWords);
+    EXPECT_FALSE(words->linksFromPairBits());
+    const auto pairBits = connectFragments(*rig.buffer, rig.shaders, rig.smart, radius, NeighborSearch::BoundedBits);
+    EXPECT_EQ(pairBits->linksFromPairBits(), bits);
+    for (const TransparencyFields* fields : {rig.fields.get(), pairBits.get()}) {
+      EXPECT_EQ(fields->readLinks(), words->readLinks());
+      EXPECT_EQ(fields->readFlags(), words->readFlags());
+      for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) EXPECT_EQ(fields->read(f), words->read(f));
+    }
   }
 }
 
