@@ -8,6 +8,11 @@ namespace {
 // Binding points of ops/field_bindings.glsl.
 constexpr GLuint kLinks = 10, kAlphaIn = 11, kAlphaOut = 12, kBetaIn = 13, kBetaOut = 14, kGammaIn = 15,
                  kGammaOut = 16, kFlags = 17, kAlphaOld = 18;
+
+// Keeps `b` where it holds `bytes` already, else allocates it anew (contents undefined).
+void fit(gpu::Buffer& b, std::size_t bytes) {
+  if (!b || b.size() < bytes) b = gpu::Buffer(bytes);
+}
 }  // namespace
 
 TransparencyFields::TransparencyFields(std::size_t fragments, bool withBeta, bool withGamma) {
@@ -18,9 +23,6 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
   fragments_ = fragments;
   withBeta_ = withBeta;
   withGamma_ = withGamma;
-  const auto fit = [](gpu::Buffer& b, std::size_t bytes) {
-    if (!b || b.size() < bytes) b = gpu::Buffer(bytes);
-  };
   const std::size_t floats = fragments * sizeof(float);
   fit(links_, fragments * sizeof(glm::uvec4));
   fit(flags_, fragments * 4);
@@ -71,12 +73,12 @@ std::vector<std::uint32_t> TransparencyFields::readList(Field field) {
 }
 
 gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
-  if (!connectWork_ || connectWork_.size() < (2 * pixels + 1) * 4) connectWork_ = gpu::Buffer((2 * pixels + 1) * 4);
+  fit(connectWork_, (2 * pixels + 1) * 4);
   return connectWork_;
 }
 
 gpu::Buffer& TransparencyFields::connectPairs(std::size_t pixels) {
-  if (!connectPairs_ || connectPairs_.size() < pixels * 16) connectPairs_ = gpu::Buffer(pixels * 16);
+  fit(connectPairs_, pixels * 16);
   return connectPairs_;
 }
 
