@@ -87,7 +87,6 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   s.composeWords = layout.words;
   if (style == "smart") {
     const auto smart = render::SmartSettings::from(params);
-    s.fieldsPerFragment = 1 + (smart.silhouettes ? 1 : 0) + (smart.halos ? 1 : 0);
     s.solve = solveShape(smart, fields);
     s.composeWords = 1;
     // α only where it varies (Eq. 5; Eq. 4's s is a uniform), β and γ only where the connect pass
@@ -95,6 +94,9 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
     const auto varies = [&](bool has, render::Field f) { return has && !(fields && fields->allZero(f)) ? 1 : 0; };
     s.composeFields = (smart.adaptiveAlpha ? 1 : 0) + varies(smart.silhouettes, render::Field::Beta) +
                       varies(smart.halos, render::Field::Gamma);
+    // The connect pass stores the same fields for each fragment (a listed field with seeds is
+    // cleared, then set at its seeds: counted as one store each), the others are one number.
+    s.fieldsPerFragment = s.composeFields;
     const auto has = [&](render::FragmentProperty p) { return layout.properties.has(p) ? 1u : 0u; };
     s.linkPairBits = fields && fields->linksFromPairBits();
     s.connectWords = 1 + has(render::FragmentProperty::Normal) + 2 * has(render::FragmentProperty::DepthGradient) +
@@ -141,7 +143,7 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) + " word(s) of each record read once; " +
                 (s.linkPairBits ? "links as bits of each pixel's pairs (16 bytes a pixel, written and read once), then written once"
                                 : "links written once and read once") +
-                "; " + std::to_string(s.fieldsPerFragment) + " field(s) and the flags written";
+                "; " + std::to_string(s.fieldsPerFragment) + " field(s) stored for each fragment and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and
       // value are read and its value written (its neighbours' values are other fragments' own,

@@ -47,7 +47,7 @@ struct FrameShape {
   std::uint32_t connectWords = 0;  // smart: the words of each record the connect pass reads (depth, ∇z, normal, ids)
   bool listSteps = false;          // records with a depth gradient: the sort also writes each list's maxStep
   bool colorPlane = false;         // the sort also writes each colour word into a plane (render::FillSpec::colorPlane)
-  int fieldsPerFragment = 1;       // smart: α plus β (silhouettes) plus γ (halos)
+  int fieldsPerFragment = 1;       // smart: the fields the connect pass stores (those that vary)
   bool linkPairBits = false;       // smart: the connect pass kept its settled links as bits of each pixel's pairs
   SolveShape solve;                // smart
 };

@@ -24,7 +24,7 @@ uint colorWord(uint f) { return sorted[fragWord(f, TLAB_OFF_COLOR)]; }
 #endif
 layout(std430, binding = BIND_OUTPUT) writeonly buffer Output { vec4 outColor[]; };
 #ifdef TLAB_UNIFORM_ALPHA
-uniform float uS;  // Eq. 4: every fragment's α is s (the connect pass wrote s, no solve changes it)
+uniform float uS;  // one α everywhere (Eq. 4: s), which the connect pass did not store for each fragment
 #else
 layout(std430, binding = BIND_ALPHA_IN) readonly buffer Alpha { float alpha[]; };
 #endif

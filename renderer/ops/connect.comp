@@ -22,7 +22,10 @@
 //  TLAB_PHASE 2: from each fragment's own (mutual) links, the initial α, constant s (Eq. 4) or
 //     adaptive 1 − (1 − s)^(1/n) (Eq. 5), and the boundary conditions of Sec. 5.3 on β and γ with
 //     their b flags; with TLAB_LIST_SEEDS, the fragments where β and γ start above 0 (Eq. 9's
-//     seeds) in lists for the solve's frontier.
+//     seeds) in lists for the solve's frontier. It stores only the values no other pass knows
+//     already: α only where it varies (TLAB_ADAPTIVE_ALPHA, Eq. 5; Eq. 4's s is one number),
+//     β and γ only without the seed lists (with them, a field is 1 at its seeds and 0 elsewhere,
+//     which the host writes where there is a seed at all: ops/set_listed.comp).
 // Over 300 lines: the phases share ε, the searches and the fast path, so they stay one shader;
 // main, over 60 lines, holds one branch per phase (TLAB_PHASE), each of them shorter.
 #include "frame/fragment_layout.glsl"
@@ -102,7 +105,6 @@ uniform float uWz;
 uniform float uGapScale;     // wz / r_obj, for beyond
 uniform float uWn;
 uniform float uS;
-uniform int uAdaptiveAlpha;   // 0: Eq. 4, 1: Eq. 5
 
 float depthOf(uint f) { return uintBitsToFloat(sortedWord(fragWord(f, OFF_DEPTH))); }
 
@@ -462,7 +464,9 @@ void main() {
   }
 #else
   if (n == 0u) return;
-  float alphaInit = uAdaptiveAlpha == 1 ? 1.0 - pow(1.0 - uS, 1.0 / float(n)) : uS;  // Eq. 5 / Eq. 4
+#ifdef TLAB_ADAPTIVE_ALPHA
+  float alphaInit = 1.0 - pow(1.0 - uS, 1.0 / float(n));  // Eq. 5 (Eq. 4's s is not stored)
+#endif
   uvec4 qHead = uvec4(0u);  // heads of the adjacent lists, to turn a link into a layer
   uint outside = 0u;        // adjacent pixels beyond the image edge
   for (int k = 0; k < 4; ++k) {
@@ -518,13 +522,19 @@ void main() {
     if (found + outside < 4u) { b = 1.0; free &= ~FREE_BETA; }  // boundary or silhouette (red)
     if (nextToSilhouette) { g = 1.0; free &= ~FREE_GAMMA; }  // beside an occluding edge (blue)
     if (underSilhouette) { b = 0.0; free &= ~FREE_BETA; }    // right under a silhouette (green)
+#ifdef TLAB_ADAPTIVE_ALPHA
     alpha[f] = alphaInit;
-#ifdef TLAB_HAS_BETA
+#endif
+#if defined(TLAB_HAS_BETA) && !defined(TLAB_LIST_SEEDS)
     beta[f] = b;
+#endif
+#ifdef TLAB_HAS_BETA
     if (b > 0.0) betaMask |= 1u << (layer - chunk);
 #endif
 #ifdef TLAB_HAS_GAMMA
+#ifndef TLAB_LIST_SEEDS
     gamma[f] = g;
+#endif
     if (g > 0.0) gammaMask |= 1u << (layer - chunk);
 #endif
     flags[f] = free;

@@ -7,6 +7,22 @@
 
 namespace tlab::render {
 
+namespace {
+// A listed field's initial values: 0, then 1 at each of its seeds (ops/set_listed.comp).
+void writeSeeds(gpu::ShaderCache& shaders, TransparencyFields& fields, Field field) {
+  constexpr GLuint kValue = 14, kList = 23;  // BIND_BETA_OUT, BIND_FRONTIER_IN of ops/field_bindings.glsl
+  fields.setUniform(field, 0.0f);
+  const gpu::Buffer& values = fields.current(field);  // cleared to 0
+  values.bindBase(GL_SHADER_STORAGE_BUFFER, kValue);
+  const gpu::Buffer& seeds = fields.frontier(field);
+  seeds.bindBase(GL_SHADER_STORAGE_BUFFER, kList);
+  const auto& program = shaders.compute("ops/set_listed.comp");
+  program.use();
+  glUniform1f(program.uniform("uValue"), 1.0f);
+  TransparencyFields::dispatchOnList(program, seeds);
+}
+}  // namespace
+
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
                                                      const SmartSettings& settings, float objectRadius,
                                                      NeighborSearch search) {
@@ -101,6 +117,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     gpu::ShaderDefines phaseDefines = defines;
     phaseDefines.emplace_back("TLAB_PHASE", phase);
     if (listSeeds && phase[0] == '2') phaseDefines.emplace_back("TLAB_LIST_SEEDS", "1");
+    if (settings.adaptiveAlpha && phase[0] == '2') phaseDefines.emplace_back("TLAB_ADAPTIVE_ALPHA", "1");
     if (linkTexels && phase[0] == '2') phaseDefines.emplace_back("TLAB_LINK_TEXELS", "1");
     if (pixelTexels && phase[0] != '3') phaseDefines.emplace_back("TLAB_PIXEL_TEXELS", "1");
     const auto& program = shaders.compute("ops/connect.comp", phaseDefines);
@@ -112,7 +129,6 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1f(program.uniform("uGapScale"), float(settings.wz / objectRadius));
     glUniform1f(program.uniform("uWn"), float(settings.wn));
     glUniform1f(program.uniform("uS"), float(settings.s));
-    glUniform1i(program.uniform("uAdaptiveAlpha"), settings.adaptiveAlpha ? 1 : 0);
     glUniform1i(program.uniform("uSortedWords"), kSortedWordsUnit);
     glUniform1i(program.uniform("uSortedQuads"), kSortedQuadsUnit);
     glUniform1i(program.uniform("uLinkTexels"), kLinkTexelsUnit);
@@ -132,11 +148,19 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   work.download(&listed, sizeof listed);
   if (listed > 0) run("3", listed);
   run("2");
-  // The pass wrote every field's output copy: make those current.
+  // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make
+  // those current. Eq. 4's α is s everywhere; a listed field is 1 at its seeds and 0 elsewhere.
   fields.swap(Field::Alpha);
   if (fields.hasBeta()) fields.swap(Field::Beta);
   if (fields.hasGamma()) fields.swap(Field::Gamma);
   fields.setSeedsListed(listSeeds);
+  if (!settings.adaptiveAlpha) fields.setUniform(Field::Alpha, float(settings.s));
+  if (listSeeds)
+    for (Field f : {Field::Beta, Field::Gamma})
+      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) {
+        if (fields.allZero(f)) fields.setUniform(f, 0.0f);
+        else writeSeeds(shaders, fields, f);
+      }
   fields.setLinksFromPairBits(linkMasks);
   gpu::checkGl("ops/connect.comp");
   return listed;

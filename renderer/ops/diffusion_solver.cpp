@@ -15,15 +15,6 @@ constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 constexpr GLuint kLinks = 10, kFlags = 17;           // BIND_LINKS, BIND_FLAGS
 constexpr GLuint kFrontierIn = 23, kFrontierOut = 24;
 
-// A frontier pass over the fragments of `list` (its header is the indirect dispatch).
-void runOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
-  program.use();
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.id());
-  glDispatchComputeIndirect(0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
-                  GL_TEXTURE_FETCH_BARRIER_BIT);
-}
-
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
   program.use();  // (callers may have set further uniforms on it already)
   glUniform1ui(program.uniform("uFragments"), static_cast<GLuint>(fragments));
@@ -207,7 +198,7 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
     stepProgram.use();
     if (texels) glUniform1i(stepProgram.uniform("uValues"), readCurrent ? 2 : 3);
-    runOnList(stepProgram, *previous);
+    TransparencyFields::dispatchOnList(stepProgram, *previous);
     raisedOutput = readCurrent;
     ++run;
     // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
@@ -222,7 +213,6 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     std::swap(previous, changed);
   }
   if (raisedOutput) fields.swap(field);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   gpu::checkGl("ops/spread_frontier.comp");
   return run;
 }

@@ -34,6 +34,7 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
     for (auto& b : gamma_.copies) fit(b, floats);
   seedsListed_ = false;
   for (bool& zero : allZero_) zero = false;
+  for (auto& value : unstored_) value.reset();
   if (!withBeta && !withGamma) return;
   const std::size_t list = (fragments + 4) * 4;
   fit(frontier_[int(Field::Alpha)], list);
@@ -56,6 +57,15 @@ void TransparencyFields::setSeedsListed(bool listed) {
   seedsListed_ = listed;
   allZero_[int(Field::Beta)] = listed && hasBeta() && listCount(frontier(Field::Beta)) == 0;
   allZero_[int(Field::Gamma)] = listed && hasGamma() && listCount(frontier(Field::Gamma)) == 0;
+}
+
+void TransparencyFields::dispatchOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list) {
+  program.use();
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, list.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT |
+                  GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
 std::uint32_t TransparencyFields::listCount(const gpu::Buffer& list) {
@@ -105,13 +115,32 @@ void TransparencyFields::bindCurrent() const {
   if (withGamma_) bindPair(Field::Gamma, kGammaIn, kGammaOut);
 }
 
+void TransparencyFields::setUniform(Field field, float value) { unstored_[int(field)] = value; }
+
+void TransparencyFields::storeUniform(Field field) const {
+  std::optional<float>& value = unstored_[int(field)];
+  if (!value) return;
+  const PingPong& p = pair(field);
+  glClearNamedBufferSubData(p.copies[p.current].id(), GL_R32F, 0, GLsizeiptr(fragments_ * sizeof(float)), GL_RED,
+                            GL_FLOAT, &*value);
+  value.reset();
+}
+
+void TransparencyFields::bindInput(Field field, unsigned binding) const {
+  current(field).bindBase(GL_SHADER_STORAGE_BUFFER, binding);
+}
+
 void TransparencyFields::bindPair(Field field, unsigned in, unsigned out) const {
+  storeUniform(field);
   const PingPong& p = pair(field);
   p.copies[p.current].bindBase(GL_SHADER_STORAGE_BUFFER, in);
   p.copies[1 - p.current].bindBase(GL_SHADER_STORAGE_BUFFER, out);
 }
 
-void TransparencyFields::swap(Field field) { pair(field).current ^= 1; }
+void TransparencyFields::swap(Field field) {
+  pair(field).current ^= 1;
+  unstored_[int(field)].reset();  // a pass wrote the output copy, now current
+}
 
 const gpu::Buffer& TransparencyFields::output(Field field) const {
   const PingPong& p = pair(field);
@@ -119,6 +148,7 @@ const gpu::Buffer& TransparencyFields::output(Field field) const {
 }
 
 const gpu::Buffer& TransparencyFields::current(Field field) const {
+  storeUniform(field);
   const PingPong& p = pair(field);
   return p.copies[p.current];
 }
@@ -126,6 +156,7 @@ const gpu::Buffer& TransparencyFields::current(Field field) const {
 std::vector<float> TransparencyFields::read(Field field) const {
   if ((field == Field::Beta && !withBeta_) || (field == Field::Gamma && !withGamma_))
     throw std::logic_error("that transparency field is switched off");
+  if (const auto value = uniformValue(field)) return std::vector<float>(fragments_, *value);
   std::vector<float> v(fragments_);
   current(field).download(v.data(), v.size() * sizeof(float));
   return v;

@@ -3,6 +3,7 @@
 // (Sec. 4.4), the fields α, β, γ with ping-pong copies (fragData/fragData2 of Sec. 4.5), and the
 // b flags. β exists only with silhouettes on, γ only with halos on.
 #include <cstdint>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -32,11 +33,22 @@ class TransparencyFields {
   void bindCurrent() const;
   // Binds `field`'s current copy as input and the other as output at the given binding points.
   void bindPair(Field field, unsigned inBinding, unsigned outBinding) const;
+  // Binds `field`'s current copy alone, for a pass that reads it (the compose).
+  void bindInput(Field field, unsigned binding) const;
   // After a pass wrote `field`'s output copy: that copy becomes current.
   void swap(Field field);
   // The output copy of `field` (the connect pass writes initial values there, then swaps).
   const gpu::Buffer& output(Field field) const;
   const gpu::Buffer& current(Field field) const;
+
+  // A field that holds one value at every fragment, which no buffer holds yet (issue #29: the
+  // connect pass does not store Eq. 4's α = s, nor β or γ without a seed, for every fragment).
+  // Whatever binds the field or asks for its current copy (bindCurrent, bindPair, bindInput,
+  // current) gets a buffer cleared to that value first; read() returns it without writing one. A
+  // pass that needs only the number asks uniformValue (the compose: α as a uniform). Reset by
+  // resize, as the fields of each frame start anew.
+  void setUniform(Field field, float value);
+  std::optional<float> uniformValue(Field field) const { return unstored_[int(field)]; }
   const gpu::Buffer& links() const { return links_; }
   const gpu::Buffer& flags() const { return flags_; }
   gpu::Buffer& scratch() { return alphaOld_; }
@@ -53,6 +65,9 @@ class TransparencyFields {
   gpu::Buffer& frontier(Field field);
   static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
   static std::uint32_t listCount(const gpu::Buffer& list);
+  // Runs `program` over the entries of `list` (its header is the indirect dispatch), then the
+  // barriers for what reads its results.
+  static void dispatchOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list);
   // Whether the seed lists describe the current β and γ (set by the connect pass): true once,
   // for the solve that spreads from them. Listing also settles allZero (below).
   void setSeedsListed(bool listed);
@@ -77,6 +92,7 @@ class TransparencyFields {
   };
   PingPong& pair(Field f);
   const PingPong& pair(Field f) const;
+  void storeUniform(Field f) const;  // clears the current copy to the unstored value, if any
 
   std::size_t fragments_ = 0;
   bool withBeta_ = false, withGamma_ = false;
@@ -86,6 +102,8 @@ class TransparencyFields {
   gpu::Buffer frontier_[3];  // by Field
   bool seedsListed_ = false;
   bool allZero_[3] = {false, false, false};  // by Field
+  // By Field: the value of a field no buffer holds yet (storeUniform writes it when a pass needs it).
+  mutable std::optional<float> unstored_[3];
 };
 
 }  // namespace tlab::render

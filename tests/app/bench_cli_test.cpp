@@ -130,13 +130,13 @@ TEST(BenchCli, FloorCountsEachPassBytesAndMeasuresTheBandwidth) {
   // Smart's records: 8 words (depth, triangle, colour, normal, ∇z, ids: 7 words padded to two
   // quads; the scene's quads are 4 components), which the fill and the sort move whole. Its connect
   // pass reads 5 of them (depth, ∇z, normal, ids), maxStep (2 floats a pixel, which smart's sort
-  // writes beside the sorted records) and links of 4 words, and writes the links, 3 fields (α, β,
-  // γ) and the flags; its compose reads the colour plane and only the fields that vary: none here
-  // (α is s everywhere by Eq. 4, and without a silhouette β and γ have no seed).
+  // writes beside the sorted records) and links of 4 words, and writes the links and the flags, and
+  // of the fields only those that vary, as its compose reads only those: none here (α is s
+  // everywhere by Eq. 4, and without a silhouette β and γ have no seed).
   ASSERT_FALSE(connect.is_null()) << j;
   const double smartRecord = 32;
   EXPECT_EQ(connect["bytes_read"].get<double>(), pixels * (8 + 8 + 8) + fragments * (5 * 4 + 16));
-  EXPECT_EQ(connect["bytes_written"].get<double>(), fragments * (16 + 3 * 4 + 4));
+  EXPECT_EQ(connect["bytes_written"].get<double>(), fragments * (16 + 4));
   ASSERT_FALSE(smartSort.is_null()) << j;
   EXPECT_EQ(smartSort["bytes_read"].get<double>(), fragments * smartRecord + pixels * 8);
   // (and the colour words again: the colour plane smart's compose reads)
@@ -235,9 +235,11 @@ TEST(BenchCli, FloorCountsTheConnectPassesLinksAsWordsOrAsPairBits) {
   EXPECT_NE(spheres["model"].get<std::string>().find("links written once and read once"), std::string::npos) << spheres;
   const double stackFragments = stack["fragments"], sphereFragments = spheres["fragments"];
   EXPECT_EQ(stackFragments, 12 * pixels);
-  // Each fragment's links (16), α, β, γ and the flags (16); the pair words where kept as bits.
-  EXPECT_EQ(stack["bytes_written"].get<double>(), stackFragments * 32 + pixels * 16);
-  EXPECT_EQ(spheres["bytes_written"].get<double>(), sphereFragments * 32);
+  // Each fragment's links (16) and flags (4), and the fields that vary: none on the stack (no
+  // seed; α is s), β and γ around the spheres (cleared, then 1 at the seeds); the pair words where
+  // kept as bits.
+  EXPECT_EQ(stack["bytes_written"].get<double>(), stackFragments * 20 + pixels * 16);
+  EXPECT_EQ(spheres["bytes_written"].get<double>(), sphereFragments * 28);
   // Count, head and maxStep per pixel (24), 5 words of each record (depth, ∇z, normal, ids), and
   // the pair words (16 a pixel) or each fragment's links (16).
   EXPECT_EQ(stack["bytes_read"].get<double>(), pixels * 24 + stackFragments * 20 + pixels * 16);

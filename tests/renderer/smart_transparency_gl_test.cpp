@@ -4,6 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -296,4 +299,58 @@ TEST(SmartTransparency, FieldsWithoutSeedsAreKnownToBeZero) {
   // Without seed lists (the Eq. 8 spreading reads every fragment) nothing is claimed.
   SmartRig spreading(loadScene("builtin:quad-stack?n=3"), 40, 30, {{"spread", "diffusion"}});
   EXPECT_FALSE(spreading.fields->allZero(Field::Beta));
+}
+
+// The connect pass stores only the fields that vary (issue #29): Eq. 4's α is s at every fragment
+// and a listed field without a seed is 0, so neither is written for each fragment; a listed field
+// with seeds is 0 but 1 at its seeds, over whatever its buffer held. read() gives those values
+// without writing a buffer, and a pass that binds such a field finds it written out first.
+TEST(SmartTransparency, TheConnectPassStoresOnlyTheFieldsThatVary) {
+  const std::uint32_t garbage = 0x7FC0DEADu;  // a NaN
+  const auto fill = [&](const tlab::gpu::Buffer& b) {
+    glClearNamedBufferData(b.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &garbage);
+  };
+  const auto words = [](const tlab::gpu::Buffer& b, std::size_t n) {
+    std::vector<std::uint32_t> v(n);
+    b.download(v.data(), n * 4);
+    return v;
+  };
+  for (const char* source : {"builtin:quad-stack?n=3", "occluder"}) {
+    SCOPED_TRACE(source);
+    SmartRig rig(std::string(source) == "occluder" ? occluderScene() : loadScene(source), 40, 30);
+    TransparencyFields& fields = *rig.fields;
+    const std::size_t n = fields.fragments();
+    const bool seeded = std::string(source) == "occluder";
+    const auto fresh = std::map<Field, std::vector<float>>{
+        {Field::Beta, fields.read(Field::Beta)}, {Field::Gamma, fields.read(Field::Gamma)}};
+    // Every copy of every field full of garbage, then the pass again over the same buffers.
+    std::map<Field, std::array<const tlab::gpu::Buffer*, 2>> copies;
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) {
+      copies[f] = {&fields.current(f), &fields.output(f)};
+      for (const auto* b : copies[f]) fill(*b);
+    }
+    connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, fields);
+    ASSERT_EQ(fields.uniformValue(Field::Alpha), std::optional<float>(float(rig.smart.s)));
+    EXPECT_EQ(fields.read(Field::Alpha), std::vector<float>(n, float(rig.smart.s)));
+    for (Field f : {Field::Beta, Field::Gamma}) {
+      EXPECT_EQ(fields.uniformValue(f).has_value(), !seeded) << int(f);
+      EXPECT_EQ(fields.read(f), fresh.at(f)) << int(f);
+      EXPECT_EQ(std::count(fresh.at(f).begin(), fresh.at(f).end(), 1.0f) > 0, seeded) << int(f);
+    }
+    // α was not written: both its copies still hold the garbage (and read() wrote neither).
+    for (const auto* b : copies[Field::Alpha]) EXPECT_EQ(words(*b, n), std::vector<std::uint32_t>(n, garbage));
+    // A pass that binds the fields finds each one written out: α = s, β and γ as read.
+    fields.bindCurrent();
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) {
+      EXPECT_FALSE(fields.uniformValue(f).has_value()) << int(f);
+      std::vector<float> stored(n);
+      fields.current(f).download(stored.data(), n * 4);
+      EXPECT_EQ(stored, f == Field::Alpha ? std::vector<float>(n, float(rig.smart.s)) : fresh.at(f)) << int(f);
+    }
+  }
+  // Eq. 5's α varies with the list's length: stored for each fragment.
+  SmartRig adaptive(occluderScene(), 40, 30, {{"alpha_init", "adaptive"}});
+  EXPECT_FALSE(adaptive.fields->uniformValue(Field::Alpha).has_value());
+  const auto alpha = adaptive.fields->read(Field::Alpha);
+  EXPECT_NE(std::count(alpha.begin(), alpha.end(), alpha.front()), std::ptrdiff_t(alpha.size()));
 }
