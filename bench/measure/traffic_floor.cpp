@@ -99,6 +99,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
     s.fieldsPerFragment = s.composeFields;
     const auto has = [&](render::FragmentProperty p) { return layout.properties.has(p) ? 1u : 0u; };
     s.linkPairBits = fields && fields->linksFromPairBits();
+    s.connectPhase2 = !fields || fields->linksStored();
     s.connectWords = 1 + has(render::FragmentProperty::Normal) + 2 * has(render::FragmentProperty::DepthGradient) +
                      has(render::FragmentProperty::Ids);
   }
@@ -137,7 +138,18 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       // own links, and writes the fields and the flags. Phase 3's full search of the few listed
       // pairs depends on the scene and is not counted. With the links kept as pair bits, phase 1
       // writes 16 bytes a pixel instead, which phase 2 reads before it writes each fragment's links.
+      // Where every fragment's links join the same layer all round, phase 2 is left out
+      // (ConnectOutput::WhatTheFrameReads): the pair words are written, and nothing is read back.
       const double links = s.linkPairBits ? px * 16 : fr * 16;
+      if (!s.connectPhase2) {
+        t.bytesRead = px * 16 + fr * 4.0 * s.connectWords;
+        t.bytesWritten = px * 16;
+        t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) +
+                  " word(s) of each record read once; links as bits of each pixel's pairs (16 bytes a pixel written), "
+                  "every fragment linked all round: phase 2 left out";
+        out.push_back(t);
+        continue;
+      }
       t.bytesRead = px * (16 + 8) + fr * 4.0 * s.connectWords + links;
       t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4) + (s.linkPairBits ? px * 16 : 0);
       t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) + " word(s) of each record read once; " +

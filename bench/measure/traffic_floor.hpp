@@ -48,6 +48,7 @@ struct FrameShape {
   bool listSteps = false;          // records with a depth gradient: the sort also writes each list's maxStep
   bool colorPlane = false;         // the sort also writes each colour word into a plane (render::FillSpec::colorPlane)
   int fieldsPerFragment = 1;       // smart: the fields the connect pass stores (those that vary)
+  bool connectPhase2 = true;        // smart: whether the connect pass ran its phase 2 (else the links were not stored)
   bool linkPairBits = false;       // smart: the connect pass kept its settled links as bits of each pixel's pairs
   SolveShape solve;                // smart
 };

@@ -54,8 +54,9 @@ layout(std430, binding = BIND_GAMMA_OUT) writeonly buffer Gamma { float gamma[];
 layout(std430, binding = BIND_FLAGS) writeonly buffer Flags { uint flags[]; };
 #if TLAB_PHASE == 1 || TLAB_PHASE == 3
 // The pairs whose links need the full search: a count, then 2 × pixel A + axis (0: B to the
-// right of A, 1: B above).
-layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint workPairs[]; };
+// right of A, 1: B above). `partial` (TLAB_LINK_MASKS): set where some fragment lacks the link to
+// the same layer of an adjacent pixel in the image, or a pair was listed (see phase 1).
+layout(std430, binding = BIND_CONNECT_WORK) buffer Work { uint workCount; uint partial; uint workPairs[]; };
 #endif
 #ifdef TLAB_LINK_MASKS
 // Per pixel that holds a fragment, its pairs with the pixel to its right (.x) and the one above
@@ -438,6 +439,21 @@ void main() {
       if (L < b[i].count) links[b[i].head + L][2 * i] = (sameB[i] & (1u << L)) != 0u ? head + L : UNRESOLVED;
     }
   pairWords[pixel] = uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
+  // Whether this pixel's fragments and those of its pairs link to the same layer all round: both
+  // lists of each pair in the image as long and every layer linked, and no empty pixel to the
+  // left or below in the image (whose pair no invocation settles). Where that holds for every
+  // pixel, phase 2 has nothing to find: every fragment has its 4 neighbours (or the image edge),
+  // so no silhouette, no halo and no fixed value, and the host may leave it out (issue #29).
+  // (Asked only until some pixel answered no: then one atomic, not one a pixel, and no more reads.)
+  if (partial == 0u) {
+    uint all = n >= 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
+    bool whole = !listed[0] && !listed[1];
+    for (int i = 0; i < 2; ++i) {
+      whole = whole && (!inside(xy + kPairDirections[i]) || (b[i].count == n && sameA[i] == all));
+      whole = whole && (!inside(xy - kPairDirections[i]) || countAt(xy - kPairDirections[i]) > 0u);
+    }
+    if (!whole) atomicOr(partial, 1u);
+  }
 #endif
   for (int i = 0; i < 2; ++i)
     if (listed[i]) workPairs[atomicAdd(workCount, 1u)] = 2u * pixel + uint(i);

@@ -32,13 +32,14 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 }
 
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
-                             float objectRadius, TransparencyFields& fields, NeighborSearch search) {
+                             float objectRadius, TransparencyFields& fields, NeighborSearch search, ConnectOutput output) {
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kConnectPairs = 25;  // BIND_CONNECT_PAIRS
   constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
   constexpr GLuint kFragsSorted = 6;   // BIND_FRAGS_SORTED of frame/fragment_layout.glsl
   constexpr GLuint kSortedWordsUnit = 0;
   constexpr GLuint kSeedsBeta = 23, kSeedsGamma = 24;  // BIND_SEEDS_BETA/GAMMA
+  constexpr std::uint32_t kAllFree = 7;                 // FREE_ALPHA | FREE_BETA | FREE_GAMMA
   fields.resize(buffer.fragmentCount(), settings.silhouettes, settings.halos);
   const FragmentLayout& layout = buffer.layout();
   gpu::ShaderDefines defines = gpu::joined(layout.defines(), fields.defines());
@@ -63,7 +64,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   const bool bounded = search != NeighborSearch::AllPairs;
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
   const GLuint zero = 0;
-  glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 8, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);  // count, partial
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
   buffer.bindSorted();
   // Each list's maxStep, written by the sort pass (it reads every record anyway).
@@ -144,8 +145,25 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // Phase 1 settles most pairs of adjacent pixels; phase 3 searches the pairs it listed; phase 2
   // sets the fields from the (mutual) links.
   run("1");
-  std::uint32_t listed = 0;
-  work.download(&listed, sizeof listed);
+  std::uint32_t header[2] = {0, 0};  // the listed pairs, and whether some fragment lacks a same-layer link
+  work.download(header, sizeof header);
+  const std::uint32_t listed = header[0];
+  // Phase 2 would find every fragment with its 4 neighbours (see ConnectOutput) where the links
+  // are bits joining whole lists all round; the frame then reads nothing it writes, unless Eq. 5's
+  // α varies or Eq. 8 spreading reads every fragment.
+  const bool whole = linkMasks && listed == 0 && header[1] == 0;
+  if (output == ConnectOutput::WhatTheFrameReads && whole && !settings.adaptiveAlpha &&
+      (listSeeds || (!fields.hasBeta() && !fields.hasGamma()))) {
+    fields.setUniform(Field::Alpha, float(settings.s));
+    fields.setSeedsListed(listSeeds);  // (the lists are empty: β and γ are 0)
+    for (Field f : {Field::Beta, Field::Gamma})
+      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) fields.setUniform(f, 0.0f);
+    fields.setFlagsUniform(kAllFree);
+    fields.setLinksFromPairBits(true);
+    fields.setLinksStored(false);
+    gpu::checkGl("ops/connect.comp");
+    return 0;
+  }
   if (listed > 0) run("3", listed);
   run("2");
   // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make

@@ -21,11 +21,20 @@ namespace tlab::render {
 // what they save per layer); BoundedWords and BoundedBits choose (tests compare the two).
 enum class NeighborSearch { Bounded, BoundedWords, BoundedBits, AllPairs };
 
+// What the pass must leave in the fields. Everything: the links, the flags and every field, for
+// whoever reads them (tests, a style file's stages). WhatTheFrameReads: smart transparency's own
+// frame, which reads the links and flags only to spread from seeds (or to diffuse Eq. 5's α):
+// where the links kept as bits join every fragment to the same layer of all its adjacent pixels,
+// there is no seed, and phase 2 is left out — the flags are all free, β and γ are 0 and α is s,
+// kept as numbers (TransparencyFields::setUniform), and the links are not stored (issue #29).
+enum class ConnectOutput { Everything, WhatTheFrameReads };
+
 // Runs the pass into `fields`, resized for the buffer's fragments (kept memory is reused).
 // Returns how many pairs of adjacent pixels needed the full neighbour search (the rest took the
 // fast path).
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
-                      float objectRadius, TransparencyFields& fields, NeighborSearch search = NeighborSearch::Bounded);
+                             float objectRadius, TransparencyFields& fields, NeighborSearch search = NeighborSearch::Bounded,
+                             ConnectOutput output = ConnectOutput::Everything);
 
 // Allocates the fields for the buffer's fragments and runs the pass.
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,

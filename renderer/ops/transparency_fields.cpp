@@ -35,6 +35,8 @@ void TransparencyFields::resize(std::size_t fragments, bool withBeta, bool withG
   seedsListed_ = false;
   for (bool& zero : allZero_) zero = false;
   for (auto& value : unstored_) value.reset();
+  unstoredFlags_.reset();
+  linksStored_ = true;
   if (!withBeta && !withGamma) return;
   const std::size_t list = (fragments + 4) * 4;
   fit(frontier_[int(Field::Alpha)], list);
@@ -83,7 +85,7 @@ std::vector<std::uint32_t> TransparencyFields::readList(Field field) {
 }
 
 gpu::Buffer& TransparencyFields::connectWork(std::size_t pixels) {
-  fit(connectWork_, (2 * pixels + 1) * 4);
+  fit(connectWork_, (2 * pixels + 2) * 4);  // count, partial, pairs
   return connectWork_;
 }
 
@@ -106,9 +108,24 @@ const TransparencyFields::PingPong& TransparencyFields::pair(Field f) const {
   return f == Field::Alpha ? alpha_ : f == Field::Beta ? beta_ : gamma_;
 }
 
+const gpu::Buffer& TransparencyFields::links() const {
+  if (!linksStored_)
+    throw std::logic_error("the connect pass stored no links for this frame (ConnectOutput::WhatTheFrameReads)");
+  return links_;
+}
+
+const gpu::Buffer& TransparencyFields::flags() const {
+  if (unstoredFlags_) {
+    glClearNamedBufferSubData(flags_.id(), GL_R32UI, 0, GLsizeiptr(fragments_ * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
+                              &*unstoredFlags_);
+    unstoredFlags_.reset();
+  }
+  return flags_;
+}
+
 void TransparencyFields::bindCurrent() const {
-  links_.bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
-  flags_.bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
+  links().bindBase(GL_SHADER_STORAGE_BUFFER, kLinks);
+  flags().bindBase(GL_SHADER_STORAGE_BUFFER, kFlags);
   alphaOld_.bindBase(GL_SHADER_STORAGE_BUFFER, kAlphaOld);
   bindPair(Field::Alpha, kAlphaIn, kAlphaOut);
   if (withBeta_) bindPair(Field::Beta, kBetaIn, kBetaOut);
@@ -164,11 +181,12 @@ std::vector<float> TransparencyFields::read(Field field) const {
 
 std::vector<glm::uvec4> TransparencyFields::readLinks() const {
   std::vector<glm::uvec4> v(fragments_);
-  links_.download(v.data(), v.size() * sizeof(glm::uvec4));
+  links().download(v.data(), v.size() * sizeof(glm::uvec4));
   return v;
 }
 
 std::vector<std::uint32_t> TransparencyFields::readFlags() const {
+  if (unstoredFlags_) return std::vector<std::uint32_t>(fragments_, *unstoredFlags_);
   std::vector<std::uint32_t> v(fragments_);
   flags_.download(v.data(), v.size() * 4);
   return v;

@@ -49,10 +49,17 @@ class TransparencyFields {
   // resize, as the fields of each frame start anew.
   void setUniform(Field field, float value);
   std::optional<float> uniformValue(Field field) const { return unstored_[int(field)]; }
-  const gpu::Buffer& links() const { return links_; }
-  const gpu::Buffer& flags() const { return flags_; }
+  // Flags kept likewise as one value (all free where the connect pass left out its phase 2).
+  void setFlagsUniform(std::uint32_t value) { unstoredFlags_ = value; }
+  // Whether the links are stored: not where the connect pass left out phase 2 for a frame that
+  // reads no link (ConnectOutput::WhatTheFrameReads); links(), bindCurrent() and readLinks()
+  // then throw std::logic_error, as no pass may read them. Reset by resize.
+  void setLinksStored(bool stored) { linksStored_ = stored; }
+  bool linksStored() const { return linksStored_; }
+  const gpu::Buffer& links() const;
+  const gpu::Buffer& flags() const;
   gpu::Buffer& scratch() { return alphaOld_; }
-  // The connect pass's work list (a count, then up to 2 × `pixels` pairs of adjacent pixels), kept likewise.
+  // The connect pass's work list (a count, a flag, then up to 2 × `pixels` pairs of adjacent pixels), kept likewise.
   gpu::Buffer& connectWork(std::size_t pixels);
   gpu::Buffer& connectPairs(std::size_t pixels);  // the connect pass's pair bits, a uvec4 a pixel
   // Whether the last connect pass kept its settled links as pair bits (written out by its phase 2).
@@ -104,6 +111,8 @@ class TransparencyFields {
   bool allZero_[3] = {false, false, false};  // by Field
   // By Field: the value of a field no buffer holds yet (storeUniform writes it when a pass needs it).
   mutable std::optional<float> unstored_[3];
+  mutable std::optional<std::uint32_t> unstoredFlags_;
+  bool linksStored_ = true;
 };
 
 }  // namespace tlab::render

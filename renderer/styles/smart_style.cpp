@@ -65,7 +65,8 @@ std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& p
   p.push_back(std::make_unique<FunctionPass>("connect", [frame](FrameContext& f, std::vector<std::string>& operations) {
     if (!f.fields) frame->own = std::make_unique<TransparencyFields>();
     frame->fields = f.fields ? f.fields : frame->own.get();
-    connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius, *frame->fields);
+    connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius, *frame->fields,
+                     NeighborSearch::Bounded, ConnectOutput::WhatTheFrameReads);
     if (!frame->solves) operations = DiffusionSolver(f.shaders, frame->settings).operations();
   }));
   if (frame->solves)

@@ -224,25 +224,32 @@ TEST(BenchCli, FloorCountsTheFieldsSmartsComposeReads) {
 }
 
 // The connect pass's links: written once and read back once per fragment where phase 1 writes
-// them as words; where it keeps them as bits of each pixel's pairs (lists longer than 8, the
-// 12-layer stack), 16 bytes a pixel written and read instead, and the links written once.
+// them as words; where it keeps them as bits of each pixel's pairs (lists longer than 8: six nested
+// spheres, 12 layers at the centre), 16 bytes a pixel written and read instead, and the links
+// written once. Where those bits join every fragment to the same layer all round (the 12-layer
+// stack of full-screen quads), smart's frame leaves out phase 2: the pair words are written and
+// nothing else.
 TEST(BenchCli, FloorCountsTheConnectPassesLinksAsWordsOrAsPairBits) {
   const double pixels = 48 * 40;
   const auto stack = smartFloorRow("--scenes 'builtin:quad-stack?n=12'", "connect");
+  const auto deep = smartFloorRow("--scenes 'builtin:nested-spheres?n=6'", "connect");
   const auto spheres = smartFloorRow("--scenes 'builtin:nested-spheres?n=2'", "connect");
-  ASSERT_FALSE(stack.is_null() || spheres.is_null());
-  EXPECT_NE(stack["model"].get<std::string>().find("links as bits of each pixel's pairs"), std::string::npos) << stack;
+  ASSERT_FALSE(stack.is_null() || deep.is_null() || spheres.is_null());
+  EXPECT_NE(stack["model"].get<std::string>().find("phase 2 left out"), std::string::npos) << stack;
+  EXPECT_NE(deep["model"].get<std::string>().find("links as bits of each pixel's pairs"), std::string::npos) << deep;
+  EXPECT_EQ(deep["model"].get<std::string>().find("phase 2 left out"), std::string::npos) << deep;
   EXPECT_NE(spheres["model"].get<std::string>().find("links written once and read once"), std::string::npos) << spheres;
-  const double stackFragments = stack["fragments"], sphereFragments = spheres["fragments"];
+  const double stackFragments = stack["fragments"], deepFragments = deep["fragments"], sphereFragments = spheres["fragments"];
   EXPECT_EQ(stackFragments, 12 * pixels);
-  // Each fragment's links (16) and flags (4), and the fields that vary: none on the stack (no
-  // seed; α is s), β and γ around the spheres (cleared, then 1 at the seeds); the pair words where
-  // kept as bits.
-  EXPECT_EQ(stack["bytes_written"].get<double>(), stackFragments * 20 + pixels * 16);
+  // The pair words alone on the stack; elsewhere each fragment's links (16) and flags (4), β and
+  // γ (seeded by the silhouettes: cleared, then 1 at the seeds), and the pair words where kept as bits.
+  EXPECT_EQ(stack["bytes_written"].get<double>(), pixels * 16);
+  EXPECT_EQ(deep["bytes_written"].get<double>(), deepFragments * 28 + pixels * 16);
   EXPECT_EQ(spheres["bytes_written"].get<double>(), sphereFragments * 28);
-  // Count, head and maxStep per pixel (24), 5 words of each record (depth, ∇z, normal, ids), and
-  // the pair words (16 a pixel) or each fragment's links (16).
-  EXPECT_EQ(stack["bytes_read"].get<double>(), pixels * 24 + stackFragments * 20 + pixels * 16);
+  // Count, head and maxStep per pixel (16), and count and head again for phase 2 (8); 5 words of
+  // each record (depth, ∇z, normal, ids), and the pair words (16 a pixel) or each fragment's links (16).
+  EXPECT_EQ(stack["bytes_read"].get<double>(), pixels * 16 + stackFragments * 20);
+  EXPECT_EQ(deep["bytes_read"].get<double>(), pixels * 24 + deepFragments * 20 + pixels * 16);
   EXPECT_EQ(spheres["bytes_read"].get<double>(), pixels * 24 + sphereFragments * (20 + 16));
 }
 

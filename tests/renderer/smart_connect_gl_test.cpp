@@ -7,6 +7,8 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 #include <tuple>
 
 #include "renderer/scene/scene_source.hpp"
@@ -331,3 +333,88 @@ TEST(SmartTransparency, ZoomedInViewHasNoDarkFrame) {
   EXPECT_NEAR(band(0, 3), band(3, 6), 3.0);
 }
 
+
+// Smart's own frame leaves out phase 2 where the links kept as bits join every fragment to the
+// same layer of all its adjacent pixels in the image (issue #29): the full-screen stack. What
+// phase 2 would have written is then known — the flags all free, β and γ 0, α = s — and the pass
+// that writes everything (the default) confirms it, link by link. Anywhere else (a list shorter,
+// a silhouette, Eq. 5's α, Eq. 8 spreading, links kept as words) phase 2 runs, with the same
+// results as the default.
+TEST(NeighborLinks, PhaseTwoIsLeftOutWhereEveryFragmentIsLinkedAllRound) {
+  struct Case {
+    const char* source;
+    int size;
+    std::map<std::string, std::string> settings;
+    bool leftOut;
+    bool atTheCorner = false;  // seen from above the quads' corner: they fill the view's upper right
+  };
+  const Case cases[] = {
+      {"builtin:quad-stack?n=16", 32, {}, true},
+      {"builtin:quad-stack?n=16", 32, {{"halos", "off"}, {"silhouettes", "off"}}, true},
+      {"builtin:quad-stack?n=16", 32, {{"alpha_init", "adaptive"}}, false},
+      {"builtin:quad-stack?n=16", 32, {{"spread", "diffusion"}}, false},
+      {"builtin:nested-spheres?n=6", 48, {}, false},  // lists up to 12 (bits), silhouettes
+      {"builtin:torus", 48, {}, false},                // lists up to 4: words
+      // Whole lists all round but to the left and below the corner, where no pair is settled.
+      {"builtin:quad-stack?n=16", 32, {}, false, true},
+  };
+  for (const auto& c : cases) {
+    const std::string what = std::string(c.source) + " with " + std::to_string(c.settings.size()) + " setting(s)";
+    SCOPED_TRACE(what);
+    Scene scene = loadScene(c.source);
+    if (c.atTheCorner) {
+      Camera corner;  // the quads' edges x = -20 and y = -20 through the eye: at the view's centre lines
+      corner.eye = {-20.0f, -20.0f, 12.0f};
+      corner.target = {-20.0f, -20.0f, 0.0f};
+      scene.camera = corner;
+    }
+    SmartRig rig(scene, c.size, c.size, c.settings);
+    if (c.atTheCorner) {
+      EXPECT_EQ(rig.counts[std::size_t(c.size - 1) * c.size + c.size - 1], 16u);  // the top right: all 16
+      EXPECT_EQ(rig.counts[0], 0u);                                             // the bottom left: none
+    }
+    TransparencyFields frame;
+    connectFragments(*rig.buffer, rig.shaders, rig.smart, rig.scene.boundingSphere().radius, frame, NeighborSearch::Bounded,
+                     ConnectOutput::WhatTheFrameReads);
+    EXPECT_EQ(frame.linksStored(), !c.leftOut);
+    EXPECT_EQ(frame.readFlags(), rig.fields->readFlags());
+    for (Field f : {Field::Alpha, Field::Beta, Field::Gamma})
+      if (f == Field::Alpha || (f == Field::Beta ? frame.hasBeta() : frame.hasGamma())) EXPECT_EQ(frame.read(f), rig.fields->read(f)) << int(f);
+    if (!c.leftOut) {
+      EXPECT_EQ(frame.readLinks(), rig.fields->readLinks());
+      continue;
+    }
+    EXPECT_THROW(frame.readLinks(), std::logic_error);
+    EXPECT_THROW(frame.bindCurrent(), std::logic_error);
+    EXPECT_EQ(frame.readFlags(), std::vector<std::uint32_t>(rig.buffer->fragmentCount(), 7u));
+    // Every link the default pass wrote joins the same layer of the adjacent pixel (none beyond the image).
+    const auto links = rig.fields->readLinks();
+    const glm::ivec2 kDirections[4] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}};
+    std::size_t checked = 0;
+    for (int y = 0; y < c.size; ++y)
+      for (int x = 0; x < c.size; ++x) {
+        const std::size_t p = std::size_t(y) * c.size + x;
+        for (std::uint32_t layer = 0; layer < rig.counts[p]; ++layer)
+          for (int k = 0; k < 4; ++k) {
+            const glm::ivec2 q = glm::ivec2(x, y) + kDirections[k];
+            const bool inside = q.x >= 0 && q.y >= 0 && q.x < c.size && q.y < c.size;
+            const std::uint32_t expected = inside ? rig.heads[std::size_t(q.y) * c.size + q.x] + layer : kNone;
+            ASSERT_EQ(links[rig.heads[p] + layer][k], expected) << x << "," << y << " layer " << layer << " direction " << k;
+            ++checked;
+          }
+      }
+    EXPECT_EQ(checked, 4 * rig.buffer->fragmentCount());
+  }
+  // Smart's picture with phase 2 left out: α = s and β = γ = 0 make its compose (Alg. 3) constant's
+  // front-to-back blend at alpha = s.
+  Renderer renderer(loadScene("builtin:quad-stack?n=16"));
+  RenderRequest r;
+  r.width = r.height = 32;
+  r.style = "smart";
+  r.settings = {{"s", "0.45"}};
+  const tlab::core::Image smart = renderer.render(r);
+  EXPECT_FALSE(renderer.transparencyFields().linksStored());
+  r.style = "constant";
+  r.settings = {{"alpha", "0.45"}};
+  EXPECT_EQ(renderer.render(r).pixels, smart.pixels);
+}
