@@ -140,22 +140,21 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       // writes 16 bytes a pixel instead, which phase 2 reads before it writes each fragment's links.
       // Where every fragment's links join the same layer all round, phase 2 is left out
       // (ConnectOutput::WhatTheFrameReads): the pair words are written, and nothing is read back.
-      const double links = s.linkPairBits ? px * 16 : fr * 16;
+      const std::string phase1 =
+          "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) + " word(s) of each record read once; ";
       if (!s.connectPhase2) {
         t.bytesRead = px * 16 + fr * 4.0 * s.connectWords;
         t.bytesWritten = px * 16;
-        t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) +
-                  " word(s) of each record read once; links as bits of each pixel's pairs (16 bytes a pixel written), "
-                  "every fragment linked all round: phase 2 left out";
-        out.push_back(t);
-        continue;
+        t.model = phase1 + "links as bits of each pixel's pairs (16 bytes a pixel written), every fragment linked all round: "
+                           "phase 2 left out";
+      } else {
+        t.bytesRead = px * (16 + 8) + fr * 4.0 * s.connectWords + (s.linkPairBits ? px * 16 : fr * 16);
+        t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4) + (s.linkPairBits ? px * 16 : 0);
+        t.model = phase1 +
+                  (s.linkPairBits ? "links as bits of each pixel's pairs (16 bytes a pixel, written and read once), then written once"
+                                  : "links written once and read once") +
+                  "; " + std::to_string(s.fieldsPerFragment) + " field(s) stored for each fragment and the flags written";
       }
-      t.bytesRead = px * (16 + 8) + fr * 4.0 * s.connectWords + links;
-      t.bytesWritten = fr * (16 + 4.0 * s.fieldsPerFragment + 4) + (s.linkPairBits ? px * 16 : 0);
-      t.model = "maxStep (from the sort) read per pixel; " + std::to_string(s.connectWords) + " word(s) of each record read once; " +
-                (s.linkPairBits ? "links as bits of each pixel's pairs (16 bytes a pixel, written and read once), then written once"
-                                : "links written once and read once") +
-                "; " + std::to_string(s.fieldsPerFragment) + " field(s) stored for each fragment and the flags written";
     } else if (name == "solve") {
       // Per full sweep (α by Eq. 8, or β, γ by Eq. 8 spreading) each fragment's links, flags and
       // value are read and its value written (its neighbours' values are other fragments' own,

@@ -68,6 +68,11 @@ void Buffer::clearToZero() {
   glClearNamedBufferData(id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, nullptr);
 }
 
+void Buffer::fillWords(std::uint32_t word, std::size_t words) const {
+  if (words == 0) return;
+  glClearNamedBufferSubData(id(), GL_R32UI, 0, static_cast<GLsizeiptr>(words * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
+}
+
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }
 
 void dispatchLinear(std::size_t items) {

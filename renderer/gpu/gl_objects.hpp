@@ -2,6 +2,7 @@
 // RAII owners for GL objects. Each owns one GL name, is movable, not copyable, and deletes the
 // name when it dies. They assume the GpuContext that created them is current.
 #include <cstddef>
+#include <cstdint>
 #include <utility>
 
 #include "renderer/gpu/gl.hpp"
@@ -76,6 +77,10 @@ class Buffer {
   void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
   void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
   void clearToZero();
+  // Sets the first `words` 32-bit words to `word` (a float's bits where the buffer holds floats).
+  // const as bindBase is: the storage's contents are the GL's, which shaders write through const
+  // handles too.
+  void fillWords(std::uint32_t word, std::size_t words) const;
   void bindBase(GLenum target, GLuint index) const;
 
  private:

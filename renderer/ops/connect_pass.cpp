@@ -63,8 +63,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   }
   const bool bounded = search != NeighborSearch::AllPairs;
   gpu::Buffer& work = fields.connectWork(buffer.pixels());
-  const GLuint zero = 0;
-  glClearNamedBufferSubData(work.id(), GL_R32UI, 0, 8, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);  // count, partial
+  work.fillWords(0, 2);  // count, partial
   work.bindBase(GL_SHADER_STORAGE_BUFFER, kConnectWork);
   buffer.bindSorted();
   // Each list's maxStep, written by the sort pass (it reads every record anyway).
@@ -152,25 +151,22 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // are bits joining whole lists all round; the frame then reads nothing it writes, unless Eq. 5's
   // α varies or Eq. 8 spreading reads every fragment.
   const bool whole = linkMasks && listed == 0 && header[1] == 0;
-  if (output == ConnectOutput::WhatTheFrameReads && whole && !settings.adaptiveAlpha &&
-      (listSeeds || (!fields.hasBeta() && !fields.hasGamma()))) {
-    fields.setUniform(Field::Alpha, float(settings.s));
-    fields.setSeedsListed(listSeeds);  // (the lists are empty: β and γ are 0)
-    for (Field f : {Field::Beta, Field::Gamma})
-      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) fields.setUniform(f, 0.0f);
+  const bool leaveOutPhase2 = output == ConnectOutput::WhatTheFrameReads && whole && !settings.adaptiveAlpha &&
+                              (listSeeds || (!fields.hasBeta() && !fields.hasGamma()));
+  if (leaveOutPhase2) {
+    // No seed is listed (β and γ are 0, below), every flag is free, and no link is stored.
     fields.setFlagsUniform(kAllFree);
-    fields.setLinksFromPairBits(true);
     fields.setLinksStored(false);
-    gpu::checkGl("ops/connect.comp");
-    return 0;
+  } else {
+    if (listed > 0) run("3", listed);
+    run("2");
+    // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make
+    // those current.
+    fields.swap(Field::Alpha);
+    if (fields.hasBeta()) fields.swap(Field::Beta);
+    if (fields.hasGamma()) fields.swap(Field::Gamma);
   }
-  if (listed > 0) run("3", listed);
-  run("2");
-  // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make
-  // those current. Eq. 4's α is s everywhere; a listed field is 1 at its seeds and 0 elsewhere.
-  fields.swap(Field::Alpha);
-  if (fields.hasBeta()) fields.swap(Field::Beta);
-  if (fields.hasGamma()) fields.swap(Field::Gamma);
+  // Eq. 4's α is s everywhere; a listed field is 1 at its seeds and 0 elsewhere.
   fields.setSeedsListed(listSeeds);
   if (!settings.adaptiveAlpha) fields.setUniform(Field::Alpha, float(settings.s));
   if (listSeeds)

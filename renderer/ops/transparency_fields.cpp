@@ -1,5 +1,6 @@
 #include "renderer/ops/transparency_fields.hpp"
 
+#include <bit>
 #include <stdexcept>
 
 namespace tlab::render {
@@ -116,8 +117,7 @@ const gpu::Buffer& TransparencyFields::links() const {
 
 const gpu::Buffer& TransparencyFields::flags() const {
   if (unstoredFlags_) {
-    glClearNamedBufferSubData(flags_.id(), GL_R32UI, 0, GLsizeiptr(fragments_ * 4), GL_RED_INTEGER, GL_UNSIGNED_INT,
-                              &*unstoredFlags_);
+    flags_.fillWords(*unstoredFlags_, fragments_);
     unstoredFlags_.reset();
   }
   return flags_;
@@ -138,8 +138,7 @@ void TransparencyFields::storeUniform(Field field) const {
   std::optional<float>& value = unstored_[int(field)];
   if (!value) return;
   const PingPong& p = pair(field);
-  glClearNamedBufferSubData(p.copies[p.current].id(), GL_R32F, 0, GLsizeiptr(fragments_ * sizeof(float)), GL_RED,
-                            GL_FLOAT, &*value);
+  p.copies[p.current].fillWords(std::bit_cast<std::uint32_t>(*value), fragments_);
   value.reset();
 }
 
