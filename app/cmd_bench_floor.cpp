@@ -42,6 +42,7 @@ struct FloorRow {
   double ms = 0;  // median measured
   bench::PassTraffic traffic;
   bench::SolveShape solve;  // what smart's solve worked on (the solve row reports it)
+  std::string error;        // why this style could not run on this scene (the other rows still count)
 };
 
 nlohmann::json solveJson(const bench::SolveShape& v) {
@@ -64,7 +65,7 @@ std::vector<FloorRow> measureScene(render::Renderer& renderer, const FloorBenchO
   for (const auto& p : timing.passes) names.push_back(p.first);
   std::vector<FloorRow> rows;
   for (const auto& t : bench::passTraffic(shape, names)) {
-    FloorRow r{scene, style, stats.fragments, t.pass, 0.0, t, shape.solve};
+    FloorRow r{scene, style, stats.fragments, t.pass, 0.0, t, shape.solve, {}};
     for (const auto& p : timing.passes)
       if (p.first == t.pass) r.ms = p.second;
     rows.push_back(r);
@@ -85,8 +86,14 @@ void runFloorBench(const FloorBenchOptions& o) {
     for (const auto& scene : o.scenes) {
       render::Renderer renderer(render::loadScene(scene, sceneCatalog()));
       for (const auto& style : o.styles) {
-        auto part = measureScene(renderer, o, scene, style);
-        rows.insert(rows.end(), part.begin(), part.end());
+        try {
+          auto part = measureScene(renderer, o, scene, style);
+          rows.insert(rows.end(), part.begin(), part.end());
+        } catch (const std::exception& e) {  // e.g. more fragments than this GL's buffers hold
+          FloorRow failed;
+          failed.scene = scene, failed.style = style, failed.error = e.what();
+          rows.push_back(failed);
+        }
       }
     }
   }
@@ -106,7 +113,10 @@ void runFloorBench(const FloorBenchOptions& o) {
   if (o.json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& r : rows)
-      list.push_back({{"scene", r.scene}, {"style", r.style}, {"fragments", r.fragments}, {"pass", r.pass}, {"ms", r.ms},
+      if (!r.error.empty())
+        list.push_back({{"scene", r.scene}, {"style", r.style}, {"error", r.error}});
+      else
+        list.push_back({{"scene", r.scene}, {"style", r.style}, {"fragments", r.fragments}, {"pass", r.pass}, {"ms", r.ms},
                       {"bytes_read", r.traffic.bytesRead}, {"bytes_written", r.traffic.bytesWritten}, {"floor_ms", floorMs(r)},
                       {"solve", r.pass == "solve" ? solveJson(r.solve) : nlohmann::json(nullptr)},
                       {"ratio", ratioJson(r.ms / floorMs(r), r)}, {"gl_ratio", ratioJson(glRatio(r), r)}, {"model", r.traffic.model}});
@@ -127,13 +137,17 @@ void runFloorBench(const FloorBenchOptions& o) {
   std::printf("%-32s %-9s %10s %-8s %9s %9s %9s %9s %7s %8s\n", "scene", "style", "fragments", "pass", "ms", "read_MB",
               "write_MB", "floor_ms", "ratio", "gl_ratio");
   for (const auto& r : rows)
-    std::printf("%-32s %-9s %10llu %-8s %9.2f %9.2f %9.2f %9.3f %s %s\n", r.scene.c_str(), r.style.c_str(),
+    if (!r.error.empty())
+      std::printf("%-32s %-9s failed: %s\n", r.scene.c_str(), r.style.c_str(), r.error.c_str());
+    else
+      std::printf("%-32s %-9s %10llu %-8s %9.2f %9.2f %9.2f %9.3f %s %s\n", r.scene.c_str(), r.style.c_str(),
                 static_cast<unsigned long long>(r.fragments), r.pass.c_str(), r.ms, r.traffic.bytesRead / 1e6,
                 r.traffic.bytesWritten / 1e6, floorMs(r), ratioText(r.ms / floorMs(r), r, 7).c_str(),
                 ratioText(glRatio(r), r, 8).c_str());
   std::printf("models:\n");
   std::vector<std::string> lines;  // each once
   for (const auto& r : rows) {
+    if (!r.error.empty()) continue;
     const std::string line = "  " + r.pass + " (" + r.style + "): " + r.traffic.model;
     if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
   }

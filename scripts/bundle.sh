@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Writes a relocatable tlab bundle for a machine with no build tools and no Debian packages (a lab's
 # GPU server): bin/tlab, the shared libraries it needs that a bare glibc >= 2.36 system lacks,
-# the DejaVu fonts for labels and the study window, the examples, and a `tlab` launcher that points
+# the DejaVu fonts for labels and the study window, the examples, bench/gpu_table.sh (with its
+# Markdown formatter), and a `tlab` launcher that points
 # the loader and the fonts at the bundle. Left out: glibc itself and the GL driver (libEGL/libGL,
 # and Mesa's OSMesa/LLVM): the server's GPU driver provides libEGL.so.1, and tlab opens it at run
 # time (--gl egl). Usage: scripts/bundle.sh [OUT_DIR]   (default dist/tlab-bundle; build first)
@@ -28,6 +29,8 @@ strip --strip-unneeded "$out"/lib/*
 fontdir=/usr/share/fonts/truetype/dejavu
 cp "$fontdir/DejaVuSans.ttf" "$fontdir/DejaVuSans-Bold.ttf" "$out/fonts/"
 cp -r examples/. "$out/examples/"
+mkdir -p "$out/bench"  # the one run to make on a GPU (README, Benchmarks): the tables need python3 there
+cp bench/gpu_table.sh bench/gpu_table.py "$out/bench/"
 
 # The launcher: POSIX sh built-ins only (no dirname, no readlink), so it runs on a bare system.
 cat > "$out/tlab" <<'LAUNCHER'

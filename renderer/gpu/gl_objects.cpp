@@ -1,5 +1,6 @@
 #include "renderer/gpu/gl_objects.hpp"
 
+#include <stdexcept>
 #include <string>
 
 #include "renderer/gpu/gl_error.hpp"
@@ -71,6 +72,17 @@ void Buffer::clearToZero() {
 void Buffer::fillWords(std::uint32_t word, std::size_t words) const {
   if (words == 0) return;
   glClearNamedBufferSubData(id(), GL_R32UI, 0, static_cast<GLsizeiptr>(words * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
+}
+
+void Buffer::setFirstQuad(const std::array<std::uint32_t, 4>& quad) const {
+  glClearNamedBufferSubData(id(), GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, quad.data());
+}
+
+void Buffer::downloadThrough(const Buffer& staging, void* data, std::size_t bytes, std::size_t offset) const {
+  if (bytes == 0) return;
+  if (bytes > staging.size()) throw std::logic_error("a staging buffer smaller than the bytes read through it");
+  glCopyNamedBufferSubData(id(), staging.id(), static_cast<GLintptr>(offset), 0, static_cast<GLsizeiptr>(bytes));
+  staging.download(data, bytes);
 }
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }

@@ -1,6 +1,7 @@
 #pragma once
 // RAII owners for GL objects. Each owns one GL name, is movable, not copyable, and deletes the
 // name when it dies. They assume the GpuContext that created them is current.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -81,6 +82,12 @@ class Buffer {
   // const as bindBase is: the storage's contents are the GL's, which shaders write through const
   // handles too.
   void fillWords(std::uint32_t word, std::size_t words) const;
+  // Sets the first 16 bytes to the four words `quad`, on the GL's side like fillWords (no host
+  // write into a buffer that dispatches still in flight may read).
+  void setFirstQuad(const std::array<std::uint32_t, 4>& quad) const;
+  // Reads `bytes` at `offset` through the small buffer `staging` (at least `bytes` long): the GL
+  // copies them there first and the host reads that, never a range of this (maybe large) buffer.
+  void downloadThrough(const Buffer& staging, void* data, std::size_t bytes, std::size_t offset = 0) const;
   void bindBase(GLenum target, GLuint index) const;
 
  private:

@@ -145,7 +145,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // sets the fields from the (mutual) links.
   run("1");
   std::uint32_t header[2] = {0, 0};  // the listed pairs, and whether some fragment lacks a same-layer link
-  work.download(header, sizeof header);
+  fields.readSmall(work, header, sizeof header);
   const std::uint32_t listed = header[0];
   // Phase 2 would find every fragment with its 4 neighbours (see ConnectOutput) where the links
   // are bits joining whole lists all round; the frame then reads nothing it writes, unless Eq. 5's

@@ -205,7 +205,7 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     // since the last check), so the same steps are run. A step changed the field iff it listed a
     // fragment, and a step after one that listed none has nothing to spread from: the field moved
     // since the last check iff the first step after it listed something.
-    if (i == lastCheck + 1) movedSinceCheck = TransparencyFields::listCount(*changed) > 0;
+    if (i == lastCheck + 1) movedSinceCheck = fields.listCount(*changed) > 0;
     if ((i & (i + 1)) == 0) {
       if (!movedSinceCheck) break;
       lastCheck = i;

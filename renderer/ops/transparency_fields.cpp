@@ -52,8 +52,7 @@ gpu::Buffer& TransparencyFields::frontier(Field field) {
 }
 
 void TransparencyFields::clearList(const gpu::Buffer& list) {
-  const std::uint32_t empty[4] = {0, 1, 1, 0};  // groups, 1, 1, count
-  glNamedBufferSubData(list.id(), 0, sizeof empty, empty);
+  list.setFirstQuad({0, 1, 1, 0});  // groups, 1, 1, count; written by the GL, not the host (see readSmall)
 }
 
 void TransparencyFields::setSeedsListed(bool listed) {
@@ -71,11 +70,16 @@ void TransparencyFields::dispatchOnList(const gpu::ShaderProgram& program, const
                   GL_TEXTURE_FETCH_BARRIER_BIT);
 }
 
-std::uint32_t TransparencyFields::listCount(const gpu::Buffer& list) {
+std::uint32_t TransparencyFields::listCount(const gpu::Buffer& list) const {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::uint32_t count = 0;
-  list.download(&count, sizeof count, 3 * sizeof count);
+  readSmall(list, &count, sizeof count, 3 * sizeof count);
   return count;
+}
+
+void TransparencyFields::readSmall(const gpu::Buffer& from, void* data, std::size_t bytes, std::size_t offset) const {
+  if (!staging_) staging_ = gpu::Buffer(16);
+  from.downloadThrough(staging_, data, bytes, offset);
 }
 
 std::vector<std::uint32_t> TransparencyFields::readList(Field field) {

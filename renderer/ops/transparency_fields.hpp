@@ -71,7 +71,13 @@ class TransparencyFields {
   // where the connect pass lists each field's seeds, frontier(Alpha) a spare list.
   gpu::Buffer& frontier(Field field);
   static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
-  static std::uint32_t listCount(const gpu::Buffer& list);
+  std::uint32_t listCount(const gpu::Buffer& list) const;
+  // Reads up to 16 bytes of a large buffer the passes just wrote (a list's count, the connect
+  // pass's work header) through a small staging buffer (gpu::Buffer::downloadThrough). On an
+  // H200 with NVIDIA's driver, reading them straight from the list (and writing a list's header
+  // from the host) cost time in proportion to the buffer's size: 2.2 ms a solve step at 2048²,
+  // 68 ms of the torus's solve, 1.4 ms since (README, "On a GPU").
+  void readSmall(const gpu::Buffer& from, void* data, std::size_t bytes, std::size_t offset = 0) const;
   // Runs `program` over the entries of `list` (its header is the indirect dispatch), then the
   // barriers for what reads its results.
   static void dispatchOnList(const gpu::ShaderProgram& program, const gpu::Buffer& list);
@@ -107,6 +113,7 @@ class TransparencyFields {
   bool linksFromPairBits_ = false;
   PingPong alpha_, beta_, gamma_;
   gpu::Buffer frontier_[3];  // by Field
+  mutable gpu::Buffer staging_;  // 16 bytes, made on first use (readSmall)
   bool seedsListed_ = false;
   bool allZero_[3] = {false, false, false};  // by Field
   // By Field: the value of a field no buffer holds yet (storeUniform writes it when a pass needs it).

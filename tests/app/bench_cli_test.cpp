@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+#include <fstream>
 #include <map>
 #include <regex>
 #include <vector>
@@ -258,4 +260,97 @@ TEST(BenchCli, FloorRefusesASettingAStyleDoesNotHave) {
   EXPECT_EQ(r.exitCode, 1);
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("'constant' has no parameter 'lambda_beta'"), std::string::npos) << r.err;
+}
+
+// bench/gpu_table.sh, the one run a lab makes on its GPU (issue #29): every style on the torus,
+// the 16-layer stack and the meshes given at each size, the floor of constant and smart, and the
+// Markdown table of both. Here on Mesa's EGL at tiny sizes (the script's GL as written).
+TEST(BenchCli, GpuTableScriptTimesEveryStyleOnTheScenesAndMeshesAndWritesTheTable) {
+  const auto dir = freshDir("gpu_table");
+  const std::string mesh = (dir / "spheres.gltf").string();
+  ASSERT_EQ(runCommand(kTlab + " scene export builtin:nested-spheres?n=2 -o " + mesh).exitCode, 0);
+  const std::string script = std::string(TLAB_SOURCE_DIR) + "/bench/gpu_table.sh";
+  const auto out = dir / "out";
+  const auto r = runCommand("SIZES=24x24,32x32 FRAMES=1 COPY_MIB=16 COMPARISONS=none bash " + script + " " + kTlab + " " +
+                            out.string() + " " + mesh);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out / "failed.txt"));
+  EXPECT_NE(readText((out / "machine.txt").string()).find("tlab: tlab "), std::string::npos);
+
+  const auto all = nlohmann::json::parse(readText((out / "all.json").string()));
+  std::vector<std::string> styles;
+  for (const auto& row : all["rows"]) {
+    EXPECT_FALSE(row.contains("error")) << row;
+    const auto style = row["style"].get<std::string>();
+    if (std::find(styles.begin(), styles.end(), style) == styles.end()) styles.push_back(style);
+  }
+  ASSERT_GE(styles.size(), 8u);
+  EXPECT_EQ(all["rows"].size(), 3 * 2 * styles.size());  // torus, stack, the mesh; two sizes
+
+  // The table: a line per scene and size with a time in every style's column, and both floors.
+  const auto table = readText((out / "table.md").string());
+  EXPECT_NE(r.out.find(table), std::string::npos) << "the table is printed";
+  for (const std::string scene : {"builtin:torus?triangles=100000", "builtin:quad-stack?n=16", "spheres"})
+    for (const std::string size : {"24²", "32²"}) {
+      const auto at = table.find("| " + scene + " | " + size + " | ");
+      ASSERT_NE(at, std::string::npos) << scene << " " << size << "\n" << table;
+      const auto line = table.substr(at, table.find('\n', at) - at);
+      EXPECT_EQ(std::count(line.begin(), line.end(), '|'), static_cast<long>(styles.size()) + 4) << line;
+      EXPECT_EQ(line.find("failed"), std::string::npos) << line;
+    }
+  for (const std::string row : {"| builtin:quad-stack?n=16 | 24² | smart | connect | ", "| builtin:torus?triangles=100000 | 32² | constant | compose | "})
+    EXPECT_NE(table.find(row), std::string::npos) << row << "\n" << table;
+}
+
+// A style that fails on a scene is a footnote with its error in the table, not a missing cell.
+TEST(BenchCli, GpuTableNamesEachFailureAndStopsWithoutTheGlAsked) {
+  const auto dir = freshDir("gpu_table_failures");
+  const std::string script = std::string(TLAB_SOURCE_DIR) + "/bench/gpu_table.sh";
+  const auto r = runCommand("bash " + script + " " + kTlab + " " + (dir / "out").string() + " " + (dir / "none.gltf").string());
+  EXPECT_EQ(r.exitCode, 2);
+  EXPECT_NE(r.err.find("none.gltf: no such mesh file"), std::string::npos) << r.err;
+
+  const auto noGl = runCommand("GL=egl:9 bash " + script + " " + kTlab + " " + (dir / "out").string());
+  EXPECT_EQ(noGl.exitCode, 1);
+  EXPECT_EQ(readText((dir / "out" / "failed.txt").string()), "tlab render --gl egl:9\n");
+  EXPECT_FALSE(std::filesystem::exists(dir / "out" / "all.json"));
+
+  const nlohmann::json all = {
+      {"frames", 3},
+      {"gl", {{"renderer", "R"}, {"vendor", "V"}, {"version", "4.6"}, {"backend", "egl device"}}},
+      {"reference_style", "constant"},
+      {"rows",
+       {{{"scene", "builtin:sphere"}, {"size", "2048x2048"}, {"style", "constant"}, {"fragments", 10}, {"frame_ms", 2.0},
+         {"ratio_to_reference", 1.0}, {"pass_ms", {{"fill", 1.5}, {"compose", 0.5}}}},
+        {{"scene", "builtin:sphere"}, {"size", "2048x2048"}, {"style", "smart"}, {"error", "too many fragments"}}}}};
+  const auto tableDir = freshDir("gpu_table_footnote");
+  std::ofstream((tableDir / "all.json").string()) << all.dump();
+  const auto t = runCommand("python3 " + std::string(TLAB_SOURCE_DIR) + "/bench/gpu_table.py " + tableDir.string());
+  ASSERT_EQ(t.exitCode, 0) << t.err;
+  EXPECT_NE(t.out.find("| builtin:sphere | 2048² | 10 | 2.00 | failed (1) |"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("(1) builtin:sphere, 2048x2048, smart: too many fragments"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("| builtin:sphere | 2048² | fill 1.50, compose 0.50 | failed |"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("tlab on **R**"), std::string::npos) << t.out;
+}
+
+// A style that cannot run on one scene (here: more fragments than this GL's buffers may hold) is a
+// row naming why; the other scenes' rows are still measured (bench/gpu_table.sh's 2048² floor).
+TEST(BenchCli, FloorGoesOnPastAStyleThatCannotRunOnAScene) {
+  const auto r = runCommand(kTlab + " bench floor --scenes builtin:sphere,builtin:quad-stack?n=64 --styles constant "
+                                    "--size 1024x1024 --frames 1 --copy-mib 16 --gl osmesa --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  std::vector<std::string> sphere;
+  std::string stackError;
+  for (const auto& row : j["rows"]) {
+    if (row["scene"] == "builtin:sphere") sphere.push_back(row["pass"].get<std::string>());
+    if (row["scene"] == "builtin:quad-stack?n=64") stackError = row.value("error", std::string());
+  }
+  EXPECT_EQ(sphere, (std::vector<std::string>{"fill", "compose"}));
+  EXPECT_NE(stackError.find("use a lower resolution"), std::string::npos) << r.out;
+  const auto text = runCommand(kTlab + " bench floor --scenes builtin:quad-stack?n=64 --styles constant --size 1024x1024 "
+                                       "--frames 1 --copy-mib 16 --gl osmesa");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_NE(text.out.find("\nbuiltin:quad-stack?n=64 "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" constant  failed: the illustration buffer needs "), std::string::npos) << text.out;
 }
