@@ -18,9 +18,13 @@ uniform int uWidth;
 uniform int uHeight;
 
 // seed 002, Sec. 5.1: εn = 1 − n_i·n_j, εz = |z_i − z_j|², ε = εn + εz.
+// `precise`: evaluated as written. NVIDIA's compiler (H200, driver 580) otherwise computed it as
+// (1 + εz) − n_i·n_j, where an εz below 2⁻²⁴ vanishes: two quads of one object 11 or fewer 16-bit
+// depth steps apart then tied, and the farther one lost every link (issue #29's GPU test run).
 float continuity(vec3 ni, float zi, vec3 nj, float zj) {
-  float dz = zi - zj;
-  return (1.0 - dot(ni, nj)) + dz * dz;
+  precise float dz = zi - zj;
+  precise float e = (1.0 - dot(ni, nj)) + dz * dz;
+  return e;
 }
 
 // The range of slots to scan for a fragment of `shape` in the pixel whose slots start at
