@@ -42,21 +42,39 @@ def passes(row):
     return ", ".join(f"{name} {ms(t)}" for name, t in named)
 
 
-def style_table(rows, out):
-    """One line per scene and size, one column per style: ms per frame and the ratio to the
-    reference style (the first), or a footnote with the error."""
-    styles, keys = [], []
+def grouped(rows):
+    """The styles and the (scene, size) lines in the order they ran, and each row by (scene, size, style)."""
+    styles, lines = [], []
     for r in rows:
         if r["style"] not in styles:
             styles.append(r["style"])
-        key = (r["scene"], r["size"])
-        if key not in keys:
-            keys.append(key)
-    cell = {(r["scene"], r["size"], r["style"]): r for r in rows}
-    notes = []
+        if (r["scene"], r["size"]) not in lines:
+            lines.append((r["scene"], r["size"]))
+    return styles, lines, {(r["scene"], r["size"], r["style"]): r for r in rows}
+
+
+class Footnotes:
+    """A failed row's cell points to a numbered note with its error, printed after the table."""
+
+    def __init__(self):
+        self.notes = []
+
+    def cell(self, scene, size, style, error):
+        self.notes.append(f"{scene_name(scene)}, {size}, {style}: {error}")
+        return f"failed ({len(self.notes)})"
+
+    def write(self, out):
+        out += [f"\n({i}) {n}" for i, n in enumerate(self.notes, 1)]
+
+
+def style_table(rows, out):
+    """One line per scene and size, one column per style: ms per frame and the ratio to the
+    reference style (the first), or a footnote with the error."""
+    styles, lines, cell = grouped(rows)
+    notes = Footnotes()
     out.append("| scene | size | fragments | " + " | ".join(styles) + " |")
     out.append("|---|---|---:|" + "---:|" * len(styles))
-    for scene, size in keys:
+    for scene, size in lines:
         fragments = max((cell[(scene, size, s)].get("fragments", 0) for s in styles if (scene, size, s) in cell),
                         default=0)
         cells = []
@@ -65,43 +83,34 @@ def style_table(rows, out):
             if r is None:
                 cells.append("")
             elif "error" in r:
-                notes.append(f"{scene_name(scene)}, {size}, {s}: {r['error']}")
-                cells.append(f"failed ({len(notes)})")
+                cells.append(notes.cell(scene, size, s, r["error"]))
             elif i == 0 or not r.get("ratio_to_reference"):
                 cells.append(ms(r["frame_ms"]))
             else:
                 cells.append(f"{ms(r['frame_ms'])} ({r['ratio_to_reference']:.2f}×)")
         out.append(f"| {scene_name(scene)} | {size_name(size)} | {fragments:,} | " + " | ".join(cells) + " |")
-    for i, n in enumerate(notes, 1):
-        out.append(f"\n({i}) {n}")
+    notes.write(out)
 
 
 def pass_table(rows, styles, out):
     out.append("| scene | size | " + " | ".join(styles) + " |")
     out.append("|---|---|" + "---|" * len(styles))
-    by = {(r["scene"], r["size"], r["style"]): r for r in rows}
-    seen = []
-    for r in rows:
-        key = (r["scene"], r["size"])
-        if key in seen:
-            continue
-        seen.append(key)
-        cells = []
-        for s in styles:
-            r2 = by.get(key + (s,))
-            cells.append("failed" if r2 is None or "error" in r2 else passes(r2))
-        out.append(f"| {scene_name(key[0])} | {size_name(key[1])} | " + " | ".join(cells) + " |")
+    _, lines, cell = grouped(rows)
+    for scene, size in lines:
+        found = [cell.get((scene, size, s)) for s in styles]
+        cells = ["failed" if r is None or "error" in r else passes(r) for r in found]
+        out.append(f"| {scene_name(scene)} | {size_name(size)} | " + " | ".join(cells) + " |")
 
 
 def floor_table(floors, out):
     out.append("| scene | size | style | pass | ms | MB read + written | floor ms at the GL copy | × floor |")
     out.append("|---|---|---|---|---:|---:|---:|---:|")
-    notes = []
+    notes = Footnotes()
     for size, f in floors:
         for r in f["rows"]:
             if "error" in r:
-                notes.append(f"{scene_name(r['scene'])}, {size}, {r['style']}: {r['error']}")
-                out.append(f"| {scene_name(r['scene'])} | {size_name(size)} | {r['style']} | failed ({len(notes)}) | | | | |")
+                failed = notes.cell(r["scene"], size, r["style"], r["error"])
+                out.append(f"| {scene_name(r['scene'])} | {size_name(size)} | {r['style']} | {failed} | | | | |")
                 continue
             gb = f["gl_copy_bandwidth"]
             mb = (r["bytes_read"] + r["bytes_written"]) / 1e6
@@ -109,8 +118,7 @@ def floor_table(floors, out):
             ratio = "—" if r["gl_ratio"] is None else f"{r['gl_ratio']:.1f}"  # nothing to move (a pass skipped)
             out.append(f"| {scene_name(r['scene'])} | {size_name(size)} | {r['style']} | {r['pass']} | {ms(r['ms'])} | "
                        f"{mb:.1f} | {floor_ms:.3f} | {ratio} |")
-    for i, n in enumerate(notes, 1):
-        out.append(f"\n({i}) {n}")
+    notes.write(out)
 
 
 def main():

@@ -43,7 +43,8 @@ struct FrameContext {
     if (!typed) throw std::logic_error("a render pass ran on a fill its style did not declare");
     return *typed;
   }
-  // What a style derives from the scene alone (T(scene)), kept by the renderer across frames.
+  // What a style derives from the scene alone (T(scene)), or keeps beside it, kept by the renderer
+  // across frames (frame/scene_cache.hpp).
   template <typename T>
   T& derived() const {
     if (!sceneCache) throw std::logic_error("a render pass needs the renderer's scene cache");

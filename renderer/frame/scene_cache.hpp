@@ -2,8 +2,10 @@
 // What a style derives from the scene alone (edge adjacency, uploaded meshes), built on the first
 // frame that asks and kept for the renderer's life: a renderer's scene never changes, so a
 // style's passes need not rebuild it every frame (issue #29: the view-dependent style rebuilt its
-// edge adjacency of the whole mesh for every frame). One object per type; T is constructed from
-// the scene. Owned by the renderer, next to the GL context its objects' buffers belong to.
+// edge adjacency of the whole mesh for every frame). Also what a style keeps across frames beside
+// it (the raster styles' targets, which re-make themselves when the frame's size changes). One
+// object per type; T is constructed from the scene. Owned by the renderer, next to the GL context
+// its objects' buffers belong to.
 #include <memory>
 #include <typeindex>
 #include <unordered_map>
