@@ -90,45 +90,113 @@ def write_gltf(path, positions, triangles, normals=None, generator="tlab bench/b
     return len(triangles)
 
 
-def read_off(path):
-    """An OFF file: vertices and polygons (fanned into triangles)."""
+class MeshError(Exception):
+    """A mesh file this script cannot read: the message names the file (and line)."""
+
+
+def off_lines(path):
+    """(line number, numbers) for each line of an OFF file that holds something, comments dropped."""
     with open(path) as f:
-        words = [w for line in f for w in line.split("#", 1)[0].split()]
-    if not words or not words[0].endswith("OFF"):
-        raise ValueError(f"{path}: not an OFF file")
-    nv, nf = int(words[1]), int(words[2])
-    at = 4
+        for number, line in enumerate(f, 1):
+            words = line.split("#", 1)[0].split()
+            if words:
+                yield number, words
+
+
+def read_off(path):
+    """An OFF file (also COFF, NOFF, STOFF ...: a vertex line's first three numbers are its
+    position, a face line's extra numbers its colour): vertices and polygons, fanned into triangles."""
+    lines = off_lines(path)
+
+    def next_line(what):
+        try:
+            return next(lines)
+        except StopIteration:
+            raise MeshError(f"{path}: ends before {what}") from None
+
+    def numbers(number, words, kind, what):
+        try:
+            return [kind(w) for w in words]
+        except ValueError:
+            raise MeshError(f"{path}: line {number}: {what} expected, found '{' '.join(words)}'") from None
+
+    number, words = next_line("its header")
+    if not words[0].endswith("OFF"):
+        raise MeshError(f"{path}: line {number}: not an OFF file (it starts with '{words[0]}', not OFF)")
+    if len(words) > 1:  # the counts on the header's line
+        counts = words[1:]
+    else:
+        number, counts = next_line("the vertex and face counts")
+    nv, nf = (numbers(number, counts[:2], int, "the vertex and face counts") + [0, 0])[:2]
+    if len(counts) < 2 or nv < 0 or nf < 0:
+        raise MeshError(f"{path}: line {number}: the vertex and face counts expected, found '{' '.join(counts)}'")
     positions = []
-    for _ in range(nv):
-        positions.append([float(x) for x in words[at:at + 3]])
-        at += 3
+    for i in range(nv):
+        number, words = next_line(f"vertex {i + 1} of {nv}")
+        if len(words) < 3:
+            raise MeshError(f"{path}: line {number}: a vertex (x y z) expected, found '{' '.join(words)}'")
+        positions.append(numbers(number, words[:3], float, "a vertex (x y z)"))
     triangles = []
-    for _ in range(nf):
-        k = int(words[at])
-        poly = [int(x) for x in words[at + 1:at + 1 + k]]
-        at += 1 + k
+    for i in range(nf):
+        number, words = next_line(f"face {i + 1} of {nf}")
+        k = numbers(number, words[:1], int, "a face (n i1 ... in)")[0]
+        if k < 0 or len(words) < 1 + k:
+            raise MeshError(f"{path}: line {number}: a face of {k} vertex indices expected, found '{' '.join(words)}'")
+        poly = numbers(number, words[1:1 + k], int, "a face (n i1 ... in)")
+        bad = [v for v in poly if not 0 <= v < nv]
+        if bad:
+            raise MeshError(f"{path}: line {number}: vertex index {bad[0]} out of range (the file has {nv} vertices)")
         triangles += [(poly[0], poly[i], poly[i + 1]) for i in range(1, k - 1)]
+    if not triangles:
+        raise MeshError(f"{path}: no triangles (faces of three or more vertices)")
     return positions, triangles
 
 
 def read_teapot_patches(header):
-    """The first object of the Schneider archive quoted in fg_teapot_data.h: Newell's teapot."""
+    """The first object of the Schneider archive quoted in fg_teapot_data.h: Newell's teapot (a
+    line "Martin Newell's teapot", then one with the counts of points and patches, the numbered
+    points, and the patches' 16 point numbers each)."""
     text = open(header).read()
-    start = text.index("Martin Newell's teapot")
+    start = text.find("Martin Newell's teapot")
+    if start < 0:
+        raise MeshError(f"{header}: no \"Martin Newell's teapot\" (freeglut's src/fg_teapot_data.h has it)")
+    first = text.count("\n", 0, start) + 2  # the line number of lines[0]
     lines = text[start:].splitlines()[1:]
-    nv, _, npatch, _ = (int(x) for x in lines[0].split())
+
+    def line(row, what):
+        if row >= len(lines):
+            raise MeshError(f"{header}: ends before {what}")
+        return lines[row]
+
+    def bad(row, what):
+        return MeshError(f"{header}: line {first + row}: {what} expected, found '{lines[row].strip()}'")
+
+    try:
+        nv, _, npatch, _ = (int(x) for x in line(0, "the counts").split())
+    except ValueError:
+        raise bad(0, "the counts (points, 0, patches, 0)") from None
     points, patches, row = {}, [], 1
     while len(points) < nv:
-        parts = lines[row].split()
-        row += 1
+        parts = line(row, f"point {len(points) + 1} of {nv}").split()
         if parts:
-            points[int(parts[0])] = [float(x) for x in parts[1:4]]
+            try:
+                points[int(parts[0])] = [float(x) for x in parts[1:4]]
+            except ValueError:
+                raise bad(row, "a point (number x y z)") from None
+            if len(points[int(parts[0])]) != 3:
+                raise bad(row, "a point (number x y z)")
+        row += 1
     numbers = []
     while len(patches) < npatch:
-        numbers += [int(x) for x in re.findall(r"-?\d+", lines[row])]
+        numbers += [int(x) for x in re.findall(r"-?\d+", line(row, f"patch {len(patches) + 1} of {npatch}"))]
         row += 1
         while len(numbers) >= 16:
-            patches.append([abs(i) for i in numbers[:16]])
+            patch = [abs(i) for i in numbers[:16]]
+            missing = [i for i in patch if i not in points]
+            if missing:
+                raise MeshError(f"{header}: line {first + row - 1}: patch {len(patches) + 1} names point {missing[0]}, "
+                                f"which is not among the {nv} points")
+            patches.append(patch)
             numbers = numbers[16:]
     return [[points[i] for i in p] for p in patches]
 
@@ -197,8 +265,15 @@ def stack(layers, grid):
     return pos, nrm, tris
 
 
+class OneLineParser(argparse.ArgumentParser):
+    """Usage errors in one line, as tlab's own."""
+
+    def error(self, message):
+        self.exit(2, f"{self.prog}: error: {message} (see --help)\n")
+
+
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = OneLineParser(description=__doc__.splitlines()[0])
     sub = ap.add_subparsers(dest="kind", required=True)
     o = sub.add_parser("off")
     o.add_argument("input")
@@ -215,13 +290,24 @@ def main():
     k.add_argument("--layers", type=int, default=16)
     k.add_argument("--grid", type=int, default=32)
     a = ap.parse_args()
-    if a.kind in ("torus", "stack"):
-        pos, nrm, tris = torus(a.triangles) if a.kind == "torus" else stack(a.layers, a.grid)
-        n = write_gltf(a.output, pos, tris, nrm)
-    else:
-        pos, tris = read_off(a.input) if a.kind == "off" else teapot(a.header, a.steps)
-        pos, tris = weld(pos, tris)
-        n = write_gltf(a.output, pos, tris)
+    for name in ("triangles", "layers", "grid", "steps"):
+        if getattr(a, name, 1) < 1:
+            ap.error(f"--{name} must be at least 1")
+    try:
+        if a.kind in ("torus", "stack"):
+            pos, nrm, tris = torus(a.triangles) if a.kind == "torus" else stack(a.layers, a.grid)
+            n = write_gltf(a.output, pos, tris, nrm)
+        else:
+            pos, tris = read_off(a.input) if a.kind == "off" else teapot(a.header, a.steps)
+            pos, tris = weld(pos, tris)
+            n = write_gltf(a.output, pos, tris)
+    except MeshError as e:
+        print(f"bench_meshes.py: error: {e}", file=sys.stderr)
+        return 1
+    except (OSError, UnicodeDecodeError) as e:  # a file that cannot be read or written
+        print(f"bench_meshes.py: error: {getattr(e, 'filename', None) or ''}{': ' if getattr(e, 'filename', None) else ''}"
+              f"{e.strerror if isinstance(e, OSError) and e.strerror else e}", file=sys.stderr)
+        return 1
     print(f"{a.output}: {n} triangles")
 
 

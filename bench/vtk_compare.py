@@ -10,10 +10,13 @@ render window (Debian's VTK has no headless EGL window), e.g.:
 
 (Debian's python3, where python3-vtk9 installs the vtk module.)
 
-Any glTF or OFF mesh (bench/bench_meshes.py says where public ones come from; an OFF file is
-converted to glTF first, so both programs read the same file), or `torus`, a torus of --triangles
-triangles (the default); --mesh may be repeated, and each round then times every mesh in turn. The camera is the same eye/target/up/fovy for both; without --camera it is
-fitted to the mesh's bounding sphere as tlab fits it (from +z, or --view-from X,Y,Z). Every layer
+Any glTF or GLB file (every mesh in it, placed by its nodes) or OFF mesh (bench/bench_meshes.py
+says where public ones come from; an OFF file is converted to glTF first, so both programs read
+the same file), or `torus`, a torus of --triangles triangles (the default); --mesh may be
+repeated, and each round then times every mesh in turn. The camera is the same
+eye/target/up/fovy for both; without --camera it is fitted to the mesh's vertices (as VTK reads
+them) as tlab fits it (from +z, or --view-from X,Y,Z). A bad file or option is one line on stderr
+naming it, and exit code 1 (2 for an option). Every layer
 has the same opacity (tlab: constant alpha; VTK: actor opacity). The two programs are timed in
 alternation, --rounds times (the machine may be shared: each side's best round counts), each round
 the median of --frames frames after a warm-up: tlab constant, VTK dual depth peeling (exact:
@@ -103,17 +106,21 @@ def fitted_camera(mesh_positions, fovy=40.0, direction=(0.0, 0.0, 1.0)):
     return f"eye={fmt(eye)} target={fmt(c)} up={up} fovy={fovy:g}"
 
 
-def gltf_positions(path):
-    """The POSITION accessor of a glTF file written by bench_meshes.write_gltf (one embedded buffer)."""
-    import base64
-    import struct
-    doc = json.load(open(path))
-    acc = doc["accessors"][doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"]]
-    view = doc["bufferViews"][acc["bufferView"]]
-    blob = base64.b64decode(doc["buffers"][view["buffer"]]["uri"].split(",", 1)[1])
-    start = view.get("byteOffset", 0) + acc.get("byteOffset", 0)
-    flat = struct.unpack_from(f"<{3 * acc['count']}f", blob, start)
-    return [flat[i:i + 3] for i in range(0, len(flat), 3)]
+def mesh_positions(path):
+    """Every vertex of a glTF or GLB file as VTK reads it (all meshes, placed by their nodes), for
+    the fitted camera; bench_meshes.MeshError where VTK finds none (a broken or empty file)."""
+    import vtk
+    vtk.vtkObject.GlobalWarningDisplayOff()  # a broken file: our one line, not VTK's pages
+    reader = vtk.vtkGLTFReader()
+    reader.SetFileName(path)
+    reader.Update()
+    geometry = vtk.vtkCompositeDataGeometryFilter()
+    geometry.SetInputConnection(reader.GetOutputPort())
+    geometry.Update()
+    points = geometry.GetOutput().GetPoints()
+    if points is None or points.GetNumberOfPoints() == 0 or geometry.GetOutput().GetNumberOfPolys() == 0:
+        raise bench_meshes.MeshError(f"{path}: VTK's glTF reader found no triangles in it (a broken or empty glTF file?)")
+    return [points.GetPoint(i) for i in range(points.GetNumberOfPoints())]
 
 
 def prepare_mesh(a, name, tmp):
@@ -129,23 +136,43 @@ def prepare_mesh(a, name, tmp):
         pos, tris = bench_meshes.weld(*bench_meshes.read_off(name))
         n = bench_meshes.write_gltf(path, pos, tris)
         what = f"{name} as glTF, {n} triangles"
-    camera = a.camera or fitted_camera(gltf_positions(path), direction=[float(x) for x in a.view_from.split(",")])
+    camera = a.camera or fitted_camera(mesh_positions(path), direction=a.view_from)
     return path, what, camera
 
 
+def run_tlab(exe, args, mesh):
+    """tlab's stdout; bench_meshes.MeshError with tlab's own one-line message where it fails."""
+    done = subprocess.run([exe] + args, capture_output=True, text=True)
+    if done.returncode != 0:
+        why = (done.stderr.strip().splitlines() or [f"exit code {done.returncode}"])[-1]
+        command = " ".join(args[:2] if args[0] == "bench" else args[:1])
+        raise bench_meshes.MeshError(f"{mesh}: tlab {command} failed: {why}")
+    return done.stdout
+
+
 def tlab_frame(a, mesh, camera, exe):
-    out = subprocess.run([exe, "bench", "render", "--scene", mesh, "--camera", camera, "--style", "constant",
-                          "--set", f"alpha={a.opacity}", "--size", f"{a.size}x{a.size}", "--frames", str(a.frames),
-                          "--gl", a.gl, "--json"], check=True, capture_output=True, text=True).stdout
+    out = run_tlab(exe, ["bench", "render", "--scene", mesh, "--camera", camera, "--style", "constant",
+                         "--set", f"alpha={a.opacity}", "--size", f"{a.size}x{a.size}", "--frames", str(a.frames),
+                         "--gl", a.gl, "--json"], a.labels[mesh])
     tlab = json.loads(out)
     return tlab["rows"][0], tlab["gl"]
 
 
 def parse_camera(text):
+    """'eye=X,Y,Z target=X,Y,Z up=X,Y,Z fovy=DEG' (near=, far= allowed) as a dict; ValueError naming
+    what is wrong."""
     camera = {}
     for item in text.split():
-        k, v = item.split("=")
-        camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
+        k, _, v = item.partition("=")
+        try:
+            camera[k] = [float(x) for x in v.split(",")] if "," in v else float(v)
+        except ValueError:
+            raise ValueError(f"'{item}' is not KEY=NUMBER or KEY=X,Y,Z") from None
+    for k, n in (("eye", 3), ("target", 3), ("up", 3), ("fovy", None)):
+        if k not in camera:
+            raise ValueError(f"no {k}=")
+        if n and (not isinstance(camera[k], list) or len(camera[k]) != n):
+            raise ValueError(f"{k}= needs {n} numbers")
     return camera
 
 
@@ -184,7 +211,7 @@ def print_table(a, meshes, best, fragments, loads):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap = bench_meshes.OneLineParser(description=__doc__.splitlines()[0])
     ap.add_argument("--tlab", default=os.path.join(os.path.dirname(__file__), "..", "build", "bin", "tlab"))
     ap.add_argument("--baseline", help="another tlab executable (e.g. a build before a change), timed in the same rounds")
     ap.add_argument("--mesh", action="append", help="a glTF or OFF mesh, or 'torus' (the generated torus); repeat it "
@@ -201,8 +228,51 @@ def main():
     ap.add_argument("--gl", default="auto", help="tlab's --gl")
     ap.add_argument("--images", help="also write MESH-tlab.png and MESH-vtk-MODE.png of each view into this folder")
     a = ap.parse_args()
+    check_options(ap, a)
+    try:
+        run(a)
+    except (bench_meshes.MeshError, OSError) as e:
+        what = f"{e.filename}: {e.strerror}" if isinstance(e, OSError) and e.filename and e.strerror else str(e)
+        print(f"vtk_compare.py: error: {what}", file=sys.stderr)
+        return 1
+
+
+def check_options(ap, a):
+    """Every option that would fail later, refused before anything runs (one line, exit 2)."""
+    for name in ("triangles", "size", "frames", "rounds"):
+        if getattr(a, name) < 1:
+            ap.error(f"--{name} must be at least 1")
+    if not 0 < a.opacity <= 1:
+        ap.error("--opacity must be in (0, 1]")
+    unknown = [m for m in a.modes.split(",") if m not in ("dual-peeling", "weighted-oit")]
+    if unknown:
+        ap.error(f"--modes: '{unknown[0]}' is not dual-peeling or weighted-oit")
+    try:
+        if a.camera:
+            parse_camera(a.camera)
+    except ValueError as e:
+        ap.error(f"--camera: {e}")
+    try:
+        a.view_from = [float(x) for x in a.view_from.split(",")]
+        if len(a.view_from) != 3 or math.hypot(*a.view_from) == 0:
+            raise ValueError
+    except ValueError:
+        ap.error("--view-from: a direction X,Y,Z (not all 0) expected")
+    for name in a.mesh or []:
+        if name != "torus" and not os.path.isfile(name):
+            ap.error(f"--mesh {name}: no such file")
+        if name != "torus" and not name.lower().endswith((".gltf", ".glb", ".off")):
+            ap.error(f"--mesh {name}: a .gltf, .glb or .off file (or torus) expected")
+    for option, exe in (("--tlab", a.tlab), ("--baseline", a.baseline)):
+        if exe and not os.access(exe, os.X_OK):
+            ap.error(f"{option} {exe}: not an executable (build tlab first, or give {option})")
+
+
+def run(a):
     with tempfile.TemporaryDirectory() as tmp:
-        meshes = [prepare_mesh(a, name, tmp) for name in (a.mesh or ["torus"])]
+        names = a.mesh or ["torus"]
+        meshes = [prepare_mesh(a, name, tmp) for name in names]
+        a.labels = {mesh: "the generated torus" if name == "torus" else name for (mesh, _, _), name in zip(meshes, names)}
         for mesh, what, camera in meshes:
             print(f"mesh: {what}; camera: {camera}")
         best = {mesh: {} for mesh, _, _ in meshes}
@@ -212,9 +282,9 @@ def main():
                 time_round(a, r, mesh, camera, best[mesh], fragments)
                 loads.append(os.getloadavg()[0])
         for mesh, _, camera in meshes if a.images else []:
-            subprocess.run([a.tlab, "render", mesh, "--camera", camera, "--style", "constant", "--set", f"alpha={a.opacity}",
-                            "--size", f"{a.size}x{a.size}", "--gl", a.gl,
-                            "-o", os.path.join(a.images, f"{os.path.basename(mesh)}-tlab.png")], check=True, capture_output=True)
+            run_tlab(a.tlab, ["render", mesh, "--camera", camera, "--style", "constant", "--set", f"alpha={a.opacity}",
+                              "--size", f"{a.size}x{a.size}", "--gl", a.gl,
+                              "-o", os.path.join(a.images, f"{os.path.basename(mesh)}-tlab.png")], a.labels[mesh])
         print_table(a, meshes, best, fragments, loads)
 
 
