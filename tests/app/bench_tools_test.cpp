@@ -232,3 +232,64 @@ TEST(BenchTools, VtkCompareRefusesBadInputInOneLine) {
   };
   for (const auto& c : cases) expectOneLine(vtkCompare("--rounds 1 " + c.args), c.part, c.exitCode, c.args);
 }
+
+// bench/smart_ratio.sh, which measured issue #29's smart-against-constant goals: builds timed in
+// alternating rounds, each round's ratio from its own two frames, each build's best frames over
+// the rounds and their ratio, and the median and range of the rounds' own ratios.
+TEST(BenchTools, SmartRatioAlternatesBuildsAndPrintsEachRatioFromItsFrames) {
+  const auto dir = freshDir("smart_ratio");
+  std::filesystem::create_directories(dir / "other");
+  std::filesystem::create_symlink(kTlab, dir / "other" / "tlab");
+  const std::string other = (dir / "other" / "tlab").string();
+  const auto r = runCommand("cd " + dir.string() + " && SCENES='builtin:sphere builtin:cube' SIZE=24x24 FRAMES=1 bash " + kBench +
+                            "smart_ratio.sh 2 " + kTlab + " other/tlab");
+  ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
+  const std::regex roundLine(R"(round (\d)\t(\S+)\t(\S+)\tsmart/constant ([\d.]+)\tconstant ([\d.]+) ms \(.*fill.*\)\tsmart ([\d.]+) ms \(.*connect.*\)\tload)");
+  struct Round {
+    int round;
+    std::string scene, build;
+    double ratio, constant, smart;
+  };
+  std::vector<Round> rounds;
+  for (std::sregex_iterator m(r.out.begin(), r.out.end(), roundLine), end; m != end; ++m)
+    rounds.push_back({std::stoi((*m)[1]), (*m)[2], (*m)[3], std::stod((*m)[4]), std::stod((*m)[5]), std::stod((*m)[6])});
+  ASSERT_EQ(rounds.size(), 8u) << r.out;
+  const std::string scenes[] = {"builtin:sphere", "builtin:cube"}, builds[] = {kTlab, "other/tlab"};
+  for (std::size_t i = 0; i < rounds.size(); ++i) {  // round by round, scene by scene, build by build
+    EXPECT_EQ(rounds[i].round, int(i / 4) + 1);
+    EXPECT_EQ(rounds[i].scene, scenes[i / 2 % 2]);
+    EXPECT_EQ(rounds[i].build, builds[i % 2]);
+    ASSERT_GT(rounds[i].constant, 0.05) << r.out;
+    // The ratio of the two frames, each printed to 0.1 ms.
+    const auto& x = rounds[i];
+    EXPECT_GE(x.ratio, (x.smart - 0.05) / (x.constant + 0.05) - 0.005) << r.out;
+    EXPECT_LE(x.ratio, (x.smart + 0.05) / (x.constant - 0.05) + 0.005) << r.out;
+  }
+  for (int s = 0; s < 2; ++s)
+    for (int b = 0; b < 2; ++b) {
+      double c = 1e9, sm = 1e9, lo = 1e9, hi = 0;
+      std::vector<double> own;
+      for (const auto& x : rounds)
+        if (x.scene == scenes[s] && x.build == builds[b]) {
+          c = std::min(c, x.constant), sm = std::min(sm, x.smart);
+          lo = std::min(lo, x.ratio), hi = std::max(hi, x.ratio);
+        }
+      char best[256];
+      std::snprintf(best, sizeof best, "  %s\t%s\tconstant %.1f ms\tsmart %.1f ms\t", scenes[s].c_str(), builds[b].c_str(), c, sm);
+      EXPECT_NE(r.out.find(best), std::string::npos) << best << "\n" << r.out;
+      const auto at = r.out.find("the rounds' own smart / constant");
+      ASSERT_NE(at, std::string::npos) << r.out;
+      const auto line = r.out.find("  " + scenes[s] + "\t" + builds[b] + "\t", at);
+      ASSERT_NE(line, std::string::npos) << r.out;
+      const std::string text = r.out.substr(line, r.out.find('\n', line) - line);
+      std::smatch m;
+      ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(\t([\d.]+) \(([\d.]+), ([\d.]+)\)$)"))) << text;
+      // (each printed to 0.01, from frames printed to 0.001 ms: a few thousandths apart at most)
+      EXPECT_NEAR(std::stod(m[2]), lo, 0.011) << text;
+      EXPECT_NEAR(std::stod(m[3]), hi, 0.011) << text;
+      EXPECT_NEAR(std::stod(m[1]), (lo + hi) / 2, 0.011) << text;  // two rounds: the median is their mean
+    }
+  expectOneLine(runCommand("bash " + kBench + "smart_ratio.sh 0"), "ROUNDS must be a whole number of at least 1", 2, "0");
+  expectOneLine(runCommand("bash " + kBench + "smart_ratio.sh 1 " + (dir / "none").string()), "none: not an executable tlab", 2,
+                "none");
+}
