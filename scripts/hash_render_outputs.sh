@@ -9,9 +9,13 @@
 #   diff before.txt after.txt
 # A render that fails prints "failed" in place of its hash (the same on both sides is no change).
 set -uo pipefail
-tlab=$(realpath "${1:-build/bin/tlab}")
+tlab=$(realpath -m "${1:-build/bin/tlab}")
+[ -x "$tlab" ] || { echo "hash_render_outputs.sh: $tlab: not an executable tlab (build it first, or give its path)" >&2; exit 2; }
 meshes=()  # absolute paths: the renders run in a temporary folder
-for mesh in ${TLAB_HASH_MESHES:-}; do meshes+=("$(realpath "$mesh")"); done
+for mesh in ${TLAB_HASH_MESHES:-}; do
+  [ -f "$mesh" ] || { echo "hash_render_outputs.sh: TLAB_HASH_MESHES: $mesh: no such file" >&2; exit 2; }
+  meshes+=("$(realpath "$mesh")")
+done
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"

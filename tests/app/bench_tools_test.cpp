@@ -8,7 +8,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -292,4 +294,45 @@ TEST(BenchTools, SmartRatioAlternatesBuildsAndPrintsEachRatioFromItsFrames) {
   expectOneLine(runCommand("bash " + kBench + "smart_ratio.sh 0"), "ROUNDS must be a whole number of at least 1", 2, "0");
   expectOneLine(runCommand("bash " + kBench + "smart_ratio.sh 1 " + (dir / "none").string()), "none: not an executable tlab", 2,
                 "none");
+}
+
+// scripts/hash_render_outputs.sh, with which every change to the renderer shows its pictures
+// byte-identical (issue #29): a hash for each picture it names, each the hash of the PNG `tlab
+// render` writes for it, none failed, the meshes given included; a bad tlab or mesh is one line.
+TEST(BenchTools, HashRenderOutputsHashesWhatTlabRendersUnderEachName) {
+  const auto dir = freshDir("hash_render_outputs");
+  const std::string mesh = (dir / "ball.gltf").string();
+  ASSERT_EQ(runCommand(kTlab + " scene export builtin:sphere -o " + mesh).exitCode, 0);
+  const std::string script = std::string(TLAB_SOURCE_DIR) + "/scripts/hash_render_outputs.sh";
+  const auto r = runCommand("TLAB_HASH_MESHES=" + mesh + " bash " + script + " " + kTlab);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  std::map<std::string, std::string> hashes;
+  std::istringstream lines(r.out);
+  const std::regex line(R"(([0-9a-f]{64})  (\S+))");
+  for (std::string l; std::getline(lines, l);) {
+    std::smatch m;
+    ASSERT_TRUE(std::regex_match(l, m, line)) << "not a hash and a name (or failed): " << l;
+    EXPECT_TRUE(hashes.emplace(m[2], m[1]).second) << "a name twice: " << l;
+  }
+  for (const std::string name : {"constant-sphere", "smart-quad-stack?n=8", "smart-pow-torus", "constant-list-cube",
+                                 "smart-512-quad-stack?n=16", "constant-list-pbr-torus", "iris-peel-window_layers=2-torus",
+                                 "constant-512-abstract", "constant-ball.gltf", "smart-ball.gltf"})
+    EXPECT_TRUE(hashes.count(name)) << name << "\n" << r.out;
+  EXPECT_GE(std::count_if(hashes.begin(), hashes.end(), [](const auto& h) { return h.first.size() > 4 && h.first.ends_with(".png"); }),
+            10)
+      << "tlab figures' PNGs";
+  // Each hash is that of the picture tlab renders for the name's scene, style and size.
+  const auto sha = [&](const std::string& args) {
+    const auto png = (dir / "direct.png").string();
+    const auto rendered = runCommand(kTlab + " " + args + " -o " + png);
+    EXPECT_EQ(rendered.exitCode, 0) << rendered.err;
+    return runCommand("sha256sum < " + png + " | cut -d' ' -f1").out.substr(0, 64);
+  };
+  EXPECT_EQ(hashes["constant-sphere"], sha("render builtin:sphere --style constant --size 160x128"));
+  EXPECT_EQ(hashes["smart-ball.gltf"], sha("render " + mesh + " --style smart --size 384x384"));
+  EXPECT_NE(hashes["constant-sphere"], hashes["smart-sphere"]);
+
+  expectOneLine(runCommand("bash " + script + " " + (dir / "none").string()), "none: not an executable tlab", 2, "tlab");
+  expectOneLine(runCommand("TLAB_HASH_MESHES=" + (dir / "none.gltf").string() + " bash " + script + " " + kTlab),
+                "TLAB_HASH_MESHES: " + (dir / "none.gltf").string() + ": no such file", 2, "mesh");
 }
