@@ -94,13 +94,26 @@ class MeshError(Exception):
     """A mesh file this script cannot read: the message names the file (and line)."""
 
 
+def read_text(path):
+    """A text file's contents; MeshError for one that is not text (a binary file given by mistake)."""
+    try:
+        with open(path) as f:
+            return f.read()
+    except UnicodeDecodeError:
+        raise MeshError(f"{path}: not a text file") from None
+
+
+def error_line(e):
+    """The one line for a MeshError or an OSError (a file that cannot be read or written)."""
+    return f"{e.filename}: {e.strerror}" if isinstance(e, OSError) and e.filename and e.strerror else str(e)
+
+
 def off_lines(path):
     """(line number, numbers) for each line of an OFF file that holds something, comments dropped."""
-    with open(path) as f:
-        for number, line in enumerate(f, 1):
-            words = line.split("#", 1)[0].split()
-            if words:
-                yield number, words
+    for number, line in enumerate(read_text(path).splitlines(), 1):
+        words = line.split("#", 1)[0].split()
+        if words:
+            yield number, words
 
 
 def read_off(path):
@@ -127,8 +140,8 @@ def read_off(path):
         counts = words[1:]
     else:
         number, counts = next_line("the vertex and face counts")
-    nv, nf = (numbers(number, counts[:2], int, "the vertex and face counts") + [0, 0])[:2]
-    if len(counts) < 2 or nv < 0 or nf < 0:
+    nv, nf = numbers(number, counts[:2], int, "the vertex and face counts") if len(counts) >= 2 else (-1, -1)
+    if nv < 0 or nf < 0:
         raise MeshError(f"{path}: line {number}: the vertex and face counts expected, found '{' '.join(counts)}'")
     positions = []
     for i in range(nv):
@@ -156,7 +169,7 @@ def read_teapot_patches(header):
     """The first object of the Schneider archive quoted in fg_teapot_data.h: Newell's teapot (a
     line "Martin Newell's teapot", then one with the counts of points and patches, the numbered
     points, and the patches' 16 point numbers each)."""
-    text = open(header).read()
+    text = read_text(header)
     start = text.find("Martin Newell's teapot")
     if start < 0:
         raise MeshError(f"{header}: no \"Martin Newell's teapot\" (freeglut's src/fg_teapot_data.h has it)")
@@ -180,11 +193,11 @@ def read_teapot_patches(header):
         parts = line(row, f"point {len(points) + 1} of {nv}").split()
         if parts:
             try:
+                if len(parts) < 4:
+                    raise ValueError
                 points[int(parts[0])] = [float(x) for x in parts[1:4]]
             except ValueError:
                 raise bad(row, "a point (number x y z)") from None
-            if len(points[int(parts[0])]) != 3:
-                raise bad(row, "a point (number x y z)")
         row += 1
     numbers = []
     while len(patches) < npatch:
@@ -301,12 +314,8 @@ def main():
             pos, tris = read_off(a.input) if a.kind == "off" else teapot(a.header, a.steps)
             pos, tris = weld(pos, tris)
             n = write_gltf(a.output, pos, tris)
-    except MeshError as e:
-        print(f"bench_meshes.py: error: {e}", file=sys.stderr)
-        return 1
-    except (OSError, UnicodeDecodeError) as e:  # a file that cannot be read or written
-        print(f"bench_meshes.py: error: {getattr(e, 'filename', None) or ''}{': ' if getattr(e, 'filename', None) else ''}"
-              f"{e.strerror if isinstance(e, OSError) and e.strerror else e}", file=sys.stderr)
+    except (MeshError, OSError) as e:
+        print(f"bench_meshes.py: error: {error_line(e)}", file=sys.stderr)
         return 1
     print(f"{a.output}: {n} triangles")
 

@@ -24,7 +24,7 @@ scenes=${SCENES:-"builtin:torus?triangles=100000 builtin:quad-stack?n=16"}
 size=${SIZE:-512x512}
 frames=${FRAMES:-3}
 echo "load average at the start: $(cut -d' ' -f1-3 /proc/loadavg)"
-declare -A best ratios
+declare -A frames_of  # per scene and build: each round's "constant,smart" frame ms
 for r in $(seq 1 "$rounds"); do
   for scene in $scenes; do
     for b in "${builds[@]}"; do
@@ -35,33 +35,32 @@ rows = {r["style"]: r for r in json.loads(sys.argv[1])["rows"]}
 c, s = rows["constant"], rows["smart"]
 passes = lambda r: ", ".join(f"{k} {v:.1f}" for k, v in r["pass_ms"].items())
 cm, sm = c["frame_ms"], s["frame_ms"]
-print(f"{cm:.3f} {sm:.3f}\t{sm / cm:.2f}\tconstant {cm:.1f} ms ({passes(c)})\tsmart {sm:.1f} ms ({passes(s)})")
+print(f"{cm!r},{sm!r}\t{sm / cm:.2f}\tconstant {cm:.1f} ms ({passes(c)})\tsmart {sm:.1f} ms ({passes(s)})")
 ' "$json")
-      times=${line%%$'\t'*}
       echo -e "round $r\t$scene\t$b\tsmart/constant ${line#*$'\t'}\tload $(cut -d' ' -f1 /proc/loadavg)"
-      key="$scene|$b"
-      ratios[$key]="${ratios[$key]:-} $(python3 -c 'import sys; c, s = map(float, sys.argv[1].split()); print(s / c)' "$times")"
-      best[$key]=$(python3 -c "
-import sys
-c, s = map(float, sys.argv[1].split()); old = sys.argv[2].split()
-if old: c, s = min(c, float(old[0])), min(s, float(old[1]))
-print(c, s)" "$times" "${best[$key]:-}")
+      frames_of["$scene|$b"]+=" ${line%%$'\t'*}"
     done
   done
 done
+# Both summaries from the rounds' frames of one scene and build (SCENE BUILD "c,s c,s ...").
+summary() {
+  python3 -c '
+import statistics, sys
+scene, build, what = sys.argv[1:4]
+frames = [tuple(map(float, pair.split(","))) for pair in sys.argv[4].split()]
+if what == "best":
+    c, s = min(f[0] for f in frames), min(f[1] for f in frames)
+    print(f"  {scene}\t{build}\tconstant {c:.1f} ms\tsmart {s:.1f} ms\t{s / c:.2f}")
+else:
+    r = [s / c for c, s in frames]
+    print(f"  {scene}\t{build}\t{statistics.median(r):.2f} ({min(r):.2f}, {max(r):.2f})")
+' "$@"
+}
 echo "best frame of each style over $rounds round(s), and smart / constant of the two:"
 for scene in $scenes; do
-  for b in "${builds[@]}"; do
-    read -r c s <<< "${best[$scene|$b]}"
-    python3 -c "import sys; c, s = float(sys.argv[3]), float(sys.argv[4]); print(f'  {sys.argv[1]}\t{sys.argv[2]}\tconstant {c:.1f} ms\tsmart {s:.1f} ms\t{s / c:.2f}')" "$scene" "$b" "$c" "$s"
-  done
+  for b in "${builds[@]}"; do summary "$scene" "$b" best "${frames_of[$scene|$b]}"; done
 done
 echo "the rounds' own smart / constant: median (lowest, highest) over $rounds round(s):"
 for scene in $scenes; do
-  for b in "${builds[@]}"; do
-    python3 -c "
-import statistics, sys
-r = [float(x) for x in sys.argv[3].split()]
-print(f'  {sys.argv[1]}\t{sys.argv[2]}\t{statistics.median(r):.2f} ({min(r):.2f}, {max(r):.2f})')" "$scene" "$b" "${ratios[$scene|$b]}"
-  done
+  for b in "${builds[@]}"; do summary "$scene" "$b" median "${frames_of[$scene|$b]}"; done
 done

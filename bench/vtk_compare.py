@@ -232,8 +232,7 @@ def main():
     try:
         run(a)
     except (bench_meshes.MeshError, OSError) as e:
-        what = f"{e.filename}: {e.strerror}" if isinstance(e, OSError) and e.filename and e.strerror else str(e)
-        print(f"vtk_compare.py: error: {what}", file=sys.stderr)
+        print(f"vtk_compare.py: error: {bench_meshes.error_line(e)}", file=sys.stderr)
         return 1
 
 

@@ -9,8 +9,9 @@ namespace tlab::render {
 namespace {
 
 // The float colour and depth targets and the pack buffer the colour is read through, kept by the
-// renderer across frames (its scene cache) and re-made when the size changes. Made afresh each frame, with a frame-sized vector to read into and
-// a flipping copy after, they cost an H200 63 ms of a 2048² frame (issue #29's GPU table).
+// renderer across frames (its scene cache) and re-made when the size changes. Made afresh each
+// frame, with a frame-sized vector to read into and a flipping copy after, they cost an H200 63 ms
+// of a 2048² frame (issue #29's GPU table).
 struct RasterTarget {
   explicit RasterTarget(const Scene&) {}
   void fit(int w, int h) {

@@ -36,6 +36,12 @@ void expectOneLine(const CommandResult& r, const std::string& part, int exitCode
   EXPECT_NE(r.err.find(part), std::string::npos) << what << "\n" << r.err;
 }
 
+// Writes `text` to dir/name; the file's path.
+std::string writeFile(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+  std::ofstream((dir / name).string()) << text;
+  return (dir / name).string();
+}
+
 nlohmann::json statsOf(const std::string& scene, const std::string& camera, const std::filesystem::path& dir) {
   const auto stats = dir / "stats.json";
   const auto r = runCommand(kTlab + " render " + tlab::testing::quoted(scene) + " --camera " + tlab::testing::quoted(camera) + " --size 32x32 -o " +
@@ -69,9 +75,8 @@ TEST(BenchTools, MeshesAreWrittenAsTheySayAndTlabReadsThem) {
   EXPECT_GT(statsOf(torus, "eye=0,2.2,2.6 target=0,0,0 up=0,1,0 fovy=40", dir)["fragments"], 0);
   // An OFF file (here COFF, with colours, comments and quads): 6 quads fanned into 12 triangles, a
   // closed convex box that every ray through it crosses twice.
-  std::ofstream((dir / "cube.off").string()) << kCube;
   const auto cube = (dir / "cube.gltf").string();
-  r = meshes("off " + (dir / "cube.off").string() + " " + cube);
+  r = meshes("off " + writeFile(dir, "cube.off", kCube) + " " + cube);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_EQ(r.out, cube + ": 12 triangles\n");
   const auto cubeStats = statsOf(cube, "eye=0.3,0.4,3 target=0,0,0 up=0,1,0 fovy=40", dir);
@@ -111,23 +116,19 @@ TEST(BenchTools, TheReadmesPublicMeshHasItsTriangles) {
 
 TEST(BenchTools, MeshesRefuseBadFilesInOneLineNamingFileAndLine) {
   const auto dir = freshDir("bench_meshes_bad");
-  const auto write = [&](const std::string& name, const std::string& text) {
-    std::ofstream((dir / name).string()) << text;
-    return (dir / name).string();
-  };
   const std::string out = (dir / "out.gltf").string();
   const struct {
     std::string args, part;
   } cases[] = {
-      {"off " + write("ply.off", "ply\nformat ascii 1.0\n") + " " + out, "ply.off: line 1: not an OFF file"},
-      {"off " + write("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n") + " " + out, "short.off: ends before vertex 3 of 3"},
-      {"off " + write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n") + " " + out,
+      {"off " + writeFile(dir, "ply.off", "ply\nformat ascii 1.0\n") + " " + out, "ply.off: line 1: not an OFF file"},
+      {"off " + writeFile(dir, "short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n") + " " + out, "short.off: ends before vertex 3 of 3"},
+      {"off " + writeFile(dir, "range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n") + " " + out,
        "range.off: line 6: vertex index 7 out of range (the file has 3 vertices)"},
-      {"off " + write("word.off", "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n") + " " + out,
+      {"off " + writeFile(dir, "word.off", "OFF\n3 1 0\n0 0 0\n1 zero 0\n0 1 0\n3 0 1 2\n") + " " + out,
        "word.off: line 4: a vertex (x y z) expected, found '1 zero 0'"},
-      {"off " + write("counts.off", "OFF\n# counts\nthree 1 0\n") + " " + out, "counts.off: line 3: the vertex and face counts"},
+      {"off " + writeFile(dir, "counts.off", "OFF\n# counts\nthree 1 0\n") + " " + out, "counts.off: line 3: the vertex and face counts"},
       {"off " + (dir / "none.off").string() + " " + out, "none.off: No such file or directory"},
-      {"teapot " + write("other.h", "/* no teapot here */\n") + " " + out, "other.h: no \"Martin Newell's teapot\""},
+      {"teapot " + writeFile(dir, "other.h", "/* no teapot here */\n") + " " + out, "other.h: no \"Martin Newell's teapot\""},
   };
   for (const auto& c : cases) expectOneLine(meshes(c.args), c.part, 1, c.args);
   EXPECT_FALSE(std::filesystem::exists(out)) << "no file is written from a bad mesh";
@@ -136,6 +137,8 @@ TEST(BenchTools, MeshesRefuseBadFilesInOneLineNamingFileAndLine) {
 
 namespace {
 
+// VTK and xvfb-run are in scripts/setup.sh's packages, so CI runs these tests; a machine set up
+// without them skips, saying what to install.
 bool haveVtk() {
   return runCommand("command -v xvfb-run && /usr/bin/python3 -c 'import vtk'").exitCode == 0;
 }
@@ -168,11 +171,11 @@ double coverageAgreement(const std::string& a, const std::string& b) {
 TEST(BenchTools, VtkCompareTimesTlabAndVtkOnAnyMeshFromTheSameView) {
   if (!haveVtk()) GTEST_SKIP() << "needs xvfb-run and Debian's python3-vtk9 (scripts/setup.sh installs both)";
   const auto dir = freshDir("vtk_compare");
-  std::ofstream((dir / "cube.off").string()) << kCube;
+  const auto cubeOff = writeFile(dir, "cube.off", kCube);
   const auto glb = (dir / "spheres.glb").string();
   ASSERT_EQ(runCommand(kTlab + " scene export builtin:nested-spheres?n=2 -o " + glb).exitCode, 0);
   const auto images = dir / "images";
-  const auto r = vtkCompare("--rounds 2 --mesh " + (dir / "cube.off").string() + " --mesh torus --triangles 2000 --mesh " +
+  const auto r = vtkCompare("--rounds 2 --mesh " + cubeOff + " --mesh torus --triangles 2000 --mesh " +
                             glb + " --images " + images.string());
   ASSERT_EQ(r.exitCode, 0) << r.out << r.err;
 
@@ -210,23 +213,19 @@ TEST(BenchTools, VtkCompareTimesTlabAndVtkOnAnyMeshFromTheSameView) {
                 .exitCode,
             0);
   EXPECT_EQ(std::to_string(nlohmann::json::parse(readText(stats.string()))["fragments"].get<long>()), rows[2][2].str());
-  EXPECT_EQ(rows[0][1].str(), (dir / "cube.off").string() + " as glTF, 12 triangles");
+  EXPECT_EQ(rows[0][1].str(), cubeOff + " as glTF, 12 triangles");
 }
 
 TEST(BenchTools, VtkCompareRefusesBadInputInOneLine) {
   if (!haveVtk()) GTEST_SKIP() << "needs xvfb-run and Debian's python3-vtk9 (scripts/setup.sh installs both)";
   const auto dir = freshDir("vtk_compare_bad");
-  const auto write = [&](const std::string& name, const std::string& text) {
-    std::ofstream((dir / name).string()) << text;
-    return (dir / name).string();
-  };
   const struct {
     std::string args, part;
     int exitCode;
   } cases[] = {
       {"--mesh " + (dir / "none.gltf").string(), "--mesh " + (dir / "none.gltf").string() + ": no such file", 2},
-      {"--mesh " + write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"), "range.off: line 6: vertex index 9", 1},
-      {"--mesh " + write("broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": ["),
+      {"--mesh " + writeFile(dir, "range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n"), "range.off: line 6: vertex index 9", 1},
+      {"--mesh " + writeFile(dir, "broken.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": ["),
        "broken.gltf: VTK's glTF reader found no triangles", 1},
       {"--modes peeling", "--modes: 'peeling' is not dual-peeling or weighted-oit", 2},
       {"--camera 'eye=0,1 target=0,0,0 up=0,1,0 fovy=40'", "--camera: eye= needs 3 numbers", 2},
