@@ -20,6 +20,9 @@ struct SceneBenchOptions {
   // --until PASS: every frame ends after that pass (RenderRequest::lastPass), so that a pass's own
   // work is the difference between two runs (bench/count_instructions.sh).
   std::string until;
+  // --parts: also time each pass's parts (the connect pass's phases, the solve's steps, the fill's
+  // rasterization and prefix sum, the compose's read-back), each between two glFinish calls.
+  bool parts = false;
 };
 
 // One row per style; the last column is each style's frame time over the first style's.

@@ -166,9 +166,12 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--until", scene->until,
                      "with --scene: end every frame after this pass (fill, sort or a style's pass; the picture is left "
                      "unfinished), to count each pass's work (bench/count_instructions.sh)");
+  render->add_flag("--parts", scene->parts,
+                   "with --scene: also time each pass's parts (the connect pass's phases, the solve's steps, the fill's "
+                   "rasterization and prefix sum, the compose's read-back), each between two glFinish calls");
   render->callback([o, scene, render] {
     if (scene->scene.empty()) {
-      for (const char* only : {"--camera", "--size", "--frames", "--set", "--until"})
+      for (const char* only : {"--camera", "--size", "--frames", "--set", "--until", "--parts"})
         if (render->count(only) > 0) throw std::invalid_argument(std::string(only) + " needs --scene");
       return runBenchRender(*o);
     }

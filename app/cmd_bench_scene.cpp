@@ -39,6 +39,14 @@ nlohmann::json rowJson(const BenchRow& r) {
   j.update({{"fragments", r.timing.fragments}, {"frame_ms", r.timing.frameMs},
             {"fps", r.timing.frameMs > 0 ? 1000.0 / r.timing.frameMs : 0.0}, {"pass_ms", passes},
             {"ratio_to_reference", r.ratio}, {"operations", r.timing.operations}});
+  if (!r.timing.parts.empty()) {
+    nlohmann::json ms = nlohmann::json::object(), counts = nlohmann::json::object();
+    for (const auto& part : r.timing.parts) {
+      ms[part.name] = part.ms;
+      counts[part.name] = part.count;
+    }
+    j.update({{"part_ms", ms}, {"part_counts", counts}});
+  }
   return j;
 }
 
@@ -56,6 +64,14 @@ void printRow(const BenchRow& r) {
   std::printf("%-38s %-9s %-16s %10llu %10.1f %8.1f %7.2f  %s\n", r.scene.c_str(), r.size.c_str(), r.style.c_str(),
               static_cast<unsigned long long>(r.timing.fragments), r.timing.frameMs,
               r.timing.frameMs > 0 ? 1000.0 / r.timing.frameMs : 0.0, r.ratio, passes.c_str());
+  if (r.timing.parts.empty()) return;
+  std::string parts;  // "name ms (times run)"
+  for (const auto& part : r.timing.parts) {
+    char b[128];
+    std::snprintf(b, sizeof b, "%s%s %.2f ms (%dx)", parts.empty() ? "" : ", ", part.name.c_str(), part.ms, part.count);
+    parts += b;
+  }
+  std::printf("  parts: %s\n", parts.c_str());
 }
 
 void printHeader(const gpu::GpuInfo& gl, int frames, const std::string& reference) {
@@ -69,7 +85,7 @@ void printHeader(const gpu::GpuInfo& gl, int frames, const std::string& referenc
 // Every style of `styles` on one scene at one size, the first style being the ratio's reference.
 std::vector<BenchRow> benchScene(const std::string& source, const std::string& camera, const std::vector<std::string>& styles,
                                  const std::vector<std::string>& settings, const std::string& size, int frames,
-                                 const std::string& until = "") {
+                                 const std::string& until = "", bool parts = false) {
   SceneOptions so;
   so.scene = source;
   so.camera = camera;
@@ -84,6 +100,7 @@ std::vector<BenchRow> benchScene(const std::string& source, const std::string& c
       so.style = style;
       render::RenderRequest request = so.request(renderer.scene());
       request.lastPass = until;
+      request.timeParts = parts;
       row.timing = bench::timeFrames(renderer, request, frames);
     } catch (const std::exception& e) {
       row.error = e.what();
@@ -173,7 +190,7 @@ void runSceneBench(const SceneBenchOptions& o) {
   for (const auto& s : o.styles) render::findStyle(s);  // unknown style: fail before any GL work
   parseSize(o.size);
   const auto context = gpu::createHeadlessContext();
-  const auto rows = benchScene(o.scene, o.camera, o.styles, o.settings, o.size, o.frames, o.until);
+  const auto rows = benchScene(o.scene, o.camera, o.styles, o.settings, o.size, o.frames, o.until, o.parts);
   if (!o.until.empty())  // a frame cut short elsewhere than asked measures nothing: say so and stop
     for (const auto& r : rows)
       if (!r.error.empty()) throw std::invalid_argument("--until: " + r.error);

@@ -16,6 +16,9 @@ struct FrameTiming {
   double frameMs = 0;                                   // median of the per-frame sums
   std::uint64_t fragments = 0;
   std::vector<std::string> operations;
+  // With RenderRequest::timeParts: each part's median ms per frame (of its frame's sum) and how many
+  // times it ran in the last frame, in the order the parts first ran.
+  std::vector<render::PassTimer::Part> parts;
 };
 
 double median(std::vector<double> v);

@@ -161,26 +161,28 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
       counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
       slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
     }
-    rasterize(slotsUsed_ > 0 ? shadingFill("buffer/fill_slots.frag", u) : *countProgram_, scene, u);
+    timer.part(slotsUsed_ > 0 ? "fill rasterization into slots" : "fill count rasterization",
+               [&] { rasterize(slotsUsed_ > 0 ? shadingFill("buffer/fill_slots.frag", u) : *countProgram_, scene, u); });
     if (slotsUsed_ > 0) {
       std::uint32_t counters[3] = {0, 0, 0};
       counters_.download(counters, sizeof(counters));
       const std::uint32_t overflowMax = counters[2];  // the largest list beyond the slots (0: none)
       if (overflowMax == 0) {
         longestListBound_ = slotsUsed_;
-        if (!sortInCompose_) ensureHeads();  // the sort pass writes each list at its head
+        // The sort pass writes each list at its head.
+        if (!sortInCompose_) timer.part("fill prefix sum", [&] { ensureHeads(); });
         return;
       }
       longestListBound_ = overflowMax;  // the longest list, past the slots
       slotsWanted_ = overflowMax;  // some list outgrew the slots: scatter this frame, more slots next
       slotsUsed_ = 0;
     }
-    ensureHeads();
+    timer.part("fill prefix sum", [&] { ensureHeads(); });
     pixelCursor_.clearToZero();
     pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
     pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
     fragsUnsorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
-    rasterize(shadingFill("buffer/fill_scatter.frag", u), scene, u);
+    timer.part("fill scatter rasterization", [&] { rasterize(shadingFill("buffer/fill_scatter.frag", u), scene, u); });
   });
 }
 

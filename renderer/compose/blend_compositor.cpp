@@ -35,7 +35,8 @@ void composeBlend(FrameContext& frame, float alpha) {
   glUniform1f(program.uniform("uAlpha"), alpha);
   gpu::dispatchLinear(rect.pixels());
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  readOutputRect(output, frame.image, rect, glm::vec4(glm::vec3(frame.background), 1.0f));
+  timePart(frame.timer, "compose read-back",
+           [&] { readOutputRect(output, frame.image, rect, glm::vec4(glm::vec3(frame.background), 1.0f)); });
   gpu::checkGl("compose/blend.comp");
 }
 

@@ -64,7 +64,7 @@ PixelRect sceneFootprint(const FrameContext& frame) {
 
 void finishCompose(FrameContext& frame, const gpu::Buffer& output, const char* shader, GLbitfield barrier) {
   glMemoryBarrier(barrier);
-  readOutputBuffer(output, frame.image);
+  timePart(frame.timer, "compose read-back", [&] { readOutputBuffer(output, frame.image); });
   gpu::checkGl(shader);
 }
 

@@ -35,6 +35,7 @@ struct FrameContext {
   GroupDrawOrder* drawOrder = nullptr;  // frame-coherent back-to-front group order (dynamic style)
   TransparencyFields* fields = nullptr;  // per-fragment fields whose memory is kept across frames (smart style)
   SceneCache* sceneCache = nullptr;      // what styles derive from the scene alone, kept across frames
+  PassTimer* timer = nullptr;            // the frame's pass timer, for passes that time their parts
 
   // The fill as the type a pass needs (a style's passes know which fill the style declared).
   template <typename T>

@@ -32,7 +32,8 @@ std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffe
 }
 
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
-                             float objectRadius, TransparencyFields& fields, NeighborSearch search, ConnectOutput output) {
+                             float objectRadius, TransparencyFields& fields, NeighborSearch search, ConnectOutput output,
+                             PassTimer* timer) {
   constexpr GLuint kConnectWork = 22;   // BIND_CONNECT_WORK of ops/field_bindings.glsl
   constexpr GLuint kConnectPairs = 25;  // BIND_CONNECT_PAIRS
   constexpr GLuint kListSteps = 27;     // BIND_LIST_STEPS of frame/fragment_layout.glsl
@@ -136,10 +137,12 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     glUniform1i(program.uniform("uPixelCounts"), kPixelCountsUnit);
     glUniform1i(program.uniform("uPixelHeads"), kPixelHeadsUnit);
     glUniform1i(program.uniform("uListSteps"), kListStepsUnit);
-    if (phase[0] == '3') gpu::dispatchLinear(items);
-    else buffer.dispatchCovered(program);  // phases 1 and 2: the pixels that hold a fragment
-    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    timePart(timer, std::string("connect phase ") + phase, [&] {
+      if (phase[0] == '3') gpu::dispatchLinear(items);
+      else buffer.dispatchCovered(program);  // phases 1 and 2: the pixels that hold a fragment
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                      GL_BUFFER_UPDATE_BARRIER_BIT);
+    });
   };
   // Phase 1 settles most pairs of adjacent pixels; phase 3 searches the pairs it listed; phase 2
   // sets the fields from the (mutual) links.

@@ -8,6 +8,7 @@
 #include "renderer/ops/transparency_fields.hpp"
 #include "renderer/buffer/fragment_buffer.hpp"
 #include "renderer/frame/frame_context.hpp"
+#include "renderer/frame/pass_timer.hpp"
 
 namespace tlab::render {
 
@@ -31,10 +32,10 @@ enum class ConnectOutput { Everything, WhatTheFrameReads };
 
 // Runs the pass into `fields`, resized for the buffer's fragments (kept memory is reused).
 // Returns how many pairs of adjacent pixels needed the full neighbour search (the rest took the
-// fast path).
+// fast path). With a timer, each phase's dispatch is a part of the running pass ("connect phase N").
 std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders, const SmartSettings& settings,
                              float objectRadius, TransparencyFields& fields, NeighborSearch search = NeighborSearch::Bounded,
-                             ConnectOutput output = ConnectOutput::Everything);
+                             ConnectOutput output = ConnectOutput::Everything, PassTimer* timer = nullptr);
 
 // Allocates the fields for the buffer's fragments and runs the pass.
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,

@@ -150,7 +150,7 @@ unsigned DiffusionSolver::takeChanges() const {
 // to its neighbours and lists those it raises. The field's two copies take turns: a step reads
 // one and raises the other. Stops as the full steps do.
 int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps,
-                                    unsigned freeBit) const {
+                                    unsigned freeBit, PassTimer* timer) const {
   const gpu::Buffer* previous = &fields.frontier(field);  // step 1: the seeds
   const gpu::Buffer* changed = &fields.frontier(Field::Alpha);
   glMemoryBarrier(GL_COMMAND_BARRIER_BIT);  // the connect pass wrote the seed list's header
@@ -198,7 +198,8 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
     changed->bindBase(GL_SHADER_STORAGE_BUFFER, kFrontierOut);
     stepProgram.use();
     if (texels) glUniform1i(stepProgram.uniform("uValues"), readCurrent ? 2 : 3);
-    TransparencyFields::dispatchOnList(stepProgram, *previous);
+    timePart(timer, field == Field::Beta ? "solve beta frontier step" : "solve gamma frontier step",
+             [&] { TransparencyFields::dispatchOnList(stepProgram, *previous); });
     raisedOutput = readCurrent;
     ++run;
     // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
@@ -217,16 +218,18 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   return run;
 }
 
-void DiffusionSolver::solve(TransparencyFields& fields) const {
+void DiffusionSolver::solve(TransparencyFields& fields, PassTimer* timer) const {
   const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
   const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
   betaRun_ = gammaRun_ = 0;
   if (fields.takeSeedsListed() && settings_.spreadByMax && fields.fragments() > 0) {
     // The connect pass listed Eq. 9's seeds: α diffuses alone (if at all), β and γ spread on
     // their frontiers — the fields of the full steps below, bit for bit.
-    for (int i = 0; settings_.diffusesAlpha() && i < settings_.iterations; ++i) step(fields, Spread{});
-    if (betaSteps > 0) betaRun_ = spreadFrontier(fields, Field::Beta, settings_.lambdaBeta, betaSteps, kFreeBeta);
-    if (gammaSteps > 0) gammaRun_ = spreadFrontier(fields, Field::Gamma, settings_.lambdaGamma, gammaSteps, kFreeGamma);
+    for (int i = 0; settings_.diffusesAlpha() && i < settings_.iterations; ++i)
+      timePart(timer, "solve alpha step", [&] { step(fields, Spread{}); });
+    if (betaSteps > 0) betaRun_ = spreadFrontier(fields, Field::Beta, settings_.lambdaBeta, betaSteps, kFreeBeta, timer);
+    if (gammaSteps > 0)
+      gammaRun_ = spreadFrontier(fields, Field::Gamma, settings_.lambdaGamma, gammaSteps, kFreeGamma, timer);
     return;
   }
   bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was
@@ -235,7 +238,7 @@ void DiffusionSolver::solve(TransparencyFields& fields) const {
   for (int i = 0; i < settings_.iterations; ++i) {
     const Spread spread{betaMoves && i < betaSteps, gammaMoves && i < gammaSteps};
     if (!settings_.diffusesAlpha() && !spread.any()) break;
-    step(fields, spread);
+    timePart(timer, "solve step", [&] { step(fields, spread); });
     betaRun_ += spread.beta ? 1 : 0;
     gammaRun_ += spread.gamma ? 1 : 0;
     // A step that changes nothing is a fixed point of Eq. 9: the next would not change it either.

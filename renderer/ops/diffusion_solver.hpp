@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "renderer/frame/pass_timer.hpp"
 #include "renderer/gpu/shader_cache.hpp"
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
@@ -22,8 +23,10 @@ class DiffusionSolver {
   // The n steps; β and γ spreading by Eq. 9 stop once they have settled (⌈1/λ⌉ steps, or a
   // step that changed nothing). Where the connect pass listed Eq. 9's seeds for these fields
   // (and nothing changed them since), β and γ spread on the frontier only
-  // (ops/spread_frontier.comp): the same fields, bit for bit, for a fraction of the work.
-  void solve(TransparencyFields& fields) const;
+  // (ops/spread_frontier.comp): the same fields, bit for bit, for a fraction of the work. With a
+  // timer, each step is a part of the running pass ("solve step", or "solve alpha step" and
+  // "solve beta|gamma frontier step").
+  void solve(TransparencyFields& fields, PassTimer* timer = nullptr) const;
   // Dispatches this solver makes per step (for the statistics and the benchmark).
   int dispatchesPerStep() const;
   // What the solve does and leaves out (for --stats-json): one line per field, with the steps
@@ -50,7 +53,8 @@ class DiffusionSolver {
   unsigned takeChanges() const;
   void spread(TransparencyFields& fields, Field field, double lambda, unsigned freeBit) const;
   // Up to `steps` Eq. 9 steps of `field` from its listed seeds; returns the steps run.
-  int spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit) const;
+  int spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit,
+                     PassTimer* timer) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;

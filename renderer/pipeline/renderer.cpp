@@ -86,9 +86,10 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
   core::Image image(request.width, request.height, scene_.background);
   PassTimer timer(request.timePasses);
   timer.stopAfter(request.lastPass);
+  timer.timeParts(request.timeParts);
   Fill* const fill = prepareFill(style, params, request, camera);
   FrameContext frame{scene_, gpuScene_, raster, camera, params, request.width, request.height,
-                     scene_.background, fill, image, shaders_, &drawOrder_, &fields_, &sceneCache_};
+                     scene_.background, fill, image, shaders_, &drawOrder_, &fields_, &sceneCache_, &timer};
   if (fill) fill->build(frame, timer);
   std::vector<std::string> operations;
   if (!fill || !fill->composesPicture())
@@ -107,6 +108,7 @@ core::Image Renderer::render(const RenderRequest& request, RenderStats* stats) {
     *stats = RenderStats{};
     stats->triangles = gpuScene_.triangleCount();
     stats->passMilliseconds = timer.passes();
+    stats->parts = timer.parts();
     stats->operations = std::move(operations);
     stats->camera = camera;
     stats->width = request.width;

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/frame/pass_timer.hpp"
 #include "core/image.hpp"
 #include "renderer/ops/group_draw_order.hpp"
 #include "renderer/ops/transparency_fields.hpp"
@@ -35,6 +36,9 @@ struct RenderRequest {
   // normal-variation, iris); fill, initialPoolFragments and allProperties do not apply.
   bool depthPeeling = false;
   bool timePasses = true;
+  // Benchmarks only: also time the passes' parts (PassTimer::part; RenderStats::parts), each between
+  // two glFinish calls.
+  bool timeParts = false;
   // Benchmarks only: the frame ends after this pass ("fill", "sort" or one of the style's passes;
   // PassTimer::stopAfter), leaving the picture unfinished. Empty: every pass.
   std::string lastPass;
@@ -53,6 +57,7 @@ struct RenderStats {
   int peelIterations = 0;              // depth peeling: layers + 1
   std::vector<std::string> fragmentProperties;
   std::vector<std::pair<std::string, double>> passMilliseconds;  // in the order they ran
+  std::vector<PassTimer::Part> parts;  // with RenderRequest::timeParts, in the order they first ran
   std::vector<std::string> operations;  // "pass: what it did or left out", where a pass says
   Camera camera;
   int width = 0, height = 0;

@@ -66,13 +66,13 @@ std::vector<std::unique_ptr<RenderPass>> SmartStyle::passes(const StyleParams& p
     if (!f.fields) frame->own = std::make_unique<TransparencyFields>();
     frame->fields = f.fields ? f.fields : frame->own.get();
     connectFragments(f.fillAs<FragmentBuffer>(), f.shaders, frame->settings, f.scene.boundingSphere().radius, *frame->fields,
-                     NeighborSearch::Bounded, ConnectOutput::WhatTheFrameReads);
+                     NeighborSearch::Bounded, ConnectOutput::WhatTheFrameReads, f.timer);
     if (!frame->solves) operations = DiffusionSolver(f.shaders, frame->settings).operations();
   }));
   if (frame->solves)
     p.push_back(std::make_unique<FunctionPass>("solve", [frame](FrameContext& f, std::vector<std::string>& operations) {
       const DiffusionSolver solver(f.shaders, frame->settings);
-      solver.solve(*frame->fields);
+      solver.solve(*frame->fields, f.timer);
       operations = solver.operations();
     }));
   p.push_back(functionPass("compose", [frame](FrameContext& f) { composeSmart(f, *frame->fields, frame->settings); }));

@@ -104,6 +104,47 @@ TEST(BenchCli, UntilEndsEachFrameAfterThePassNamed) {
   EXPECT_NE(r.err.find("--until needs --scene"), std::string::npos) << r.err;
 }
 
+// --parts times each pass's parts as well (the connect pass's phases, the solve's steps, the fill's
+// rasterization and prefix sum, the compose's read-back): by name and count under each row, and in
+// the JSON; a frame's parts lie within their passes (one frame: medians of one sample).
+TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
+  const std::string base =
+      kTlab + " bench render --scene builtin:nested-spheres?n=2 --size 48x40 --gl osmesa --style constant,smart ";
+  const auto r = runCommand(base + "--frames 1 --parts --json");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["rows"].size(), 2u);
+  for (const auto& row : j["rows"]) {
+    ASSERT_TRUE(row.contains("part_ms")) << row;
+    EXPECT_EQ(row["part_ms"].size(), row["part_counts"].size()) << row;
+    EXPECT_TRUE(row["part_ms"].contains("compose read-back")) << row;
+    for (const auto& [pass, ms] : row["pass_ms"].items()) {
+      double inside = 0;
+      for (const auto& [part, partMs] : row["part_ms"].items())
+        if (part.rfind(pass + " ", 0) == 0) inside += partMs.get<double>();
+      EXPECT_LE(inside, ms.get<double>() + 1e-9) << pass << "\n" << row;
+    }
+  }
+  const auto& smart = j["rows"][1];
+  for (const char* name : {"connect phase 1", "connect phase 2", "solve beta frontier step"})
+    EXPECT_TRUE(smart["part_ms"].contains(name)) << name << "\n" << smart;
+  EXPECT_EQ(smart["part_counts"]["connect phase 1"], 1);
+  const std::string beta = smart["operations"][1].get<std::string>();  // "solve: beta spreading (Eq. 9 max, K ..."
+  const std::string after = "solve: beta spreading (Eq. 9 max, ";
+  ASSERT_EQ(beta.rfind(after, 0), 0u) << beta;
+  EXPECT_EQ(smart["part_counts"]["solve beta frontier step"].get<int>(), std::stoi(beta.substr(after.size()))) << beta;
+
+  const auto text = runCommand(base + "--frames 2 --parts");
+  ASSERT_EQ(text.exitCode, 0) << text.err;
+  EXPECT_TRUE(std::regex_search(text.out, std::regex("\n  parts: .*connect phase 1 [0-9.]+ ms \\(1x\\), .*solve beta "
+                                                     "frontier step [0-9.]+ ms \\([0-9]+x\\)")))
+      << text.out;
+  EXPECT_EQ(runCommand(base + "--frames 1 --json").out.find("part_ms"), std::string::npos);  // only when asked for
+  const auto alone = runCommand(kTlab + " bench render --parts");
+  EXPECT_EQ(alone.exitCode, 1);
+  EXPECT_EQ(alone.err, "tlab: error: --parts needs --scene\n");
+}
+
 // `tlab bench floor`: the bytes each pass moves, by its model (bench/measure/traffic_floor.hpp),
 // on a scene whose fragments are known: 4 quads over every pixel of 32x24 give 3072 fragments of
 // 3 words (depth, triangle, colour) for `constant`.

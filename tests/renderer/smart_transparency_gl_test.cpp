@@ -266,6 +266,46 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
   EXPECT_EQ(stats.fragmentProperties.back(), "ids");
 }
 
+// RenderRequest::timeParts (tlab bench render --scene ... --parts): the passes' parts are listed
+// by name under their pass, the solve's frontier steps as many times as the solve says it ran
+// them, each part within its pass's time — and the picture is the one an untimed frame gives.
+TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
+  Renderer renderer(loadScene("builtin:nested-spheres?n=2"));
+  RenderRequest r;
+  r.width = 48;
+  r.height = 40;
+  r.style = "smart";
+  RenderStats plain, timed;
+  const auto without = renderer.render(r, &plain);
+  EXPECT_TRUE(plain.parts.empty());
+  r.timeParts = true;
+  const auto with = renderer.render(r, &timed);
+  EXPECT_TRUE(with.pixels == without.pixels);
+  std::map<std::string, int> counts;
+  for (const auto& p : timed.parts) counts[p.name] = p.count;
+  // The second frame fills straight into slots as long as the first frame's lists.
+  for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2",
+                           "solve beta frontier step", "compose read-back"})
+    EXPECT_TRUE(counts.count(name)) << name;
+  EXPECT_EQ(counts["connect phase 1"], 1);
+  const std::string beta = timed.operations.at(1);  // "solve: beta spreading (Eq. 9 max, K[ of N] steps...)"
+  const std::string after = "solve: beta spreading (Eq. 9 max, ";
+  ASSERT_EQ(beta.rfind(after, 0), 0u) << beta;
+  EXPECT_EQ(counts["solve beta frontier step"], std::stoi(beta.substr(after.size()))) << beta;
+  for (const auto& [pass, ms] : timed.passMilliseconds) {
+    double inside = 0;
+    for (const auto& p : timed.parts)
+      if (p.name.rfind(pass + " ", 0) == 0) inside += p.ms;
+    EXPECT_LE(inside, ms + 1e-9) << pass;
+  }
+  for (const auto& p : timed.parts) {
+    const std::string pass = p.name.substr(0, p.name.find(' '));
+    EXPECT_TRUE(std::any_of(timed.passMilliseconds.begin(), timed.passMilliseconds.end(),
+                            [&](const auto& q) { return q.first == pass; }))
+        << p.name;
+  }
+}
+
 TEST(SmartTransparency, HalosOffAllocatesNoGammaField) {
   SmartRig rig(occluderScene(), 16, 8, {{"halos", "off"}});
   EXPECT_FALSE(rig.fields->hasGamma());
