@@ -24,20 +24,18 @@ FrameTiming timeFrames(render::Renderer& r, const render::RenderRequest& q, int 
   std::vector<std::vector<double>> samples;
   std::vector<std::string> names;
   std::vector<double> totals;
-  std::vector<render::PassTimer::Part> parts;  // each part's last count, in first-run order
-  std::vector<std::vector<double>> partSamples;
+  std::vector<render::PassTimer::Part> parts;  // in first-run order, with the last frame's counts
+  std::vector<std::vector<double>> partSamples;  // each part's ms, a sample per frame it ran in
   for (int i = 0; i < frames; ++i) {
     r.render(q, &stats);
     for (const auto& part : stats.parts) {
-      const auto kept = std::find_if(parts.begin(), parts.end(), [&](const auto& p) { return p.name == part.name; });
-      const std::size_t k = std::size_t(kept - parts.begin());
+      auto kept = std::find_if(parts.begin(), parts.end(), [&](const auto& p) { return p.name == part.name; });
       if (kept == parts.end()) {
-        parts.push_back(part);
         partSamples.emplace_back();
-      } else {
-        kept->count = part.count;
+        kept = parts.insert(parts.end(), part);
       }
-      partSamples[k].push_back(part.ms);
+      kept->count = part.count;
+      partSamples[std::size_t(kept - parts.begin())].push_back(part.ms);
     }
     for (std::size_t p = 0; p < stats.passMilliseconds.size(); ++p) {
       if (samples.size() <= p) {
@@ -53,8 +51,8 @@ FrameTiming timeFrames(render::Renderer& r, const render::RenderRequest& q, int 
   t.operations = stats.operations;
   for (std::size_t p = 0; p < names.size(); ++p) t.passes.emplace_back(names[p], median(samples[p]));
   t.frameMs = median(totals);
-  for (std::size_t k = 0; k < parts.size(); ++k)
-    t.parts.push_back({parts[k].name, median(partSamples[k]), parts[k].count});
+  for (std::size_t k = 0; k < parts.size(); ++k) parts[k].ms = median(partSamples[k]);
+  t.parts = std::move(parts);
   return t;
 }
 
