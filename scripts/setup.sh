@@ -19,6 +19,7 @@ packages=(
   nginx  # the TLS reverse proxy of docs/nginx-tlab.conf, tested on loopback
   clang libclang-rt-14-dev time e2fsprogs
   python3-vtk9  # bench/vtk_compare.py (run by hand)
+  libcgal-demo  # its data/meshes (fandisk, the bunny): the public meshes of issue #29's table, one tested
 )
 
 missing=()

@@ -102,10 +102,10 @@ TEST(BenchTools, MeshesAreWrittenAsTheySayAndTlabReadsThem) {
   }
 }
 
-// A public mesh as the README's table names it: fandisk (CAD) from Debian's CGAL data.
+// A public mesh as the README's table names it: fandisk (CAD) from Debian's CGAL data (libcgal-demo).
 TEST(BenchTools, TheReadmesPublicMeshHasItsTriangles) {
   const std::string data = "/usr/share/doc/libcgal-dev/data.tar.gz";
-  if (!std::filesystem::exists(data)) GTEST_SKIP() << "needs libcgal-dev's " << data << " (scripts/setup.sh installs it)";
+  if (!std::filesystem::exists(data)) GTEST_SKIP() << "needs libcgal-demo's " << data << " (scripts/setup.sh installs it)";
   const auto dir = freshDir("bench_meshes_fandisk");
   ASSERT_EQ(runCommand("tar -xzf " + data + " -C " + dir.string() + " data/meshes/fandisk.off").exitCode, 0);
   const auto out = (dir / "fandisk.gltf").string();
