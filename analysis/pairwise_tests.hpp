@@ -43,7 +43,7 @@ struct PairwiseRow {
   double meanDiff = 0.0;  // mean(first) - mean(second) (paired: mean of the differences)
   double p = 0.0;         // NaN when the comparison could not be made (see error)
   double pAdjusted = 0.0;
-  std::string error;
+  std::string error{};
 };
 
 struct PairwiseResult {

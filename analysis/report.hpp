@@ -36,7 +36,7 @@ struct AnalysisPlan {
   double confidence = 0.95;
   // Dependent variables that are proportions or scores in [0, 1] (a dependent variable whose
   // values are all 0 or 1 counts as one anyway): their plots' axes end at 0 and 1.
-  std::vector<std::string> proportions;
+  std::vector<std::string> proportions{};
 };
 
 // One cell of the design (a combination of all factors' levels), over subjects (replicates of a

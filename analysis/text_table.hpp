@@ -12,7 +12,7 @@ struct TextTable {
   std::vector<std::vector<std::string>> rows;
   // Optional: where a cell links to (a URL relative to the page), in the shape of `rows`; an empty
   // or missing entry is no link. HTML and Markdown show the link; plain text shows the cell alone.
-  std::vector<std::vector<std::string>> links;
+  std::vector<std::vector<std::string>> links{};
 };
 
 // The link of cell (row, column), "" when it has none.

@@ -16,7 +16,7 @@ struct RenderSweepRow {
   std::size_t triangles = 0;
   std::string fill;
   std::uint64_t fragments = 0;
-  std::vector<std::pair<std::string, double>> passes;  // medians
+  std::vector<std::pair<std::string, double>> passes{};  // medians
   double listMs = 0, floorMs = 0;
 };
 

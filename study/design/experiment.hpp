@@ -83,7 +83,7 @@ struct FormField {
   int points = 7;                    // Likert: 1..points
   std::string lowAnchor = "strongly disagree";
   std::string highAnchor = "strongly agree";
-  std::vector<std::string> options;  // Choice
+  std::vector<std::string> options{};  // Choice
   double minimum = 0.0;              // Number
   double maximum = 1e9;
   bool integer = false;              // Number: whole numbers only

@@ -25,7 +25,7 @@ struct StimulusKey {
   std::vector<std::string> renderSettings;
   int width = 512;
   int height = 512;
-  std::string images;  // a PNG from another renderer shown instead of tlab's picture (Level::images), or empty
+  std::string images{};  // a PNG from another renderer shown instead of tlab's picture (Level::images), or empty
   std::string text() const;      // a stable one-line description (cache key)
   std::string viewText() const;  // the same without style and render settings: what the geometry depends on
 };

@@ -23,7 +23,7 @@ struct TrialView {
   int total = 1;
   // Called once when the stimulus is first on screen (monotonic ns, detail JSON): the runner
   // commits the onset at once, so the log knows every stimulus a participant saw.
-  std::function<void(std::int64_t, const std::string&)> onset;
+  std::function<void(std::int64_t, const std::string&)> onset{};
 };
 
 // After a training answer: whether it was right and the right answer in words.
@@ -40,7 +40,7 @@ struct DisplayInfo {
   int windowWidth = 0, windowHeight = 0, framebufferWidth = 0, framebufferHeight = 0;
   int refreshHz = 0;     // the monitor's, as GLFW reports it (0: unknown)
   int swapInterval = 1;
-  std::string browserJson;  // browser sessions: screen, window, device pixel ratio, refresh estimate, pixels per cm
+  std::string browserJson{};  // browser sessions: screen, window, device pixel ratio, refresh estimate, pixels per cm
   std::string json() const;
 };
 

@@ -184,7 +184,7 @@ TEST(Readme, CommandsShownAreTheCommandsRun) {
   for (const auto& c : shown) EXPECT_TRUE(mappings().count(c)) << "a README command no test runs: add it to mappings(): " << c;
   for (const auto& [written, m] : mappings()) {
     EXPECT_TRUE(shown.count(written)) << "the README no longer shows this command: " << written;
-    if (m.run.rfind("=", 0) == 0) EXPECT_TRUE(mappings().count(m.run.substr(1))) << written << " refers to " << m.run;
+    if (m.run.rfind("=", 0) == 0) { EXPECT_TRUE(mappings().count(m.run.substr(1))) << written << " refers to " << m.run; }
   }
 }
 

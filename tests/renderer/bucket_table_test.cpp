@@ -121,7 +121,7 @@ TEST(BucketNeighbors, BucketQueryEqualsBruteForceOnRandomQuadStacks) {
       const auto a = neighborOf(pixels[0], i, pixels[1], NeighborSearch::Buckets);
       const auto b = neighborOf(pixels[0], i, pixels[1], NeighborSearch::BruteForce);
       EXPECT_EQ(a, b) << "trial " << trial << " fragment " << i;
-      if (a) EXPECT_EQ(shapeOfShapeFirst(pixels[1].fragments[*a].key), shapeOfShapeFirst(pixels[0].fragments[i].key));
+      if (a) { EXPECT_EQ(shapeOfShapeFirst(pixels[1].fragments[*a].key), shapeOfShapeFirst(pixels[0].fragments[i].key)); }
     }
   }
 }

@@ -498,7 +498,7 @@ TEST(IllustrationBuffer, TheColorPlaneHoldsEachSortedRecordsColour) {
           EXPECT_EQ(mismatches, 0u);
           EXPECT_GT(colours.size(), 1u);  // the scenes' layers have colours of their own
         }
-        if (method == FillMethod::CountScatter) EXPECT_GT(*slotsSeen.rbegin(), 0u) << "the second frame fills slots";
+        if (method == FillMethod::CountScatter) { EXPECT_GT(*slotsSeen.rbegin(), 0u) << "the second frame fills slots"; }
       }
   }
 }

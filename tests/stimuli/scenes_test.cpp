@@ -30,7 +30,7 @@ TEST(AbstractWorld, HasTwoHundredObjectsTenToTwentyPercentRedTargetsAndNoEnclosu
       const bool target = render::hasRole(o.roles, render::Role::Target);
       targets += target ? 1 : 0;
       EXPECT_EQ(target, isRed(o.frontColor)) << o.name;  // targets are exactly the red objects
-      if (!target) EXPECT_TRUE(o.frontColor.g > 0.6f || o.frontColor.b > 0.8f) << o.name << " is neither green nor blue";
+      if (!target) { EXPECT_TRUE(o.frontColor.g > 0.6f || o.frontColor.b > 0.8f) << o.name << " is neither green nor blue"; }
       kinds.insert(tasks::objectKind(o.name));
       for (const auto& p : o.mesh.positions) {
         EXPECT_GE(std::min({p.x, p.y, p.z}), 0.0f);
@@ -43,7 +43,7 @@ TEST(AbstractWorld, HasTwoHundredObjectsTenToTwentyPercentRedTargetsAndNoEnclosu
     // No object encloses another: some vertex of each lies outside the other's bounding sphere.
     for (std::size_t i = 0; i < scene.objects.size(); ++i)
       for (std::size_t j = 0; j < scene.objects.size(); ++j)
-        if (i != j) ASSERT_FALSE(insideBoundingSphere(scene.objects[i].mesh, scene.objects[j].mesh)) << i << " in " << j;
+        if (i != j) { ASSERT_FALSE(insideBoundingSphere(scene.objects[i].mesh, scene.objects[j].mesh)) << i << " in " << j; }
   }
 }
 
@@ -150,7 +150,7 @@ TEST(WalkthroughScene, HasFiftyObjectsOneUniqueTargetAndACountedKind) {
   EXPECT_GE(kinds["chair"], 6);
   EXPECT_LE(kinds["chair"], 10);
   for (const auto& [kind, n] : kinds)
-    if (kind != "trophy") EXPECT_GE(n, 2) << kind;
+    if (kind != "trophy") { EXPECT_GE(n, 2) << kind; }
   EXPECT_EQ(kinds.size(), walkthroughObjectKinds().size());
   EXPECT_EQ(tasks::selectTargets(scene, "").size(), 1u);
   EXPECT_EQ(int(tasks::selectTargets(scene, "chair").size()), kinds["chair"]);

@@ -49,7 +49,7 @@ TEST(OwnTechniqueReadme, TheStyleFileCommandsWorkAsWritten) {
   for (const auto& c : commands) {
     const auto r = runAsWritten(c, dir);
     ASSERT_EQ(r.exitCode, 0) << c << ": " << r.err;
-    if (c.find("--help") != std::string::npos) EXPECT_NE(r.out.find("alpha_far=0.6  [0, 1]"), std::string::npos) << r.out;
+    if (c.find("--help") != std::string::npos) { EXPECT_NE(r.out.find("alpha_far=0.6  [0, 1]"), std::string::npos) << r.out; }
   }
   EXPECT_TRUE(fs::exists(dir / "mine.png"));
   EXPECT_TRUE(fs::exists(dir / "own.db"));
@@ -62,6 +62,6 @@ TEST(OwnTechniqueReadme, TheExternalImageCommandsWorkAsWritten) {
   for (const auto& c : commands) {
     const auto r = runAsWritten(c, dir);
     ASSERT_EQ(r.exitCode, 0) << c << ": " << r.out << r.err << " (scripts/setup.sh installs python3-vtk9 and xvfb)";
-    if (c.find("tlab design") == 0) EXPECT_NE(r.out.find("renders/torus.png: aligned with builtin:torus (IoU"), std::string::npos) << r.out;
+    if (c.find("tlab design") == 0) { EXPECT_NE(r.out.find("renders/torus.png: aligned with builtin:torus (IoU"), std::string::npos) << r.out; }
   }
 }

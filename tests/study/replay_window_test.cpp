@@ -141,7 +141,7 @@ TEST(ReplayWindow, OrbitTrialReplaysIdenticallyAsFramesVideoAndPageAndATamperedH
   bool lens = false;
   for (std::size_t i = 0; i < logged.size(); ++i) {
     EXPECT_EQ(logged[i].index, int(i)) << "every picture rendered is shown and logged";
-    if (i > 0) EXPECT_GE(logged[i].shownNs, logged[i - 1].shownNs);
+    if (i > 0) { EXPECT_GE(logged[i].shownNs, logged[i - 1].shownNs); }
     hashes.insert(logged[i].sha256);
     lens = lens || logged[i].lens.has_value();
   }

@@ -107,9 +107,9 @@ void expectSessionRecords(const std::string& db) {
     const int bandTop = band[1].get<int>(), canvasHeight = detail["canvas"][1].get<int>();
     EXPECT_EQ(bandTop + band[3].get<int>(), canvasHeight);
     EXPECT_LE(detail["stimulus"][1].get<int>() + detail["stimulus"][3].get<int>(), bandTop);
-    if (detail.contains("plan")) EXPECT_LE(detail["plan"][1].get<int>() + detail["plan"][3].get<int>(), bandTop);
+    if (detail.contains("plan")) { EXPECT_LE(detail["plan"][1].get<int>() + detail["plan"][3].get<int>(), bandTop); }
     if (detail.contains("buttons"))
-      for (const auto& [label, centre] : detail["buttons"].items()) EXPECT_GT(centre[1].get<double>(), bandTop) << label;
+      for (const auto& [label, centre] : detail["buttons"].items()) { EXPECT_GT(centre[1].get<double>(), bandTop) << label; }
     ++onsetCount;
   }
   EXPECT_EQ(onsetCount, 3);
