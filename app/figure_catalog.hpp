@@ -15,7 +15,7 @@ struct FigureSpec {
   std::string scene;
   std::string style;
   std::vector<std::string> settings;  // key=value, as --set
-  std::string camera{};                 // --camera, empty: the scene's own
+  std::string camera{};               // --camera, empty: the scene's own
   std::string renderer = "buffer";    // buffer | peel
 };
 

@@ -157,13 +157,15 @@ void FragmentBuffer::fillCountScatter(const GpuScene& scene, const RasterUniform
     counters_.clearToZero();
     slotsUsed_ = slotsForThisFrame();
     pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
-    if (slotsUsed_ > 0) {
+    const bool intoSlots = slotsUsed_ > 0;
+    if (intoSlots) {
       counters_.bindBase(GL_SHADER_STORAGE_BUFFER, kCounters);
       slots_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
     }
-    timer.part(slotsUsed_ > 0 ? "fill rasterization into slots" : "fill count rasterization",
-               [&] { rasterize(slotsUsed_ > 0 ? shadingFill("buffer/fill_slots.frag", u) : *countProgram_, scene, u); });
-    if (slotsUsed_ > 0) {
+    const auto& program = intoSlots ? shadingFill("buffer/fill_slots.frag", u) : *countProgram_;
+    timer.part(intoSlots ? "fill rasterization into slots" : "fill count rasterization",
+               [&] { rasterize(program, scene, u); });
+    if (intoSlots) {
       std::uint32_t counters[3] = {0, 0, 0};
       counters_.download(counters, sizeof(counters));
       const std::uint32_t overflowMax = counters[2];  // the largest list beyond the slots (0: none)

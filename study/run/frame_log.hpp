@@ -25,7 +25,7 @@ struct LiveFrame {
   std::string input;               // what moved the view: "start", "drag DX,DY", "key FORWARD,TURN", "point X,Y", ...
   std::int64_t shownNs = 0;        // monotonic clock when the frame was shown (window: after the swap)
   std::string sha256;              // framePixelsSha256 of the rendered frame
-  std::string encoding{};            // how it was sent: "png" (lossless), "jpeg quality=Q" (lossy); "" shown as rendered (the window)
+  std::string encoding{};          // how it was sent: "png" (lossless), "jpeg quality=Q" (lossy); "" shown as rendered (the window)
 };
 
 // One part of LiveFrame::input: "drag 15,5", "key 1,0", "point 0.453125,0.21875" — `what` and two
