@@ -7,6 +7,7 @@
 
 #include "analysis/text_table.hpp"
 #include "app/analysis_text.hpp"
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "renderer/gpu/gpu_context.hpp"
@@ -31,7 +32,7 @@ void run(const DemoOptions& o) {
   d.outDirectory = o.out;
   d.participants = o.participants;
   d.stimulusSize = o.size;
-  d.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  d.tlabVersion = versionString();
   d.log = [](const std::string& line) {
     std::printf("demo: %s\n", line.c_str());
     std::fflush(stdout);

@@ -9,6 +9,7 @@
 
 #include <unistd.h>
 
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/scene_options.hpp"
 #include "core/image.hpp"
@@ -52,7 +53,7 @@ void run(const ReplayOptions& o) {
   const auto store = study::openStore(o.db, study::OpenMode::Read);
   const study::LoggedTrial trial = study::loadLoggedTrial(*store, o.experiment, o.participant, o.trial);
   const auto context = gpu::createHeadlessContext();
-  const study::ReplayRenderer self{context->info().renderer, TLAB_VERSION "+" TLAB_GIT_REVISION};
+  const study::ReplayRenderer self{context->info().renderer, versionString()};
   std::printf("replay of %s (task %s, %s, %s %dx%d): %zu frames logged\n", study::trialName(trial).c_str(), trial.plan.taskId.c_str(),
               study::navigationName(trial.plan.navigation), trial.plan.stimulus.style.c_str(), trial.plan.stimulus.width,
               trial.plan.stimulus.height, trial.frames.size());

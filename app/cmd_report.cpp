@@ -16,6 +16,7 @@
 #include "analysis/report.hpp"
 #include "analysis/report_html.hpp"
 #include "analysis/report_markdown.hpp"
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "study/analyze/study_analysis.hpp"
 #include "app/scene_options.hpp"
@@ -104,7 +105,7 @@ study::ReplayLinks writeReplays(study::Store& store, const study::StoredExperime
   const std::string folderName = report.stem().string() + "-replays";
   const std::filesystem::path folder = report.parent_path() / folderName;
   const auto context = gpu::createHeadlessContext();
-  const study::ReplayRenderer self{context->info().renderer, TLAB_VERSION "+" TLAB_GIT_REVISION};
+  const study::ReplayRenderer self{context->info().renderer, versionString()};
   study::ReplayLinks links;
   std::size_t frames = 0, identical = 0;
   for (const auto& t : trials) {

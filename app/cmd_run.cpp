@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <memory>
 
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
@@ -37,7 +38,7 @@ void run(const RunCommandOptions& o) {
   const auto [width, height] = parseSize(o.size);
   const auto storeOwner = study::openStore(o.db);
   study::Store& store = *storeOwner;
-  const study::RunOptions run{o.participant, o.resume, TLAB_VERSION "+" TLAB_GIT_REVISION};
+  const study::RunOptions run{o.participant, o.resume, versionString()};
   study::checkParticipant(store, e, run);  // refuse before opening a window
   // The title bar is seen by the participant: the participant title, never the experiment's id or title.
   auto window = study::openParticipantWindow(width, height, "tlab run - " + (e.participantTitle.empty() ? std::string("study") : e.participantTitle));

@@ -8,6 +8,7 @@
 #include <memory>
 #include <thread>
 
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
@@ -86,7 +87,7 @@ void serve(const ServeCommandOptions& o) {
   options.port = port;
   options.threads = o.threads;
   options.connectionsPerAddress = std::size_t(o.perAddress);
-  study::StudyServer server(study::ServedStudy{e, store, worker, TLAB_VERSION "+" TLAB_GIT_REVISION}, options, study::newToken());
+  study::StudyServer server(study::ServedStudy{e, store, worker, versionString()}, options, study::newToken());
   const int bound = server.bind();
   const std::string base = "http://" + host + ":" + std::to_string(bound);
   const std::string& id = e.online.participantParameter;

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "analysis/text_table.hpp"
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
@@ -54,7 +55,7 @@ void runPower(const study::Experiment& e, const SimulateOptions& o, study::Stimu
   p.participants = participants;
   p.workDirectory = (std::filesystem::path(o.db).parent_path() / (std::filesystem::path(o.db).stem().string() + "-replicates")).string();
   std::filesystem::create_directories(p.workDirectory);
-  p.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  p.tlabVersion = versionString();
   p.progress = [&](int r, double seconds) {
     std::printf("replicate %d/%d: %d participants simulated in %.2f s\n", r, o.replicates, participants, seconds);
     std::fflush(stdout);
@@ -144,7 +145,7 @@ void run(const SimulateOptions& o) {
   s.resume = o.resume;
   s.paceSeconds = o.pace;
   s.observerSeed = e.seed;
-  s.tlabVersion = TLAB_VERSION "+" TLAB_GIT_REVISION;
+  s.tlabVersion = versionString();
   const gpu::GpuInfo gl = context->info();
   s.renderer = study::DisplayInfo{gl.backend, gl.vendor, gl.renderer, gl.version, 0, 0, 0, 0, 0, 0};
   s.log = [](const std::string& line) {

@@ -127,6 +127,7 @@ const std::map<std::string, Mapping>& mappings() {
       {"tlab simulate --first K", {"study", "tlab simulate study.toml --participants 2 --first 37 --db sim.db"}},
       {"tlab drop study.db --participant P03 --reason \"left early\"", {"study", "tlab drop sim.db --participant sim-003 --reason \"left early\""}},
       {"tlab export study.db --csv out/csv", {"study", "tlab export sim.db --csv out/csv"}},
+      {"tlab version", {"study", ""}},
   };
   return m;
 }
