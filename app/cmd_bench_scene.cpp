@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/bench_scene.hpp"
+#include "app/build_revision.hpp"
 #include "bench/measure/frame_timing.hpp"
 #include "app/gl_option.hpp"
 #include "app/scene_options.hpp"
@@ -117,7 +118,9 @@ void report(const std::vector<BenchRow>& rows, const gpu::GpuInfo& gl, int frame
   if (json) {
     nlohmann::json list = nlohmann::json::array();
     for (const auto& r : rows) list.push_back(rowJson(r));
-    std::cout << nlohmann::json{{"gl", gpuInfoToJson(gl)}, {"frames", frames}, {"reference_style", reference}, {"rows", list}}.dump(2)
+    std::cout << nlohmann::json{{"gl", gpuInfoToJson(gl)}, {"tlab_version", versionString()}, {"frames", frames},
+                                {"reference_style", reference}, {"rows", list}}
+                     .dump(2)
               << "\n";
     return;
   }
@@ -178,7 +181,8 @@ void runBenchAll(const BenchAllOptions& o) {
   }
   nlohmann::json list = nlohmann::json::array();
   for (const auto& r : rows) list.push_back(rowJson(r));
-  std::cout << nlohmann::json{{"gl", gpuInfoToJson(gl)}, {"frames", o.frames}, {"reference_style", "constant"}, {"rows", list},
+  std::cout << nlohmann::json{{"gl", gpuInfoToJson(gl)}, {"tlab_version", versionString()}, {"frames", o.frames},
+                              {"reference_style", "constant"}, {"rows", list},
                               {"comparisons", runComparisons(o.comparisons, true)}}.dump(2)
             << "\n";
 }

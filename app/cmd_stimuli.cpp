@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/build_revision.hpp"
 #include "app/commands.hpp"
 #include "app/style_file_check.hpp"
 #include "app/scene_options.hpp"
@@ -98,7 +99,7 @@ void runStimuli(const StimuliOptions& o) {
   compileStyleFiles(styles);  // a broken style file: one line, before any picture
   const TaskProbeSource probes;
   const stimuli::StimulusSetRenderer renderer(sceneCatalog(), probes);
-  const auto result = renderer.render(spec, {o.out, o.jobs, !o.quiet});
+  const auto result = renderer.render(spec, {o.out, o.jobs, !o.quiet, versionString()});
   std::cout << "tlab stimuli: " << result.stimuli.size() << " images of '" << spec.name << "' in " << o.out << "; " << result.manifestPath
             << (result.bookletPath.empty() ? std::string() : ", " + result.bookletPath) << "\n";
 }

@@ -1,5 +1,6 @@
 #include "app/stats_json.hpp"
 
+#include "app/build_revision.hpp"
 #include "app/gl_option.hpp"
 
 namespace tlab::app {
@@ -30,7 +31,8 @@ nlohmann::json statsToJson(const render::RenderStats& s, const gpu::GpuInfo& gpu
           {"passes_run", order},
           {"operations", s.operations},
           {"camera", cameraToJson(s.camera, s.width, s.height)},
-          {"gpu", gpuInfoToJson(gpu)}};
+          {"gpu", gpuInfoToJson(gpu)},
+          {"tlab_version", versionString()}};
 }
 
 }  // namespace tlab::app

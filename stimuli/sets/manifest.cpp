@@ -39,7 +39,7 @@ nlohmann::json cameraJson(const render::Camera& c) {
 nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vector<render::Scene>& scenes,
                                    const std::vector<RenderedStimulus>& stimuli,
                                    const std::vector<std::pair<std::size_t, std::string>>& floorPlans,
-                                   const gpu::GpuInfo& gpu) {
+                                   const gpu::GpuInfo& gpu, const std::string& tlabVersion) {
   nlohmann::json styles = nlohmann::json::array();
   for (std::size_t i = 0; i < spec.styles.size(); ++i) {
     styles.push_back({{"index", i + 1}, {"name", spec.styles[i].name}, {"settings", spec.styles[i].settings}});
@@ -81,6 +81,7 @@ nlohmann::json stimulusSetManifest(const StimulusSetSpec& spec, const std::vecto
     list.push_back(item);
   }
   return {{"generator", "tlab stimuli"},
+          {"tlab_version", tlabVersion},
           {"set", {{"name", spec.name},
                    {"file", std::filesystem::path(spec.file).filename().string()},
                    {"size", {spec.width, spec.height}},

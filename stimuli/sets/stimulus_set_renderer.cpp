@@ -305,7 +305,7 @@ StimulusSetResult StimulusSetRenderer::render(const StimulusSetSpec& spec, const
   result.stimuli = job.results();
   const auto plans = writeFloorPlans(spec, out);
   result.gpu = job.gpu();
-  result.manifest = stimulusSetManifest(spec, scenes, result.stimuli, plans, result.gpu);
+  result.manifest = stimulusSetManifest(spec, scenes, result.stimuli, plans, result.gpu, options.tlabVersion);
   result.manifestPath = (out / "manifest.json").string();
   const std::string text = result.manifest.dump(2) + "\n";
   core::writeFileAtomically(result.manifestPath, std::vector<std::uint8_t>(text.begin(), text.end()));

@@ -20,6 +20,7 @@ struct StimulusSetOptions {
   std::string outputDir;
   int jobs = 1;
   bool progress = true;   // a progress bar on stderr when it is a terminal
+  std::string tlabVersion = "unknown";  // the version and git revision that render it (the manifest's tlab_version)
 };
 
 // An image from another renderer as it entered the set: its path relative to the set file, the

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.hpp"
+#include "tests/support/tlab_version.hpp"
 
 using namespace tlab::testing;
 
@@ -26,6 +27,8 @@ TEST(BenchCli, OneSceneInSeveralStylesWithTheGlAndWhatRan) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j["gl"]["backend"], "osmesa");
   EXPECT_NE(j["gl"]["renderer"].get<std::string>(), "");
+  ASSERT_NE(tlabVersionString(), "");
+  EXPECT_EQ(j["tlab_version"], tlabVersionString());  // which build measured it
   ASSERT_EQ(j["rows"].size(), 2u);
   const auto& constant = j["rows"][0];
   const auto& smart = j["rows"][1];

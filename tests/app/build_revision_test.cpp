@@ -11,6 +11,7 @@
 #include <string>
 
 #include "tests/support/run_command.hpp"
+#include "tests/support/tlab_version.hpp"
 
 namespace tlab::testing {
 namespace {
@@ -92,11 +93,9 @@ TEST(BuildRevision, IsUnknownOutsideAGitCheckoutOfItsOwn) {
 }
 
 TEST(BuildRevision, TlabPrintsAndLogsTheRevisionOfItsSourceTree) {
-  const auto version = runCommand(std::string(TLAB_EXE) + " version");
-  ASSERT_EQ(version.exitCode, 0) << version.err;
-  std::smatch m;
-  ASSERT_TRUE(std::regex_match(version.out, m, std::regex("tlab ([0-9.]+) \\(([0-9a-f]+(-dirty)?|unknown)\\)\n"))) << version.out;
-  const std::string revision = m[2].str();
+  const std::string version = tlabVersionString();
+  ASSERT_NE(version, "") << runCommand(std::string(TLAB_EXE) + " version").out;
+  const std::string revision = version.substr(version.find('+') + 1);
   const auto top = runCommand("git -C " + quoted(TLAB_SOURCE_DIR) + " rev-parse --show-toplevel");
   if (top.exitCode == 0 && fs::equivalent(top.out.substr(0, top.out.find('\n')), TLAB_SOURCE_DIR))
     EXPECT_EQ(revision.substr(0, revision.find('-')), shortHead(TLAB_SOURCE_DIR)) << "rebuild after a commit";
@@ -112,7 +111,7 @@ TEST(BuildRevision, TlabPrintsAndLogsTheRevisionOfItsSourceTree) {
   const auto simulated = runCommand(std::string(TLAB_EXE) + " simulate " + (dir / "e.toml").string() + " --participants 1 --db " + db);
   ASSERT_EQ(simulated.exitCode, 0) << simulated.err;
   ASSERT_EQ(runCommand(std::string(TLAB_EXE) + " export " + db + " --csv " + csv).exitCode, 0);
-  const std::string logged = "\"\"tlab_version\"\":\"\"" + m[1].str() + "+" + revision + "\"\"";
+  const std::string logged = "\"\"tlab_version\"\":\"\"" + version + "\"\"";
   EXPECT_NE(readText(csv + "/sessions.csv").find(logged), std::string::npos) << readText(csv + "/sessions.csv");
   fs::remove_all(dir);
 }

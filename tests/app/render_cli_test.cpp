@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/support/run_command.hpp"
+#include "tests/support/tlab_version.hpp"
 
 using namespace tlab::testing;
 namespace fs = std::filesystem;
@@ -46,6 +47,8 @@ TEST(RenderCli, WritesAPngOfTheRequestedSizeAndStats) {
   EXPECT_EQ(j["camera"]["width"], 120);
   EXPECT_TRUE(j["pass_ms"].contains("fill"));
   EXPECT_EQ(j["passes_run"], nlohmann::json::array({"fill", "compose"}));  // constant's compose pass sorts (issue #29)
+  ASSERT_NE(tlabVersionString(), "");
+  EXPECT_EQ(j["tlab_version"], tlabVersionString());
   EXPECT_EQ(readText(pgm).rfind("P5\n120 90\n65535\n", 0), 0u);
 }
 
