@@ -73,6 +73,8 @@ int main(int argc, char** argv) {
     return app.exit(e);
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e);
+  } catch (const CLI::CallForVersion& e) {
+    return app.exit(e);
   } catch (const CLI::ParseError& e) {
     const std::string unknown = dynamic_cast<const CLI::RequiredError*>(&e) ? unknownSubcommand(app) : "";
     std::cerr << "tlab: error: " << (unknown.empty() ? std::string(e.what()) : unknown) << " (see --help)\n";

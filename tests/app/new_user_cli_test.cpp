@@ -243,6 +243,18 @@ TEST(NewUser, AnUnknownCommandIsNamedWithTheKnownOnes) {
   EXPECT_NE(none.err.find("'tlab stats' needs a command (known: ttest"), std::string::npos) << none.err;
 }
 
+// `tlab --version`, as most command-line tools take it: the line `tlab version` prints, exit 0
+// (before, "'tlab' needs a command" and exit 1).
+TEST(NewUser, VersionFlagPrintsWhatTheVersionCommandPrints) {
+  const CommandResult flag = tlab("--version");
+  const CommandResult command = tlab("version");
+  EXPECT_EQ(flag.exitCode, 0) << flag.err;
+  EXPECT_EQ(command.exitCode, 0) << command.err;
+  EXPECT_EQ(flag.out.rfind("tlab 0.", 0), 0u) << flag.out;
+  EXPECT_EQ(flag.out, command.out);
+  EXPECT_EQ(flag.err, "");
+}
+
 TEST(NewUser, AnUnterminatedStringNamesTheLineItStarts) {
   const fs::path dir = freshDir("toml_string");
   const fs::path one = write(dir, "one.toml", "id = \"x\"\nwelcome = \"Hello\nseed = 3\n");

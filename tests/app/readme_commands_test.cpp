@@ -128,6 +128,7 @@ const std::map<std::string, Mapping>& mappings() {
       {"tlab drop study.db --participant P03 --reason \"left early\"", {"study", "tlab drop sim.db --participant sim-003 --reason \"left early\""}},
       {"tlab export study.db --csv out/csv", {"study", "tlab export sim.db --csv out/csv"}},
       {"tlab version", {"study", ""}},
+      {"tlab --version", {"study", ""}},
   };
   return m;
 }
