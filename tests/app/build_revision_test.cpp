@@ -55,7 +55,7 @@ TEST(BuildRevision, NamesTheCommitAndMarksATreeWhoseTrackedFilesDifferFromIt) {
   const fs::path repo = repoWithOneCommit("revision_commit");
   const fs::path out = repo.parent_path() / "build_revision.cpp";
   const std::string first = shortHead(repo);
-  ASSERT_EQ(first.size(), 7u) << first;
+  ASSERT_FALSE(first.empty());
   EXPECT_EQ(revisionOf(repo, out), first);
 
   // A file git does not track (a study database, a build folder) leaves the tree clean, and an
