@@ -12,6 +12,7 @@
 #include "core/image.hpp"
 #include "core/sha256.hpp"
 #include "tests/support/run_command.hpp"
+#include "tests/support/tlab_version.hpp"
 
 using namespace tlab::testing;
 namespace fs = std::filesystem;
@@ -67,6 +68,8 @@ TEST(FiguresCli, EveryFigureMatchesItsHashAndItsCaptionedCommand) {
         << command;
   }
   EXPECT_NE(captions.find("Carnecky et al. 2013 (seed 000), Fig. 9 (a)"), std::string::npos);
+  ASSERT_NE(tlabVersionString(), "");
+  EXPECT_NE(captions.find("Drawn by tlab " + tlabVersionString() + " on "), std::string::npos) << captions.substr(0, 400);
 }
 
 TEST(FiguresCli, AnUnknownSelectionIsAOneLineError) {
