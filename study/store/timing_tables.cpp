@@ -37,6 +37,13 @@ std::string displayText(const std::string& json) {
          ", swap interval " + std::to_string(d.value("swap_interval", 0));
 }
 
+// The tlab (version+revision) that ran the session, from its display; "?" for sessions stored before
+// it was recorded.
+std::string tlabText(const std::string& json) {
+  const auto d = nlohmann::json::parse(json.empty() ? "{}" : json, nullptr, false);
+  return d.is_object() ? d.value("tlab_version", std::string("?")) : std::string("?");
+}
+
 }  // namespace
 
 analysis::TextTable sessionTimingTable(Store& store, const StoredExperiment& stored) {
@@ -56,7 +63,7 @@ analysis::TextTable sessionTimingTable(Store& store, const StoredExperiment& sto
   }
   analysis::TextTable out;
   out.caption = "Timing per session (onset-to-swap: stimulus frame requested to buffer swap; onset frame: its swap-to-swap interval)";
-  out.header = {"session", "participant", "mode", "display", "timed trials", "onset-to-swap ms mean/max", "onset frame ms mean/max",
+  out.header = {"session", "participant", "mode", "tlab", "display", "timed trials", "onset-to-swap ms mean/max", "onset frame ms mean/max",
                 "late frames"};
   const std::size_t id = column(sessions, "session"), who = column(sessions, "participant"), mode = column(sessions, "mode"),
                     display = column(sessions, "display");
@@ -66,8 +73,8 @@ analysis::TextTable sessionTimingTable(Store& store, const StoredExperiment& sto
     const auto pair = [&](double sum, double max) {
       return t.trials ? analysis::formatNumber(sum / t.trials, 3) + " / " + analysis::formatNumber(max, 3) : std::string("-");
     };
-    out.rows.push_back({row[id], row[who], row[mode], displayText(row[display]), std::to_string(t.trials), pair(t.swapSum, t.swapMax),
-                        pair(t.frameSum, t.frameMax), t.trials ? std::to_string(t.late) : "-"});
+    out.rows.push_back({row[id], row[who], row[mode], tlabText(row[display]), displayText(row[display]), std::to_string(t.trials),
+                        pair(t.swapSum, t.swapMax), pair(t.frameSum, t.frameMax), t.trials ? std::to_string(t.late) : "-"});
   }
   return out;
 }

@@ -113,6 +113,10 @@ TEST(BuildRevision, TlabPrintsAndLogsTheRevisionOfItsSourceTree) {
   ASSERT_EQ(runCommand(std::string(TLAB_EXE) + " export " + db + " --csv " + csv).exitCode, 0);
   const std::string logged = "\"\"tlab_version\"\":\"\"" + version + "\"\"";
   EXPECT_NE(readText(csv + "/sessions.csv").find(logged), std::string::npos) << readText(csv + "/sessions.csv");
+  // And what the researcher reads: tlab timing (and the report's timing table) per session.
+  const auto timing = runCommand(std::string(TLAB_EXE) + " timing " + db);
+  ASSERT_EQ(timing.exitCode, 0) << timing.err;
+  EXPECT_NE(timing.out.find(" " + version + " "), std::string::npos) << timing.out;
   fs::remove_all(dir);
 }
 
