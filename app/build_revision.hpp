@@ -10,7 +10,7 @@ namespace tlab::app {
 
 std::string_view buildRevision();
 
-// TLAB_VERSION "+" buildRevision().
+// TLAB_VERSION "+" buildRevision() (cmd_version.cpp, beside the line `tlab version` prints).
 std::string versionString();
 
 }  // namespace tlab::app

@@ -23,6 +23,11 @@ if(rc EQUAL 0 AND top STREQUAL source)
     endif()
   endif()
 endif()
-file(WRITE ${OUT}.tmp "// Generated at build time by cmake/RevisionScript.cmake. Do not edit.\n#include \"app/build_revision.hpp\"\nnamespace tlab::app {\nstd::string_view buildRevision() { return \"${revision}\"; }\n}  // namespace tlab::app\n")
+string(CONCAT text "// Generated at build time by cmake/RevisionScript.cmake. Do not edit.\n"
+                   "#include \"app/build_revision.hpp\"\n"
+                   "namespace tlab::app {\n"
+                   "std::string_view buildRevision() { return \"${revision}\"; }\n"
+                   "}  // namespace tlab::app\n")
+file(WRITE ${OUT}.tmp "${text}")
 file(COPY_FILE ${OUT}.tmp ${OUT} ONLY_IF_DIFFERENT)
 file(REMOVE ${OUT}.tmp)

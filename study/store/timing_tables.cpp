@@ -20,9 +20,14 @@ struct TimingSums {
   double swapSum = 0, swapMax = 0, frameSum = 0, frameMax = 0;
 };
 
-std::string displayText(const std::string& json) {
-  const auto d = nlohmann::json::parse(json.empty() ? "{}" : json, nullptr, false);
-  if (!d.is_object() || d.empty()) return "(no display: simulated)";
+// A session's display JSON as stored; an empty object where none was stored or it does not parse.
+nlohmann::json parsedDisplay(const std::string& json) {
+  auto d = nlohmann::json::parse(json.empty() ? "{}" : json, nullptr, false);
+  return d.is_object() ? d : nlohmann::json::object();
+}
+
+std::string displayText(const nlohmann::json& d) {
+  if (d.empty()) return "(no display: simulated)";
   const auto size = [](const nlohmann::json& v) {
     return v.is_array() && v.size() == 2 ? std::to_string(v[0].get<int>()) + "x" + std::to_string(v[1].get<int>()) : std::string("?");
   };
@@ -39,10 +44,7 @@ std::string displayText(const std::string& json) {
 
 // The tlab (version+revision) that ran the session, from its display; "?" for sessions stored before
 // it was recorded.
-std::string tlabText(const std::string& json) {
-  const auto d = nlohmann::json::parse(json.empty() ? "{}" : json, nullptr, false);
-  return d.is_object() ? d.value("tlab_version", std::string("?")) : std::string("?");
-}
+std::string tlabText(const nlohmann::json& d) { return d.value("tlab_version", std::string("?")); }
 
 }  // namespace
 
@@ -73,7 +75,8 @@ analysis::TextTable sessionTimingTable(Store& store, const StoredExperiment& sto
     const auto pair = [&](double sum, double max) {
       return t.trials ? analysis::formatNumber(sum / t.trials, 3) + " / " + analysis::formatNumber(max, 3) : std::string("-");
     };
-    out.rows.push_back({row[id], row[who], row[mode], tlabText(row[display]), displayText(row[display]), std::to_string(t.trials),
+    const nlohmann::json shown = parsedDisplay(row[display]);
+    out.rows.push_back({row[id], row[who], row[mode], tlabText(shown), displayText(shown), std::to_string(t.trials),
                         pair(t.swapSum, t.swapMax), pair(t.frameSum, t.frameMax), t.trials ? std::to_string(t.late) : "-"});
   }
   return out;

@@ -21,7 +21,8 @@ namespace fs = std::filesystem;
 const std::string kScript = std::string(TLAB_SOURCE_DIR) + "/cmake/RevisionScript.cmake";
 
 CommandResult git(const fs::path& repo, const std::string& arguments) {
-  return runCommand("git -C " + quoted(repo.string()) + " -c user.name=tlab -c user.email=tlab@example.org -c commit.gpgsign=false " + arguments);
+  return runCommand("git -C " + quoted(repo.string()) +
+                    " -c user.name=tlab -c user.email=tlab@example.org -c commit.gpgsign=false " + arguments);
 }
 
 std::string shortHead(const fs::path& repo) {

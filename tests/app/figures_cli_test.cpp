@@ -68,8 +68,9 @@ TEST(FiguresCli, EveryFigureMatchesItsHashAndItsCaptionedCommand) {
         << command;
   }
   EXPECT_NE(captions.find("Carnecky et al. 2013 (seed 000), Fig. 9 (a)"), std::string::npos);
-  ASSERT_NE(tlabVersionString(), "");
-  EXPECT_NE(captions.find("Drawn by tlab " + tlabVersionString() + " on "), std::string::npos) << captions.substr(0, 400);
+  const std::string version = tlabVersionString();
+  ASSERT_NE(version, "");
+  EXPECT_NE(captions.find("Drawn by tlab " + version + " on "), std::string::npos) << captions.substr(0, 400);
 }
 
 TEST(FiguresCli, AnUnknownSelectionIsAOneLineError) {
