@@ -11,6 +11,7 @@
 #include "renderer/gpu/gpu_context.hpp"
 #include "renderer/gpu/window_context.hpp"
 #include "core/image.hpp"
+#include "core/parse_number.hpp"
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "renderer/styles/style.hpp"
@@ -45,7 +46,7 @@ std::string styleFileListing(const render::Style& style, const std::string& path
   std::string out = "Style file " + path + " (" + style.name() + "): " + style.description() + "\nParameters (--set key=value):\n";
   for (const auto& p : style.allParams()) {
     std::ostringstream range;
-    if (p.kind == render::ParamSpec::Kind::Number) range << "  [" << p.minValue << ", " << p.maxValue << "]";
+    if (p.kind == render::ParamSpec::Kind::Number) range << "  [" << core::roundTripText(p.minValue) << ", " << core::roundTripText(p.maxValue) << "]";
     else for (std::size_t i = 0; i < p.choices.size(); ++i) range << (i ? "|" : "  ") << p.choices[i];
     out += "  " + p.name + "=" + p.defaultValue + range.str() + "  " + p.help + "\n";
   }

@@ -1,7 +1,6 @@
 #include "renderer/params/style_params.hpp"
 
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
 
 #include "core/parse_number.hpp"
@@ -12,9 +11,7 @@ ParamSpec ParamSpec::number(std::string name, double def, double lo, double hi, 
   ParamSpec s;
   s.name = std::move(name);
   s.kind = Kind::Number;
-  std::ostringstream d;
-  d << def;
-  s.defaultValue = d.str();
+  s.defaultValue = core::roundTripText(def);  // the declared number, every digit of it
   s.minValue = lo;
   s.maxValue = hi;
   s.help = std::move(help);
@@ -54,10 +51,8 @@ double parseNumber(const std::string& style, const ParamSpec& spec, const std::s
     throw std::invalid_argument("style '" + style + "' parameter '" + spec.name + "': '" + text + "' is not a number");
   const double v = *parsed;
   if (v < spec.minValue || v > spec.maxValue) {
-    std::ostringstream msg;
-    msg << "style '" << style << "' parameter '" << spec.name << "' = " << text << " is outside [" << spec.minValue
-        << ", " << spec.maxValue << "]";
-    throw std::invalid_argument(msg.str());
+    throw std::invalid_argument("style '" + style + "' parameter '" + spec.name + "' = " + text + " is outside [" +
+                                core::roundTripText(spec.minValue) + ", " + core::roundTripText(spec.maxValue) + "]");
   }
   return v;
 }

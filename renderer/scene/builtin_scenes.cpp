@@ -278,9 +278,8 @@ std::pair<const BuiltinSceneSpec*, std::map<std::string, double>> parseBuiltinSc
       if (param->integer && v != std::floor(v))
         throw std::invalid_argument("built-in scene '" + name + "' parameter '" + key + "' must be a whole number, got " + text);
       if (v < param->minValue || v > param->maxValue) {
-        std::ostringstream msg;
-        msg << "built-in scene '" << name << "' parameter '" << key << "' = " << text << " is outside [" << param->minValue << ", " << param->maxValue << "]";
-        throw std::invalid_argument(msg.str());
+        throw std::invalid_argument("built-in scene '" + name + "' parameter '" + key + "' = " + text + " is outside [" +
+                                    core::roundTripText(param->minValue) + ", " + core::roundTripText(param->maxValue) + "]");
       }
       values[key] = v;
     }

@@ -3,6 +3,8 @@
 #include "renderer/styles/style_file.hpp"
 
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <regex>
 #include <set>
 #include <stdexcept>
@@ -69,9 +71,12 @@ class DeclarationReader {
     return n->as_string()->get();
   }
 
+  // A finite number (TOML's nan and inf are numbers to the parser, not to a parameter).
   double number(const toml::node* n, const std::string& field) const {
     if (!n || !(n->is_integer() || n->is_floating_point())) fail(n, field, "must be a number");
-    return n->is_integer() ? double(n->as_integer()->get()) : n->as_floating_point()->get();
+    const double v = n->is_integer() ? double(n->as_integer()->get()) : n->as_floating_point()->get();
+    if (!std::isfinite(v)) fail(n, field, "must be a finite number");
+    return v;
   }
 
  private:
@@ -111,6 +116,14 @@ StyleParameter readParameter(const DeclarationReader& r, const toml::table& t, c
   if (value < lo || value > hi) r.fail(def, where + ".default", "outside its range");
   if (p.type == StyleValueType::Int && (!def->is_integer() || std::floor(lo) != lo || std::floor(hi) != hi))
     r.fail(def, where + ".default", "an int parameter takes whole numbers (default and range)");
+  // The parameter is a GLSL uniform: every value of its range must fit its type (an int's 32
+  // bits; a float's finite range, beyond which a value would arrive as infinity).
+  if (p.type == StyleValueType::Int && (lo < double(std::numeric_limits<std::int32_t>::min()) ||
+                                        hi > double(std::numeric_limits<std::int32_t>::max())))
+    r.fail(range, where + ".range", "an int parameter's range lies within [-2147483648, 2147483647] (a GLSL int)");
+  const double floatMax = std::numeric_limits<float>::max();
+  if (p.type == StyleValueType::Float && (lo < -floatMax || hi > floatMax))
+    r.fail(range, where + ".range", "a float parameter's range lies within [-3.40282e+38, 3.40282e+38] (a GLSL float)");
   p.spec = ParamSpec::number(name, value, lo, hi, help);
   return p;
 }

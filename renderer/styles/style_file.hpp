@@ -13,7 +13,7 @@
 //   name = "alpha_near"
 //   type = "float"                  # float | int | bool
 //   default = 0.1
-//   range = [0.0, 1.0]              # float and int
+//   range = [0.0, 1.0]              # float and int: finite, within the uniform type's range
 //   description = "opacity of a layer at the near plane"
 //   */
 //   vec4 composite() { ... }

@@ -4,12 +4,12 @@
 // Shared by the parsers of the experiment file's sections.
 #include <cstdint>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include <toml++/toml.h>
 
+#include "core/parse_number.hpp"
 #include "study/design/experiment_file.hpp"
 
 namespace tlab::study {
@@ -72,7 +72,7 @@ class FieldReader {
     else if (n->is_floating_point()) v = n->as_floating_point()->get();
     else fail(n, name(where, key), "must be a number");
     if (!(v >= minimum && v <= maximum))
-      fail(n, name(where, key), "must be within [" + fmt(minimum) + ", " + fmt(maximum) + "]");
+      fail(n, name(where, key), "must be within [" + core::roundTripText(minimum) + ", " + core::roundTripText(maximum) + "]");
     return v;
   }
 
@@ -113,11 +113,6 @@ class FieldReader {
   }
 
   static std::string name(const std::string& where, const std::string& key) { return where.empty() ? key : where + "." + key; }
-  static std::string fmt(double v) {
-    std::ostringstream s;
-    s << v;
-    return s.str();
-  }
 
  private:
   std::string path_;

@@ -114,6 +114,43 @@ TEST(StyleFile, EveryMistakeNamesTheFileLineAndField) {
   EXPECT_EQ(errorOf(replaced(kValid, "*/", "")).substr(0, 9), "s.glsl:1:");
 }
 
+// A default resolves to the number declared, every digit of it (it used to be rounded to six
+// significant digits: 0.1234567 became 0.123457, and a default at the end of its range was
+// refused as "0.123457 is outside [0, 0.123457]" by the style that declared it).
+TEST(StyleFile, ADefaultIsTheDeclaredNumberToTheLastDigit) {
+  const StyleFile f = parseStyleFile("s.glsl", replaced(replaced(kValid, "default = 0.5", "default = 0.1234567"),
+                                                        "range = [0.0, 2.0]", "range = [0.0, 0.1234567]"));
+  EXPECT_EQ(f.params()[0].defaultValue, "0.1234567");
+  const StyleParams defaults("halo", f.params(), {});
+  EXPECT_EQ(defaults.number("width"), 0.1234567);
+  EXPECT_EQ(f.program(defaults).uniforms[0].value, 0.1234567);
+  // The range a refusal prints is the declared one, which a user can type back.
+  try {
+    StyleParams("halo", f.params(), {{"width", "0.12345671"}});
+    ADD_FAILURE() << "a value above the range was accepted";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_EQ(std::string(e.what()), "style 'halo' parameter 'width' = 0.12345671 is outside [0, 0.1234567]");
+  }
+  EXPECT_EQ(StyleParams("halo", f.params(), {{"width", "0.1234567"}}).number("width"), 0.1234567);
+}
+
+// A parameter is a GLSL uniform: its default and range are finite, and its range fits its type
+// (an int range beyond 32 bits let --set pass 3000000000, which no GLSL int holds).
+TEST(StyleFile, ParametersFitTheirGlslType) {
+  EXPECT_EQ(errorOf(replaced(kValid, "range = [1, 8]", "range = [0, 1e12]")),
+            "s.glsl:19: parameter[2].range: an int parameter's range lies within [-2147483648, 2147483647] (a GLSL int)");
+  EXPECT_EQ(errorOf(replaced(kValid, "range = [1, 8]", "range = [-2147483649, 8]")),
+            "s.glsl:19: parameter[2].range: an int parameter's range lies within [-2147483648, 2147483647] (a GLSL int)");
+  EXPECT_EQ(parseStyleFile("s.glsl", replaced(kValid, "range = [1, 8]", "range = [-2147483648, 2147483647]"))
+                .declaration.parameters[1].spec.maxValue,
+            2147483647.0);
+  EXPECT_EQ(errorOf(replaced(kValid, "range = [0.0, 2.0]", "range = [0.0, 1e39]")),
+            "s.glsl:12: parameter[1].range: a float parameter's range lies within [-3.40282e+38, 3.40282e+38] (a GLSL float)");
+  EXPECT_EQ(errorOf(replaced(kValid, "default = 0.5", "default = nan")), "s.glsl:11: parameter[1].default: must be a finite number");
+  EXPECT_EQ(errorOf(replaced(kValid, "range = [0.0, 2.0]", "range = [0.0, inf]")), "s.glsl:12: parameter[1].range: must be a finite number");
+  EXPECT_EQ(errorOf(replaced(kValid, "range = [0.0, 2.0]", "range = [-inf, 2.0]")), "s.glsl:12: parameter[1].range: must be a finite number");
+}
+
 TEST(StyleFile, AStyleFileIsNamedByItsPath) {
   EXPECT_TRUE(isStyleFilePath("styles/mine.glsl"));
   EXPECT_TRUE(isStyleFilePath("mine.glsl"));
