@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # Writes docs/cli-reference.md from `tlab ... --help` (every subcommand and sub-subcommand).
+#   bash scripts/cli-reference.sh [OUT]   # OUT: another file (the test that checks the committed
+#                                         # reference is current writes one); TLAB: another tlab
 set -euo pipefail
+out=$(realpath -m "${1:-$(dirname "$0")/../docs/cli-reference.md}")
 cd "$(dirname "$0")/.."
-tlab=build/bin/tlab
-out=docs/cli-reference.md
+tlab=${TLAB:-build/bin/tlab}
 {
   echo "# tlab command reference"
   echo
