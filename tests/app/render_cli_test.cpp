@@ -97,6 +97,9 @@ TEST(RenderCli, BadInputGivesOneLineAndExitOne) {
   expectOneLineError(runCommand(kTlab + " render builtin:sphere --set nonsense -o " + out), "key=value");
   expectOneLineError(runCommand(kTlab + " render builtin:sphere --size 10by10 -o " + out), "--size");
   expectOneLineError(runCommand(kTlab + " render builtin:sphere --frobnicate -o " + out), "frobnicate");
+  // A camera looking straight down with the default up drew NaNs (found by fuzz/render_options).
+  expectOneLineError(runCommand(kTlab + " render builtin:sphere --camera 'eye=0,2.2,0' -o " + out),
+                     "--camera field 'up': points along the line of sight");
   EXPECT_FALSE(fs::exists(out));  // nothing half-written
 }
 
