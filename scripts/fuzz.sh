@@ -12,7 +12,7 @@
 # regression test in tests/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-targets=(experiment_file gltf_loader csv_reader statcheck answer_parser serve_reply serve_request serve_view style_file render_options)
+targets=(experiment_file gltf_loader csv_reader statcheck answer_parser serve_reply serve_request serve_view style_file render_options stimulus_set)
 [ $# -ge 1 ] && targets=("$1")
 runs=${2:-1000000}
 if [ "${TLAB_FUZZ_LIGHT:-0}" = 1 ]; then
