@@ -117,7 +117,8 @@ void runList() {
     const auto task = tasks::makeTask(name);
     std::printf("%s: %s\n", name.c_str(), task->summary().c_str());
     for (const auto& s : task->settingSpecs())
-      std::printf("  --set %s=%s  %s\n", s.key.c_str(), s.defaultValue.empty() ? "\"\"" : s.defaultValue.c_str(), s.help.c_str());
+      std::printf("  --set %s=%s  %s%s\n", s.key.c_str(), s.defaultValue.empty() ? "\"\"" : s.defaultValue.c_str(), s.help.c_str(),
+                  s.numeric ? (" (" + s.rangeText() + ")").c_str() : "");
   }
 }
 

@@ -4,19 +4,33 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/parse_number.hpp"
+
 namespace tlab::tasks {
 
+SettingSpec SettingSpec::number(std::string key, std::string def, std::string help, double lo, double hi) {
+  return {std::move(key), std::move(def), std::move(help), true, lo, hi, false};
+}
+
+SettingSpec SettingSpec::count(std::string key, std::string def, std::string help, double lo, double hi) {
+  return {std::move(key), std::move(def), std::move(help), true, lo, hi, true};
+}
+
+SettingSpec SettingSpec::text(std::string key, std::string def, std::string help) {
+  return {std::move(key), std::move(def), std::move(help), false};
+}
+
 namespace {
-bool isNumber(const std::string& s, double* value) {
-  std::size_t used = 0;
-  try {
-    *value = std::stod(s, &used);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return used == s.size() && std::isfinite(*value);
+// A range end as a user types it: whole numbers in full (1000000, not 1e+06).
+std::string endText(double v) {
+  return std::abs(v) < 1e15 && v == std::floor(v) ? std::to_string(static_cast<long long>(v)) : core::roundTripText(v);
 }
 }  // namespace
+
+std::string SettingSpec::rangeText() const {
+  if (!numeric) return "";
+  return std::string(whole ? "a whole number" : "a number") + " in [" + endText(minValue) + ", " + endText(maxValue) + "]";
+}
 
 TaskSettings::TaskSettings(const std::string& taskName, const std::vector<SettingSpec>& specs,
                            const std::vector<std::string>& assignments)
@@ -32,19 +46,22 @@ TaskSettings::TaskSettings(const std::string& taskName, const std::vector<Settin
       throw std::invalid_argument("task '" + taskName + "': unknown setting '" + a + "' (expected key=value with key one of: " + known + ")");
     }
     const std::string value = a.substr(eq + 1);
-    double v = 0.0;
-    if (spec->numeric && !isNumber(value, &v))
-      throw std::invalid_argument("task '" + taskName + "': setting '" + key + "' expects a number, got '" + value + "'");
+    if (spec->numeric) {
+      const auto v = core::parseFiniteNumber(value);
+      const std::string named = "task '" + taskName + "': setting '" + key + "'";
+      if (!v) throw std::invalid_argument(named + " expects a number, got '" + value + "'");
+      if (*v < spec->minValue || *v > spec->maxValue || (spec->whole && *v != std::floor(*v)))
+        throw std::invalid_argument(named + " = " + value + ": expected " + spec->rangeText());
+    }
     values_[key] = value;
   }
 }
 
 double TaskSettings::number(const std::string& key) const {
-  double v = 0.0;
   const auto it = values_.find(key);
-  if (it == values_.end() || !isNumber(it->second, &v))
-    throw std::logic_error("task '" + taskName_ + "': no numeric setting '" + key + "'");
-  return v;
+  const auto v = it == values_.end() ? std::nullopt : core::parseFiniteNumber(it->second);
+  if (!v) throw std::logic_error("task '" + taskName_ + "': no numeric setting '" + key + "'");
+  return *v;
 }
 
 const std::string& TaskSettings::text(const std::string& key) const {
@@ -54,7 +71,8 @@ const std::string& TaskSettings::text(const std::string& key) const {
 }
 
 std::vector<SettingSpec> commonSettings() {
-  return {{"time-limit", "120", "seconds per question; a later answer counts as missing (= wrong)", true}};
+  // The experiment file's time_limit allows the same range (study/design/experiment_file.cpp).
+  return {SettingSpec::number("time-limit", "120", "seconds per question; a later answer counts as missing (= wrong)", 0.5, 86400)};
 }
 
 }  // namespace tlab::tasks

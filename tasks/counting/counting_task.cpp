@@ -14,7 +14,7 @@ void requireOneQuestion(const std::string& task, int count) {
 
 std::vector<SettingSpec> CountingTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"kind", "", "count objects of this kind (name without its number); empty: objects with the Target role", false});
+  specs.push_back(SettingSpec::text("kind", "", "count objects of this kind (name without its number); empty: objects with the Target role"));
   return specs;
 }
 

@@ -15,12 +15,12 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> FollowBoundaryTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"marks", "4", "number of marks besides A and B (at least 2: some on the way, some off)", true});
-  specs.push_back({"margin", "0.1", "the other way must be longer than the shortest by this fraction", true});
-  specs.push_back({"min-arc-gap", "0.04", "minimum arc distance between any two points of a loop, as a fraction of its length", true});
-  specs.push_back({"min-pixel-gap", "12", "minimum pixel distance between any two points of a question", true});
-  specs.push_back({"margin-px", "8", "minimum pixel distance of a point from the image border", true});
-  specs.push_back({"attempts", "400", "candidate questions tried per question before giving up", true});
+  specs.push_back(SettingSpec::count("marks", "4", "number of marks besides A and B (at least 2: some on the way, some off)", 2, 100));
+  specs.push_back(SettingSpec::number("margin", "0.1", "the other way must be longer than the shortest by this fraction", 0, 100));
+  specs.push_back(SettingSpec::number("min-arc-gap", "0.04", "minimum arc distance between any two points of a loop, as a fraction of its length", 0, 1));
+  specs.push_back(SettingSpec::number("min-pixel-gap", "12", "minimum pixel distance between any two points of a question", 0, 100000));
+  specs.push_back(SettingSpec::number("margin-px", "8", "minimum pixel distance of a point from the image border", 0, 100000));
+  specs.push_back(SettingSpec::count("attempts", "400", "candidate questions tried per question before giving up", 1, 1000000));
   return specs;
 }
 
@@ -63,7 +63,7 @@ struct FollowSettings {
   double timeLimit;
 };
 
-FollowSettings followSettings(const std::string& task, const TaskSettings& s) {
+FollowSettings followSettings(const TaskSettings& s) {
   FollowSettings f;
   f.markCount = int(s.number("marks"));
   f.margin = s.number("margin");
@@ -71,7 +71,6 @@ FollowSettings followSettings(const std::string& task, const TaskSettings& s) {
   f.pixelGap = s.number("min-pixel-gap");
   f.borderPx = s.number("margin-px");
   f.attempts = int(s.number("attempts"));
-  if (f.markCount < 2) throw std::invalid_argument(task + ": setting 'marks' must be at least 2");
   f.timeLimit = s.number("time-limit");
   return f;
 }
@@ -178,7 +177,7 @@ Question boundaryQuestion(const std::string& task, int number, const ViewGeometr
 
 std::vector<Question> FollowBoundaryTask::probe(const ProbeRequest& request) const {
   requirePositiveCount(name(), request.count);
-  const FollowSettings f = followSettings(name(), request.settings);
+  const FollowSettings f = followSettings(request.settings);
   const ViewGeometry view(request.camera, request.width, request.height);
   std::vector<BoundaryLoop> loops;
   const auto welded = weldSceneObjects(request.scene);

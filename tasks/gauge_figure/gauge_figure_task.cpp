@@ -11,13 +11,13 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> GaugeFigureTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"layer", "1", "the surface the gauge lies on: 1 = the front one, k = the k-th along the line of sight", true});
-  specs.push_back({"gauge-radius-px", "18", "the gauge disk's radius in stimulus pixels (also the footprint checked for ambiguity)", true});
-  specs.push_back({"max-slant", "75", "largest slant (degrees) of a probed surface: steeper is too near a silhouette", true});
-  specs.push_back({"max-normal-spread", "15", "largest angle (degrees) between the normals within the gauge's footprint (creases, layer changes)", true});
-  specs.push_back({"correct-within", "15", "angle error (degrees) counted as correct", true});
-  specs.push_back({"min-separation-px", "40", "minimum pixel distance between the probes of different questions", true});
-  specs.push_back({"attempts", "2000", "candidate probes tried per question before giving up", true});
+  specs.push_back(SettingSpec::count("layer", "1", "the surface the gauge lies on: 1 = the front one, k = the k-th along the line of sight", 1, 1000));
+  specs.push_back(SettingSpec::number("gauge-radius-px", "18", "the gauge disk's radius in stimulus pixels (also the footprint checked for ambiguity)", 2, 10000));
+  specs.push_back(SettingSpec::number("max-slant", "75", "largest slant (degrees) of a probed surface: steeper is too near a silhouette", 0, 90));
+  specs.push_back(SettingSpec::number("max-normal-spread", "15", "largest angle (degrees) between the normals within the gauge's footprint (creases, layer changes)", 0, 180));
+  specs.push_back(SettingSpec::number("correct-within", "15", "angle error (degrees) counted as correct", 0, 180));
+  specs.push_back(SettingSpec::number("min-separation-px", "40", "minimum pixel distance between the probes of different questions", 0, 100000));
+  specs.push_back(SettingSpec::count("attempts", "2000", "candidate probes tried per question before giving up", 1, 1000000));
   return specs;
 }
 
@@ -37,8 +37,6 @@ std::vector<Question> GaugeFigureTask::probe(const ProbeRequest& request) const 
   const double radius = s.number("gauge-radius-px"), maxSlant = s.number("max-slant"), maxSpread = s.number("max-normal-spread");
   const double separation = s.number("min-separation-px");
   const int attempts = int(s.number("attempts"));
-  if (layer < 1) throw std::invalid_argument(name() + ": layer must be at least 1");
-  if (radius < 2) throw std::invalid_argument(name() + ": gauge-radius-px must be at least 2");
   const double margin = radius + 2.0;
   if (2.0 * margin >= std::min(request.width, request.height)) throw std::invalid_argument(name() + ": the image is too small for the gauge");
 

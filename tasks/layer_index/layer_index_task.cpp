@@ -12,11 +12,11 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> LayerIndexTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"min-layer", "1", "smallest layer number asked for", true});
-  specs.push_back({"max-layer", "0", "largest layer number asked for (0: no limit)", true});
-  specs.push_back({"min-separation-px", "12", "minimum pixel distance between the probes of different questions", true});
-  specs.push_back({"margin-px", "8", "minimum pixel distance of a probe from the image border", true});
-  specs.push_back({"attempts", "400", "candidate probes tried per question before giving up", true});
+  specs.push_back(SettingSpec::count("min-layer", "1", "smallest layer number asked for", 1, 1000));
+  specs.push_back(SettingSpec::count("max-layer", "0", "largest layer number asked for (0: no limit)", 0, 1000));
+  specs.push_back(SettingSpec::number("min-separation-px", "12", "minimum pixel distance between the probes of different questions", 0, 100000));
+  specs.push_back(SettingSpec::number("margin-px", "8", "minimum pixel distance of a probe from the image border", 0, 100000));
+  specs.push_back(SettingSpec::count("attempts", "400", "candidate probes tried per question before giving up", 1, 1000000));
   return specs;
 }
 

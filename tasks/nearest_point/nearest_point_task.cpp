@@ -14,15 +14,15 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> NearestPointTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"candidates", "3", "number of candidate points (at least 2)", true});
-  specs.push_back({"margin", "0.1", "second-nearest geodesic distance must be ≥ (1 + margin) × nearest", true});
-  specs.push_back({"euclidean-trap-share", "0.5", "share of questions whose Euclidean-nearest candidate is not the geodesic-nearest", true});
-  specs.push_back({"min-pixel-gap", "16", "minimum pixel distance between any two points of a question", true});
-  specs.push_back({"margin-px", "8", "minimum pixel distance of a point from the image border", true});
-  specs.push_back({"neighbourhood", "1", "candidates lie within this Euclidean distance of A and within twice it along the surface "
-                                           "(a fraction of the scene's bounding radius; 0: anywhere)", true});
-  specs.push_back({"pool", "32", "surface points sampled per start point A", true});
-  specs.push_back({"sources", "64", "start points A tried per question before giving up", true});
+  specs.push_back(SettingSpec::count("candidates", "3", "number of candidate points (at least 2)", 2, 6));
+  specs.push_back(SettingSpec::number("margin", "0.1", "second-nearest geodesic distance must be ≥ (1 + margin) × nearest", 0, 100));
+  specs.push_back(SettingSpec::number("euclidean-trap-share", "0.5", "share of questions whose Euclidean-nearest candidate is not the geodesic-nearest", 0, 1));
+  specs.push_back(SettingSpec::number("min-pixel-gap", "16", "minimum pixel distance between any two points of a question", 0, 100000));
+  specs.push_back(SettingSpec::number("margin-px", "8", "minimum pixel distance of a point from the image border", 0, 100000));
+  specs.push_back(SettingSpec::number("neighbourhood", "1", "candidates lie within this Euclidean distance of A and within twice it along the surface "
+                                           "(a fraction of the scene's bounding radius; 0: anywhere)", 0, 1000));
+  specs.push_back(SettingSpec::count("pool", "32", "surface points sampled per start point A", 2, 100000));
+  specs.push_back(SettingSpec::count("sources", "64", "start points A tried per question before giving up", 1, 1000000));
   return specs;
 }
 
@@ -51,7 +51,7 @@ struct NearestSettings {
   double timeLimit;
 };
 
-NearestSettings nearestSettings(const std::string& task, const ProbeRequest& request) {
+NearestSettings nearestSettings(const ProbeRequest& request) {
   const TaskSettings& s = request.settings;
   NearestSettings f;
   f.count = int(s.number("candidates"));
@@ -63,8 +63,6 @@ NearestSettings nearestSettings(const std::string& task, const ProbeRequest& req
   f.sources = int(s.number("sources"));
   const double neighbourhood = s.number("neighbourhood") * double(request.scene.boundingSphere().radius);
   f.reach = neighbourhood > 0.0 ? neighbourhood : std::numeric_limits<double>::infinity();
-  if (f.count < 2 || f.count > 6) throw std::invalid_argument(task + ": setting 'candidates' must be 2..6");
-  if (f.share < 0.0 || f.share > 1.0) throw std::invalid_argument(task + ": 'euclidean-trap-share' must be in [0, 1]");
   f.timeLimit = s.number("time-limit");
   return f;
 }
@@ -231,7 +229,7 @@ std::optional<Question> questionFromStart(const std::string& task, int number, b
 
 std::vector<Question> NearestPointTask::probe(const ProbeRequest& request) const {
   requirePositiveCount(name(), request.count);
-  const NearestSettings f = nearestSettings(name(), request);
+  const NearestSettings f = nearestSettings(request);
   const ViewGeometry view(request.camera, request.width, request.height);
   core::SeededRandom random(request.seed);
   Surfaces surfaces(request.scene, view, f.borderPx, random);

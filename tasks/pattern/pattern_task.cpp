@@ -11,8 +11,8 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> PatternTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"kind", "", "the pattern is formed by objects of this kind (e.g. cone); empty: objects with the Target role", false});
-  specs.push_back({"tolerance", "0.25", "how far (in grid cells) a target may be from its letter cell", true});
+  specs.push_back(SettingSpec::text("kind", "", "the pattern is formed by objects of this kind (e.g. cone); empty: objects with the Target role"));
+  specs.push_back(SettingSpec::number("tolerance", "0.25", "how far (in grid cells) a target may be from its letter cell", 0, 100));
   return specs;
 }
 

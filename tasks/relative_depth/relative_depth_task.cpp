@@ -11,16 +11,16 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> RelativeDepthTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"layer-a", "1", "the surface point A lies on (1 = the front one)", true});
-  specs.push_back({"layer-b", "1", "the surface point B lies on (1 = the front one)", true});
-  specs.push_back({"min-depth-gap", "0.05", "smallest depth difference of the two points, as a share of the scene's diameter", true});
-  specs.push_back({"min-distance-px", "40", "smallest pixel distance between A and B", true});
-  specs.push_back({"max-distance-px", "0", "largest pixel distance between A and B (0: no limit)", true});
-  specs.push_back({"footprint-px", "4", "radius (pixels) around each point over which its surface must be smooth", true});
-  specs.push_back({"max-normal-spread", "20", "largest normal angle (degrees) within a point's footprint", true});
-  specs.push_back({"margin-px", "12", "minimum pixel distance of a point from the image border", true});
-  specs.push_back({"min-separation-px", "12", "minimum pixel distance between the points of different questions", true});
-  specs.push_back({"attempts", "2000", "candidate pairs tried per question before giving up", true});
+  specs.push_back(SettingSpec::count("layer-a", "1", "the surface point A lies on (1 = the front one)", 1, 1000));
+  specs.push_back(SettingSpec::count("layer-b", "1", "the surface point B lies on (1 = the front one)", 1, 1000));
+  specs.push_back(SettingSpec::number("min-depth-gap", "0.05", "smallest depth difference of the two points, as a share of the scene's diameter", 0, 1));
+  specs.push_back(SettingSpec::number("min-distance-px", "40", "smallest pixel distance between A and B", 0, 100000));
+  specs.push_back(SettingSpec::number("max-distance-px", "0", "largest pixel distance between A and B (0: no limit)", 0, 100000));
+  specs.push_back(SettingSpec::number("footprint-px", "4", "radius (pixels) around each point over which its surface must be smooth", 0, 1000));
+  specs.push_back(SettingSpec::number("max-normal-spread", "20", "largest normal angle (degrees) within a point's footprint", 0, 180));
+  specs.push_back(SettingSpec::number("margin-px", "12", "minimum pixel distance of a point from the image border", 0, 100000));
+  specs.push_back(SettingSpec::number("min-separation-px", "12", "minimum pixel distance between the points of different questions", 0, 100000));
+  specs.push_back(SettingSpec::count("attempts", "2000", "candidate pairs tried per question before giving up", 1, 1000000));
   return specs;
 }
 
@@ -33,7 +33,6 @@ std::vector<Question> RelativeDepthTask::probe(const ProbeRequest& request) cons
   const double footprint = s.number("footprint-px"), maxSpread = s.number("max-normal-spread");
   const double margin = s.number("margin-px"), separation = s.number("min-separation-px");
   const int attempts = int(s.number("attempts"));
-  if (layers[0] < 1 || layers[1] < 1) throw std::invalid_argument(name() + ": layer-a and layer-b must be at least 1");
 
   const ViewGeometry view(request.camera, request.width, request.height);
   const SurfaceProbe surfaces(request.scene, view);

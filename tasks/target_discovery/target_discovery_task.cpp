@@ -10,8 +10,8 @@ namespace tlab::tasks {
 
 std::vector<SettingSpec> TargetDiscoveryTask::settingSpecs() const {
   auto specs = commonSettings();
-  specs.push_back({"kind", "", "the target is the one object of this kind; empty: the one object with the Target role", false});
-  specs.push_back({"correct-within", "0", "error distance (world units) counted as correct; 0: 5 % of the scene's diameter", true});
+  specs.push_back(SettingSpec::text("kind", "", "the target is the one object of this kind; empty: the one object with the Target role"));
+  specs.push_back(SettingSpec::number("correct-within", "0", "error distance (world units) counted as correct; 0: 5 % of the scene's diameter", 0, 1e+30));
   return specs;
 }
 

@@ -50,6 +50,18 @@ TEST(NewUser, DesignFailsWithFileAndLineOnATaskSettingNoProbeCanMeet) {
   EXPECT_EQ(quick.exitCode, 0) << quick.err;
 }
 
+// A task setting outside what the task declared is refused by the quick check too, where it is
+// written (min-layer=2.5 used to be read as layer 2).
+TEST(NewUser, DesignQuickFailsWithFileAndLineOnATaskSettingOutsideItsDeclaration) {
+  const fs::path dir = freshDir("design_setting");
+  const fs::path file = write(dir, "half.toml", experiment("[[tasks]]\ntask = \"layer-index\"\nquestions = 2\nsettings = [\"min-layer=2.5\"]\n"));
+  const CommandResult quick = tlab("design --quick " + quoted(file.string()));
+  EXPECT_EQ(quick.exitCode, 1) << quick.out;
+  EXPECT_NE(quick.err.find(file.string() + ":20: tasks[1]"), std::string::npos) << quick.err;
+  EXPECT_NE(quick.err.find("setting 'min-layer' = 2.5: expected a whole number in [1, 1000]"), std::string::npos) << quick.err;
+  EXPECT_EQ(std::count(quick.err.begin(), quick.err.end(), '\n'), 1) << "one line: " << quick.err;
+}
+
 TEST(NewUser, DesignFailsWithFileAndLineOnATrainingStimulusShownInATest) {
   const fs::path dir = freshDir("design_training");
   // Counting marks nothing: a fixed scene shows its training trial the test trials' picture.

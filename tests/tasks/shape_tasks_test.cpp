@@ -189,7 +189,7 @@ TEST(RelativeDepth, TruthIsTheLabelOfThePointNearerAlongTheViewingDirection) {
 TEST(RelativeDepth, RefusesWhenNoPairDiffersEnoughInDepth) {
   const Spheres s;
   const RelativeDepthTask task;
-  EXPECT_THROW(task.probe({s.scene, s.camera, 300, 300, 1, 1, task.settings({"min-depth-gap=5", "attempts=100"})}), std::runtime_error);
+  EXPECT_THROW(task.probe({s.scene, s.camera, 300, 300, 1, 1, task.settings({"min-depth-gap=1", "attempts=100"})}), std::runtime_error);
 }
 
 }  // namespace

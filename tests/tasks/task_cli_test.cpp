@@ -83,6 +83,16 @@ TEST(TaskCli, BadAnswerAndUnknownTaskAreOneLineErrors) {
   const CommandResult list = run("task list");
   EXPECT_EQ(list.exitCode, 0);
   EXPECT_NE(list.output.find("euclidean-trap-share"), std::string::npos);
+  // A setting outside what its task declared is refused before anything is probed (attempts=1e12
+  // used to reach an int conversion and end in "found only 0 of 1").
+  const CommandResult huge = run("task probe builtin:sphere --task layer-index --count 1 --set attempts=1e12");
+  EXPECT_EQ(huge.exitCode, 1);
+  EXPECT_NE(huge.output.find("tlab: error: task 'layer-index': setting 'attempts' = 1e12: expected a whole number in [1, 1000000]"),
+            std::string::npos)
+      << huge.output;
+  EXPECT_NE(list.output.find("--set attempts=400  candidate probes tried per question before giving up (a whole number in [1, 1000000])"),
+            std::string::npos)
+      << list.output;
 }
 
 
