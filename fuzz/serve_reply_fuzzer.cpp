@@ -3,6 +3,7 @@
 // and delivered through the participant's SessionChannel as POST /api/<token>/reply does. A reply
 // must never crash the server: it is refused with a message (which the server sends as JSON) or
 // delivered in the shape the session flow reads (BrowserResponder).
+// fuzz-sources: study/serve/request_checks.cpp study/serve/session_channel.cpp study/serve/flow_pages.cpp study/serve/trial_page.cpp
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>

@@ -6,6 +6,7 @@
 //   2..: the body of POST /api/<token>/reply: the 'seq' check, then SessionChannel::deliver to one
 //      of the screens of fuzz/serve_screens.hpp, and the JSON the server answers with.
 // No input may crash or throw; every refusal is a message.
+// fuzz-sources: study/serve/request_checks.cpp study/serve/session_channel.cpp study/serve/flow_pages.cpp study/serve/trial_page.cpp
 #include <httplib.h>
 
 #include <cstddef>

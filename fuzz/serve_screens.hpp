@@ -59,7 +59,7 @@ inline const ServeScreens& serveScreens() {
     fields[2].integer = true;
     fields[3] = {"comment", "Anything else?", study::FieldKind::Text};
     fields[3].required = false;
-    s.screens.push_back(study::formScreen("About you", fields));
+    s.screens.push_back(study::formScreen("About you", fields, study::ParticipantTexts()));
     s.screens.push_back(study::consentScreen("Consent", {"Do you agree?"}));
     s.screens.push_back(study::messageScreen("Welcome", "Hello"));
     return s;

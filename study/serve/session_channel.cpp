@@ -62,7 +62,8 @@ SessionChannel::Delivery SessionChannel::deliver(int seq, const nlohmann::json& 
   if (seq != seq_ || !screen_.check) {
     error = "screen " + std::to_string(seq) + " is no longer shown; the current one is " + std::to_string(seq_);
     // An answer to a trial that has gone (its time ran out on the server first): kept as an event.
-    if (body.is_object() && body.value("type", "") == "answer" && events_.size() < 100)
+    // (type compared as JSON: a stale reply whose type is no text is no answer, and no exception)
+    if (body.is_object() && body.contains("type") && body.at("type") == "answer" && events_.size() < 100)
       events_.push_back({receivedNs, "late-answer", jsonText({{"screen", seq}, {"current", seq_}, {"body", body.dump().substr(0, 500)}})});
     return Delivery::Stale;
   }

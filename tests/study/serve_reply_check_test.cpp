@@ -36,3 +36,25 @@ TEST(ServeReplyCheck, AReplyTypeThatIsNotATextIsRefusedWithAMessageOnEveryScreen
     }
   }
 }
+
+// A reply to a screen no longer shown is stale whatever its fields hold: {"type": ["D"]} made the
+// stale path's check for a late answer throw (found by fuzz/serve_request_fuzzer), so POST /reply
+// answered 500 instead of saying the screen has gone. A late answer is still kept as an event.
+TEST(ServeReplyCheck, AStaleReplyOfAnyTypeIsStaleAndALateAnswerIsKept) {
+  PlannedTrial plan;
+  PreparedTrial prepared;
+  SessionChannel channel(std::chrono::minutes(1));
+  const int seq = channel.publish(messageScreen("T", "x"));
+  for (const json& type : {json::array({"D"}), json(true), json(3), json(nullptr), json::object()}) {
+    std::string error;
+    EXPECT_EQ(channel.deliver(seq + 1, json{{"seq", seq + 1}, {"type", type}, {"rt_ms", 0}}, 1, error), SessionChannel::Delivery::Stale)
+        << type.dump();
+    EXPECT_NE(error.find("is no longer shown"), std::string::npos) << error;
+  }
+  EXPECT_TRUE(channel.takeEvents().empty());
+  std::string error;
+  EXPECT_EQ(channel.deliver(seq + 1, json{{"seq", seq + 1}, {"type", "answer"}, {"answer", 2}}, 1, error), SessionChannel::Delivery::Stale);
+  const auto events = channel.takeEvents();
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, "late-answer");
+}
