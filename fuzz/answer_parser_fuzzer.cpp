@@ -1,6 +1,7 @@
 // Fuzz target: typed answers → values, for every answer kind, and task settings "key=value"
 // (`--set`, experiment files). The first byte selects the kind; rejections must be
 // AnswerFormatError / std::invalid_argument with a message.
+// fuzz-sources: tasks/answer_parser.cpp tasks/task_settings.cpp
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>

@@ -1,5 +1,6 @@
 // Fuzz target: CSV text → Table (the reader behind `tlab stats`). Rejections must be
 // AnalysisError naming file:line.
+// fuzz-sources: analysis/csv_reader.cpp
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

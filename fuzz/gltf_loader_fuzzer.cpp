@@ -1,6 +1,7 @@
 // Fuzz target: glTF bytes → Scene, through tinygltf and our conversion. The first byte selects
 // .glb (odd) or .gltf (even). Rejections must be std::runtime_error; external buffers/images are
 // looked up in an empty directory so the fuzzer never reads files it did not write.
+// fuzz-sources: renderer/scene/gltf_loader.cpp
 #include <cstddef>
 #include <cstdint>
 #include <stdexcept>

@@ -2,6 +2,7 @@
 // statcheck's options taken from the first byte; the same text as HTML (libxml2) and through the
 // PDF typesetting fixes. Any text is valid input, so nothing may throw (except the HTML reader's
 // one-line AnalysisError for a document libxml2 cannot recover).
+// fuzz-sources: analysis/statcheck.cpp analysis/statcheck_scanner.cpp analysis/document_text.cpp
 #include <cstddef>
 #include <cstdint>
 #include <string_view>

@@ -12,6 +12,13 @@
 # regression test in tests/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
+# Seeds beyond fuzz/corpus/<target>: the examples a user starts from (read only, like the corpus).
+example_seeds() {
+  case $1 in
+    style_file) echo examples/styles ;;
+    stimulus_set) echo examples/stimulus-sets ;;
+  esac
+}
 targets=(experiment_file gltf_loader csv_reader statcheck answer_parser serve_reply serve_request serve_view style_file render_options stimulus_set)
 [ $# -ge 1 ] && targets=("$1")
 runs=${2:-1000000}
@@ -30,7 +37,8 @@ if [ "${TLAB_FUZZ_LIGHT:-0}" = 1 ]; then
     mkdir -p "build-fuzz-light/fuzz-corpus/$t" "build-fuzz-light/fuzz-artifacts/$t"
     echo "fuzz (light): $t ($runs executions; instrumented: $sources)"
     "build-fuzz-light/${t}_fuzzer" -runs="$runs" -max_total_time=7200 -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
-      -artifact_prefix="build-fuzz-light/fuzz-artifacts/$t/" -print_final_stats=1 "build-fuzz-light/fuzz-corpus/$t" "fuzz/corpus/$t"
+      -artifact_prefix="build-fuzz-light/fuzz-artifacts/$t/" -print_final_stats=1 "build-fuzz-light/fuzz-corpus/$t" "fuzz/corpus/$t" \
+      $(example_seeds "$t")
   done
   exit 0
 fi
@@ -45,5 +53,5 @@ for t in "${targets[@]}"; do
   echo "fuzz: $t ($runs executions)"
   "build-asan/bin/${t}_fuzzer" -runs="$runs" -max_total_time=7200 -timeout=10 -rss_limit_mb=2048 -max_len=8192 \
     -artifact_prefix="build-asan/fuzz-artifacts/$t/" -print_final_stats=1 \
-    "build-asan/fuzz-corpus/$t" "fuzz/corpus/$t"
+    "build-asan/fuzz-corpus/$t" "fuzz/corpus/$t" $(example_seeds "$t")
 done
