@@ -35,6 +35,17 @@ std::string unknownSubcommand(const CLI::App& app) {
   return (word.empty() ? "'" + path + "' needs a command" : "unknown command '" + word + "' for '" + path + "'") + " (known: " + known + ")";
 }
 
+// When a required argument is missing but the command line also held an option the command does
+// not know: that option, as CLI11 names it when nothing is missing. CLI11 checks the required
+// arguments first, so `tlab render --versoin` said "scene is required" and hid the typo.
+std::string unexpectedOption(const CLI::App& app) {
+  std::string options;
+  for (const CLI::App* at = chosen(app); at; at = at->get_parent())
+    for (const auto& r : at->remaining())
+      if (r.size() > 1 && r.front() == '-') options += (options.empty() ? "" : " ") + r;
+  return options.empty() ? "" : "The following argument was not expected: " + options;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,7 +87,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForVersion& e) {
     return app.exit(e);
   } catch (const CLI::ParseError& e) {
-    const std::string unknown = dynamic_cast<const CLI::RequiredError*>(&e) ? unknownSubcommand(app) : "";
+    const bool required = dynamic_cast<const CLI::RequiredError*>(&e) != nullptr;
+    std::string unknown = required ? unexpectedOption(app) : "";
+    if (unknown.empty() && required) unknown = unknownSubcommand(app);
     std::cerr << "tlab: error: " << (unknown.empty() ? std::string(e.what()) : unknown) << " (see --help)\n";
     return 1;
   } catch (const std::exception& e) {

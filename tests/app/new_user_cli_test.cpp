@@ -267,6 +267,21 @@ TEST(NewUser, VersionFlagPrintsWhatTheVersionCommandPrints) {
   EXPECT_EQ(flag.err, "");
 }
 
+// An option the command does not know is named even where a required argument is missing too
+// (CLI11 checks those first: `tlab render --version` said "scene is required", and a mistyped
+// option was never named).
+TEST(NewUser, AnUnknownOptionIsNamedBeforeAMissingArgument) {
+  const CommandResult version = tlab("render --version");
+  EXPECT_EQ(version.exitCode, 1);
+  EXPECT_EQ(version.err, "tlab: error: The following argument was not expected: --version (see --help)\n");
+  const CommandResult typo = tlab("export --csvv out");
+  EXPECT_EQ(typo.exitCode, 1);
+  EXPECT_NE(typo.err.find("not expected: --csvv"), std::string::npos) << typo.err;
+  const CommandResult missing = tlab("render --style smart");
+  EXPECT_EQ(missing.exitCode, 1);
+  EXPECT_NE(missing.err.find("scene is required"), std::string::npos) << missing.err;
+}
+
 TEST(NewUser, AnUnterminatedStringNamesTheLineItStarts) {
   const fs::path dir = freshDir("toml_string");
   const fs::path one = write(dir, "one.toml", "id = \"x\"\nwelcome = \"Hello\nseed = 3\n");
