@@ -46,6 +46,32 @@ std::map<std::string, std::string> shippedTexts(const std::string& language) {
   return it == shipped.end() ? std::map<std::string, std::string>() : it->second;
 }
 
+std::set<std::string> placeholdersOf(const std::string& text) {
+  std::set<std::string> out;
+  for (std::size_t open = text.find('{'); open != std::string::npos; open = text.find('{', open + 1)) {
+    std::size_t end = open + 1;
+    while (end < text.size() && ((text[end] >= 'a' && text[end] <= 'z') || text[end] == '_')) ++end;
+    if (end > open + 1 && end < text.size() && text[end] == '}') out.insert(text.substr(open + 1, end - open - 1));
+  }
+  return out;
+}
+
+std::set<std::string> ParticipantTexts::valuesOf(const std::string& key) {
+  const auto english = shippedTexts("en");
+  std::set<std::string> out;
+  const auto dot = key.rfind('.');
+  const std::string form = dot == std::string::npos ? "" : key.substr(dot);
+  const std::string base = key.substr(0, dot);
+  const bool plural = form == ".one" || form == ".other";
+  for (const std::string& k : plural ? std::vector<std::string>{base + ".one", base + ".other"} : std::vector<std::string>{key}) {
+    const auto it = english.find(k);
+    if (it == english.end()) continue;
+    const auto values = placeholdersOf(it->second);
+    out.insert(values.begin(), values.end());
+  }
+  return out;
+}
+
 ParticipantTexts::ParticipantTexts() : ParticipantTexts("en") {}
 
 ParticipantTexts::ParticipantTexts(const std::string& language) : language_(language), texts_(shippedTexts("en")) {

@@ -7,6 +7,7 @@
 // and `tlab design` warns about each such key. Front ends ask this table and print no words of
 // their own: the window, the browser page (which gets the table as JSON) and the server's pages.
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,9 @@ class ParticipantTexts {
   ParticipantTexts inLanguage(const std::string& language) const;
 
   bool has(const std::string& key) const { return texts_.count(key) > 0; }
+  // The {values} tlab fills into `key`: those of its English text, and for a plural form
+  // ("trials_left.one") those of the other form too. Every shipped language uses the same.
+  static std::set<std::string> valuesOf(const std::string& key);
   // An experiment file's [text] value for `key`; throws std::out_of_range for a key not in the table.
   void set(const std::string& key, const std::string& value);
   // Keys shown in English because the language has no text for them and [text] gave none.
@@ -49,6 +53,9 @@ class ParticipantTexts {
   std::map<std::string, bool> translated_;  // key -> whether its text is in language_ (or set by [text])
   std::map<std::string, std::string> overrides_;  // [text]
 };
+
+// The {name} placeholders of a text as the page fills them (letters and '_' between braces).
+std::set<std::string> placeholdersOf(const std::string& text);
 
 // The languages tlab ships a translation for ("de", "en", "fr").
 std::vector<std::string> shippedLanguages();

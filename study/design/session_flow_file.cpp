@@ -43,11 +43,21 @@ void readTextOverrides(const FieldReader& r, const toml::table& table, const std
       continue;
     }
     if (!node.is_string()) r.fail(&node, "text." + name, "must be a string");
+    const std::string& value = node.as_string()->get();
     try {
-      texts.set(name, node.as_string()->get());
+      texts.set(name, value);
     } catch (const std::out_of_range&) {
       r.fail(&node, "text." + name, "unknown key (tlab texts FILE lists every key)");
     }
+    // A {value} the text does not take would reach participants as written ("{totl}").
+    const auto takes = ParticipantTexts::valuesOf(name);
+    for (const auto& v : placeholdersOf(value))
+      if (!takes.count(v)) {
+        std::string known;
+        for (const auto& t : takes) known += (known.empty() ? "{" : ", {") + t + "}";
+        r.fail(&node, "text." + name, "{" + v + "} is not a value of this text, which participants would see as written (" +
+                                          (known.empty() ? "it takes none" : "it takes " + known) + ")");
+      }
   }
 }
 

@@ -128,6 +128,25 @@ TEST(ParticipantTexts, TheExperimentFilePicksTheLanguageAndOverridesKeys) {
   EXPECT_EQ(errorOf("language = \"German\"\n" + kBase), "bad.toml:1: language: expected a language code such as \"de\" or \"fr\", got 'German'");
 }
 
+// A {value} an override names that its text does not take would reach participants as written:
+// refused with file:line and the values the text does take (a plural form takes its other form's).
+TEST(ParticipantTexts, AnOverrideNamesOnlyValuesItsTextTakes) {
+  EXPECT_EQ(errorOf(kBase + "[text]\n\"trial.progress_practice\" = \"Übung {index} von {totl}\"\n"),
+            "bad.toml:6: text.trial.progress_practice: {totl} is not a value of this text, which participants would see as "
+            "written (it takes {index}, {total})");
+  EXPECT_EQ(errorOf(kBase + "[text.button]\ncontinue = \"Press {space}\"\n"),
+            "bad.toml:6: text.button.continue: {space} is not a value of this text, which participants would see as written "
+            "(it takes none)");
+  const Experiment e = parseExperiment(kBase + "[text]\n\"break.trials_left.one\" = \"One trial ({n}) left, {SPACE} and { n } as written\"\n"
+                                                "\"trial.progress_practice\" = \"{total}: {index}\"\n",
+                                       "ok.toml", StimulusChecks::Skip);
+  EXPECT_EQ(e.texts.count("break.trials_left", 1), "One trial (1) left, {SPACE} and { n } as written");
+  EXPECT_EQ(e.texts.format("trial.progress_practice", {{"index", "2"}, {"total", "5"}}), "5: 2");
+  EXPECT_EQ(ParticipantTexts::valuesOf("break.trials_left.other"), (std::set<std::string>{"n"}));
+  EXPECT_TRUE(ParticipantTexts::valuesOf("button.continue").empty());
+  EXPECT_EQ(placeholdersOf("{a} {b_c} {D} {} {x"), (std::set<std::string>{"a", "b_c"}));
+}
+
 TEST(ParticipantTexts, TheSessionsWordingInGerman) {
   const ParticipantTexts de("de");
   EXPECT_EQ(durationText(45, de), "45 Sekunden");
