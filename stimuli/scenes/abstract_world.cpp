@@ -27,6 +27,26 @@ const char* kindName(ShapeKind k) {
   return "?";
 }
 
+// C++ leaves the order of a call's arguments unspecified (GCC evaluates them last to first, clang
+// first to last). Where the first builds drew several values as one call's arguments, each draw is
+// now its own statement in the order those (GCC) builds drew them: the worlds made since stay
+// byte-identical, and a clang build makes the same ones.
+
+// A random orientation (yaw, pitch), the pitch drawn first.
+std::pair<float, float> randomTurn(core::SeededRandom& random) {
+  const float pitch = random.uniform(0.0f, kPi);
+  const float yaw = random.uniform(0.0f, kPi);
+  return {yaw, pitch};
+}
+
+// A random position in the cube [0, size]³, z drawn first.
+glm::vec3 randomPoint(core::SeededRandom& random, float size) {
+  const float z = random.uniform(0.0f, size);
+  const float y = random.uniform(0.0f, size);
+  const float x = random.uniform(0.0f, size);
+  return {x, y, z};
+}
+
 // A random primitive of `kind`, centred at the origin, randomly oriented (cones stay upright).
 render::TriangleMesh randomShape(core::SeededRandom& random, ShapeKind kind) {
   switch (kind) {
@@ -35,13 +55,15 @@ render::TriangleMesh randomShape(core::SeededRandom& random, ShapeKind kind) {
       const float h = random.uniform(6.0f, 12.0f);
       return placed(makeCone(random.uniform(2.5f, 5.0f), h, 24), {0, -0.5f * h, 0});
     }
-    case ShapeKind::Box:
-      return placed(render::makeBox({random.uniform(1.5f, 5.0f), random.uniform(1.5f, 5.0f), random.uniform(1.5f, 5.0f)}), {0, 0, 0},
-                    random.uniform(0.0f, kPi), random.uniform(0.0f, kPi));
+    case ShapeKind::Box: {
+      const auto [yaw, pitch] = randomTurn(random);
+      const glm::vec3 size{random.uniform(1.5f, 5.0f), random.uniform(1.5f, 5.0f), random.uniform(1.5f, 5.0f)};
+      return placed(render::makeBox(size), {0, 0, 0}, yaw, pitch);
+    }
     case ShapeKind::Torus: {
       const float major = random.uniform(3.0f, 6.0f);
-      return placed(render::makeTorus(major, random.uniform(0.8f, 0.35f * major), 32, 12), {0, 0, 0}, random.uniform(0.0f, kPi),
-                    random.uniform(0.0f, kPi));
+      const auto [yaw, pitch] = randomTurn(random);
+      return placed(render::makeTorus(major, random.uniform(0.8f, 0.35f * major), 32, 12), {0, 0, 0}, yaw, pitch);
     }
   }
   return {};
@@ -78,7 +100,7 @@ class WorldBuilder {
   bool addRandom(core::SeededRandom& random, ShapeKind kind, glm::vec4 color, render::Role roles) {
     for (int attempt = 0; attempt < 200; ++attempt) {
       const render::TriangleMesh shape = randomShape(random, kind);
-      const glm::vec3 at(random.uniform(0.0f, size_), random.uniform(0.0f, size_), random.uniform(0.0f, size_));
+      const glm::vec3 at = randomPoint(random, size_);
       render::TriangleMesh mesh = placed(shape, at);
       if (fits(mesh)) {
         add(kind, std::move(mesh), color, roles);
@@ -160,8 +182,10 @@ render::Scene abstractPatternScene(const AbstractPatternParams& p, const std::ve
   const ShapeKind others[] = {ShapeKind::Sphere, ShapeKind::Box, ShapeKind::Torus};
   for (int i = 0; i < p.redDistractors; ++i)
     builder.addRandom(random, others[random.below(3)], kRed, render::Role::Transparent | render::Role::Distractor);
-  while (int(scene.objects.size()) < p.objects)
-    if (!builder.addRandom(random, others[random.below(3)], greenOrBlue(random), render::Role::Transparent)) break;
+  while (int(scene.objects.size()) < p.objects) {
+    const glm::vec4 color = greenOrBlue(random);  // before the kind (see randomTurn)
+    if (!builder.addRandom(random, others[random.below(3)], color, render::Role::Transparent)) break;
+  }
   requireCount(scene, p.objects);
   withCamera(scene, p.worldSize, {0.2f, 1.2f, 0.6f});
   return scene;

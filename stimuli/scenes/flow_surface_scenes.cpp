@@ -10,9 +10,24 @@ namespace tlab::stimuli {
 
 namespace {
 
-// A reproducible jitter of a seed point, at most `amount` per coordinate.
+// A reproducible jitter of a seed point, at most `amount` per coordinate; z is drawn first, then y
+// and x (see seedLine).
 glm::dvec3 jitter(core::SeededRandom& random, const glm::dvec3& p, double amount) {
-  return p + amount * glm::dvec3(random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f), random.uniform(-1.0f, 1.0f));
+  const float z = random.uniform(-1.0f, 1.0f);
+  const float y = random.uniform(-1.0f, 1.0f);
+  const float x = random.uniform(-1.0f, 1.0f);
+  return p + amount * glm::dvec3(x, y, z);
+}
+
+// The seed line from a to b, each end jittered, b's first. C++ leaves the order of a call's
+// arguments unspecified (GCC evaluates them last to first, clang first to last), and the first
+// builds drew these as one call's arguments: each draw is now its own statement, in the order of
+// those (GCC) builds, so the surfaces made since stay byte-identical and a clang build makes the
+// same ones.
+SeedCurve seedLine(core::SeededRandom& random, const glm::dvec3& a, const glm::dvec3& b, double amount) {
+  const glm::dvec3 end = jitter(random, b, amount);
+  const glm::dvec3 start = jitter(random, a, amount);
+  return SeedCurve::line(start, end);
 }
 
 IntegratorSettings surfaceIntegrator() {
@@ -71,7 +86,7 @@ render::SceneObject integralSurfaceObject(const std::string& name, const Integra
 render::Scene pretzelScene(const FlowSurfaceParams& p) {
   core::SeededRandom random(p.seed);
   const HillsSphericalVortex field({1.0, 1.0, 1.5});
-  const SeedCurve seed = SeedCurve::line(jitter(random, {0.3, 0.0, -0.3}, 0.03), jitter(random, {0.8, 0.0, 0.3}, 0.03));
+  const SeedCurve seed = seedLine(random, {0.3, 0.0, -0.3}, {0.8, 0.0, 0.3}, 0.03);
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.035, 0.04, 9.6, p));
   return surfaceScene("pretzel", surface, {0.3f, 1.0f, 0.6f});
 }
@@ -79,7 +94,7 @@ render::Scene pretzelScene(const FlowSurfaceParams& p) {
 render::Scene bubbleScene(const FlowSurfaceParams& p) {
   core::SeededRandom random(p.seed);
   const SwirlingJet field;
-  const SeedCurve seed = SeedCurve::line(jitter(random, {-0.6, 0.08, -2.6}, 0.03), jitter(random, {0.6, 0.08, -2.6}, 0.03));
+  const SeedCurve seed = seedLine(random, {-0.6, 0.08, -2.6}, {0.6, 0.08, -2.6}, 0.03);
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.05, 0.04, 5.0, p));
   return surfaceScene("bubble", surface, {1.0f, 0.3f, 0.2f});
 }
@@ -87,7 +102,7 @@ render::Scene bubbleScene(const FlowSurfaceParams& p) {
 render::Scene toroidScene(const FlowSurfaceParams& p) {
   core::SeededRandom random(p.seed);
   const VortexRing field({1.0, 0.35, 4.0, 0.0, 2.0, 1.6});  // particles streaming away leave the domain
-  const SeedCurve seed = SeedCurve::line(jitter(random, {0.7, 0.0, -0.03}, 0.02), jitter(random, {1.3, 0.0, 0.03}, 0.02));
+  const SeedCurve seed = seedLine(random, {0.7, 0.0, -0.03}, {1.3, 0.0, 0.03}, 0.02);
   const IntegralSurface surface = streamSurface(field, seed, 0.0, surfaceIntegrator(), frontSettings(0.06, 0.025, 4.5, p));
   return surfaceScene("toroid", surface, {0.4f, 0.5f, 1.0f});
 }

@@ -110,8 +110,11 @@ render::Scene walkthroughScene(const WalkthroughParams& p) {
   for (std::size_t k = 0; k < kinds.size(); ++k) {
     std::swap(rooms[k], rooms[k + random.below(std::uint32_t(rooms.size() - k))]);
     const int room = rooms[k];
-    const glm::vec3 at((float(room % plan.columns()) + 0.5f) * s + random.uniform(-0.6f, 0.6f), 0.0f,
-                       (float(room / plan.columns()) + 0.5f) * s + random.uniform(-0.6f, 0.6f));
+    // z's offset is drawn before x's: the order of the first (GCC) builds, which drew both as one
+    // call's arguments, whose order C++ leaves unspecified (clang drew x first).
+    const float dz = random.uniform(-0.6f, 0.6f);
+    const float dx = random.uniform(-0.6f, 0.6f);
+    const glm::vec3 at((float(room % plan.columns()) + 0.5f) * s + dx, 0.0f, (float(room / plan.columns()) + 0.5f) * s + dz);
     const WalkthroughObjectModel model = makeWalkthroughObject(kinds[k]);
     const render::Role roles = kinds[k] == "trophy" ? render::Role::Opaque | render::Role::Target : render::Role::Opaque;
     scene.objects.push_back(structure(kinds[k] + "-" + std::to_string(++numbers[kinds[k]]),

@@ -11,6 +11,16 @@ namespace {
 
 std::string pointText(double x, double z) { return answerNumber(x) + "," + answerNumber(z); }
 
+// The truth with normal noise of sd `spread` on each axis, y's drawn first: the first (GCC) builds
+// drew both within one expression of string operator+ calls, whose arguments C++ evaluates in an
+// unspecified order (GCC last to first, clang first to last); one statement each keeps the
+// simulated answers of those builds and makes a clang build give the same.
+std::string scattered(const glm::dvec2& truth, double spread, core::SeededRandom& random) {
+  const double dy = standardNormal(random) * spread;
+  const double dx = standardNormal(random) * spread;
+  return pointText(truth.x + dx, truth.y + dy);
+}
+
 class FloorPointForm final : public AnswerForm {
  public:
   AnswerKind kind() const override { return AnswerKind::FloorPoint; }
@@ -38,13 +48,11 @@ class FloorPointForm final : public AnswerForm {
   // Guesses scatter widely (sd 4 × the correct distance, at least 1); known places narrowly (0.25 ×).
   std::string guess(const Question& q, core::SeededRandom& random) const override {
     const glm::dvec2 truth = std::get<glm::dvec2>(q.truth);
-    const double spread = std::max(1.0, 4.0 * q.correctWithin);
-    return answerNumber(truth.x + standardNormal(random) * spread) + "," + answerNumber(truth.y + standardNormal(random) * spread);
+    return scattered(truth, std::max(1.0, 4.0 * q.correctWithin), random);
   }
   std::string known(const Question& q, core::SeededRandom& random, double, const AnswerNoise&) const override {
     const glm::dvec2 truth = std::get<glm::dvec2>(q.truth);
-    const double spread = 0.25 * q.correctWithin;
-    return answerNumber(truth.x + standardNormal(random) * spread) + "," + answerNumber(truth.y + standardNormal(random) * spread);
+    return scattered(truth, 0.25 * q.correctWithin, random);
   }
 };
 

@@ -19,7 +19,10 @@ SurfaceSampler::SurfaceSampler(const WeldedMesh& mesh) {
 SurfacePoint SurfaceSampler::sample(core::SeededRandom& random) const {
   if (totalArea() <= 0.0) throw std::runtime_error("cannot sample a surface of zero area");
   // Two uniforms with 24 bits each pick the triangle; then the standard √ warp (Turk 1990).
-  const double u = (double(random.bits() >> 8) + double(random.bits() >> 8) / 16777216.0) / 16777216.0;
+  // (Two statements: the operands of + are unsequenced, and compilers differ in which runs first.)
+  const double high = double(random.bits() >> 8);
+  const double low = double(random.bits() >> 8);
+  const double u = (high + low / 16777216.0) / 16777216.0;
   const auto it = std::upper_bound(cumulativeArea_.begin(), cumulativeArea_.end(), u * totalArea());
   const std::size_t t = std::min<std::size_t>(std::size_t(it - cumulativeArea_.begin()), cumulativeArea_.size() - 1);
   const double r1 = std::sqrt(double(random.uniform())), r2 = double(random.uniform());
