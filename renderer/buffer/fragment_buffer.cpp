@@ -46,7 +46,8 @@ std::string fillMethodName(FillMethod m) { return m == FillMethod::CountScatter 
 
 FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height, FragmentLayout layout,
                                FillMethod method, std::size_t initialCapacity, std::size_t maxBytes)
-    : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes), shaders_(shaders) {
+    : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes), shaders_(shaders),
+      prefixSumOnHost_(gpu::hostPassesWanted()) {
   if (maxBytes_ == 0) {
     GLint64 limit = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
@@ -110,6 +111,7 @@ const gpu::ShaderProgram& FragmentBuffer::shadingFill(const char* fragmentShader
 }
 
 std::uint32_t FragmentBuffer::prefixSum() {
+  if (prefixSumOnHost_) return prefixSumOnHost();
   const auto n = static_cast<GLuint>(pixels());
   const GLuint blocks = (n + kPrefixBlock - 1) / kPrefixBlock;
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
@@ -129,6 +131,31 @@ std::uint32_t FragmentBuffer::prefixSum() {
   counters_.download(counters, sizeof(counters));
   coveredCount_ = counters[3];
   return counters[1];
+}
+
+// buffer/prefix_sum.comp's scan in one loop: each pixel's head is the sum of the counts before it,
+// and the covered pixels are listed in pixel order. Counts are summed as 32-bit words, as there.
+// (The shader also leaves the total and the covered count in the counters, for the host to read
+// back; here the host has them already, and no pass reads those words.)
+std::uint32_t FragmentBuffer::prefixSumOnHost() {
+  const std::size_t n = pixels();
+  hostHeads_.resize(n);
+  hostCovered_.resize(n);
+  std::uint32_t total = 0, covered = 0;
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the fill's counts, for the host
+  {
+    const gpu::MappedRead counts(pixelCount_, n * 4);
+    const std::uint32_t* count = counts.as<std::uint32_t>();
+    for (std::size_t p = 0; p < n; ++p) {
+      hostHeads_[p] = total;
+      if (count[p] > 0u) hostCovered_[covered++] = std::uint32_t(p);
+      total += count[p];
+    }
+  }
+  pixelHead_.upload(hostHeads_.data(), n * 4);
+  coveredPixels_.upload(hostCovered_.data(), std::size_t(covered) * 4);
+  coveredCount_ = covered;
+  return total;
 }
 
 void FragmentBuffer::ensureHeads() {

@@ -110,6 +110,9 @@ class FragmentBuffer final : public Fill {
   std::vector<std::uint32_t> pixelHeads() const;
   std::vector<std::uint32_t> sortedRecords(std::size_t firstFragment, std::size_t count);  // sorts first if needed
   std::vector<std::uint32_t> coveredPixels() const;  // the list dispatchCovered runs over (heads ready)
+  // The prefix sum as host code (on by default where the GL runs on the CPU) or as
+  // buffer/prefix_sum.comp (off): the same heads, covered pixels and counts.
+  void setPrefixSumOnHost(bool on) { prefixSumOnHost_ = on; }
 
  private:
   void ensureCapacity(std::size_t fragments);
@@ -118,6 +121,7 @@ class FragmentBuffer final : public Fill {
   // u's lighting model (withLighting; compiled on the first frame that model is drawn).
   const gpu::ShaderProgram& shadingFill(const char* fragmentShader, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
+  std::uint32_t prefixSumOnHost();  // the same heads, covered pixels and counters, summed by host code
   void ensureHeads();  // this frame's prefix sum (heads, fragment count) and a pool that holds it
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();
@@ -160,6 +164,11 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram* prefix_[3] = {nullptr, nullptr, nullptr};
   mutable const gpu::ShaderProgram* sortPrograms_[3][2] = {};  // by SortSource, without/with the colour plane
   bool registerSort_ = true;
+  // Whether the prefix sum runs as host code over the mapped counts (where the GL runs on the CPU:
+  // a loop over the pixels costs less than three dispatches of lanes looping over blocks) or as
+  // buffer/prefix_sum.comp; the same words either way (tests compare).
+  bool prefixSumOnHost_;
+  std::vector<std::uint32_t> hostHeads_, hostCovered_;  // prefixSumOnHost's, kept between frames
   std::size_t triangles_ = 0;  // of the last build's scene: the register sort's keys hold triangle * 16
 };
 

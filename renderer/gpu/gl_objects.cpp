@@ -1,5 +1,6 @@
 #include "renderer/gpu/gl_objects.hpp"
 
+#include <cstdlib>
 #include <stdexcept>
 #include <string>
 
@@ -55,7 +56,7 @@ void Buffer::resize(std::size_t bytes) {
   *this = Buffer(bytes);
 }
 
-void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) {
+void Buffer::upload(const void* data, std::size_t bytes, std::size_t offset) const {
   if (bytes == 0) return;
   glNamedBufferSubData(id(), static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), data);
 }
@@ -83,6 +84,35 @@ void Buffer::downloadThrough(const Buffer& staging, void* data, std::size_t byte
   if (bytes > staging.size()) throw std::logic_error("a staging buffer smaller than the bytes read through it");
   glCopyNamedBufferSubData(id(), staging.id(), static_cast<GLintptr>(offset), 0, static_cast<GLsizeiptr>(bytes));
   staging.download(data, bytes);
+}
+
+MappedRead::MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset) : id_(buffer.id()) {
+  if (bytes == 0) return;
+  data_ = glMapNamedBufferRange(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), GL_MAP_READ_BIT);
+  if (!data_) throw GlError("mapping " + std::to_string(bytes) + " bytes of a buffer for reading failed");
+}
+
+MappedRead::~MappedRead() {
+  if (data_) glUnmapNamedBuffer(id_);
+}
+
+bool rendererRunsOnCpu(std::string_view name) {
+  return name.starts_with("llvmpipe") || name.starts_with("softpipe") || name.find("SwiftShader") != std::string_view::npos;
+}
+
+std::optional<bool> hostPassesSetting() {
+  const char* set = std::getenv("TLAB_HOST_PASSES");
+  const std::string value = set ? set : "auto";
+  if (value == "on") return true;
+  if (value == "off") return false;
+  if (value != "auto") throw GlError("TLAB_HOST_PASSES must be auto, on or off, not '" + value + "'");
+  return std::nullopt;
+}
+
+bool hostPassesWanted() {
+  if (const std::optional<bool> set = hostPassesSetting()) return *set;
+  const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && rendererRunsOnCpu(renderer);
 }
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }

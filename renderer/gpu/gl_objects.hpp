@@ -4,6 +4,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string_view>
 #include <utility>
 
 #include "renderer/gpu/gl.hpp"
@@ -75,7 +77,7 @@ class Buffer {
   explicit operator bool() const { return static_cast<bool>(name_); }
   // Re-creates the storage with the new size when it differs (contents lost).
   void resize(std::size_t bytes);
-  void upload(const void* data, std::size_t bytes, std::size_t offset = 0);
+  void upload(const void* data, std::size_t bytes, std::size_t offset = 0) const;  // const as fillWords
   void download(void* data, std::size_t bytes, std::size_t offset = 0) const;
   void clearToZero();
   // Sets the first `words` 32-bit words to `word` (a float's bits where the buffer holds floats).
@@ -94,6 +96,35 @@ class Buffer {
   GlName<BufferDeleter> name_;
   std::size_t bytes_ = 0;
 };
+
+// A read-only view of a buffer's first bytes in host memory, for as long as it lives (RAII:
+// glMapNamedBufferRange on construction, glUnmapNamedBuffer on destruction). The mapping waits for
+// the GL's writes to the buffer; on a CPU rasterizer it is the buffer's own memory, no copy.
+class MappedRead {
+ public:
+  MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0);
+  ~MappedRead();
+  MappedRead(const MappedRead&) = delete;
+  MappedRead& operator=(const MappedRead&) = delete;
+  template <class T>
+  const T* as() const { return static_cast<const T*>(data_); }
+
+ private:
+  GLuint id_ = 0;
+  const void* data_ = nullptr;
+};
+
+// Whether a GL of this GL_RENDERER string runs on the CPU: Mesa's llvmpipe or softpipe, SwiftShader.
+bool rendererRunsOnCpu(std::string_view glRenderer);
+// Whether the few passes that have a host-code twin (the fill's prefix sum, the solve's frontier
+// steps) run it: TLAB_HOST_PASSES=on or off, or by default (auto) where the current context's GL
+// runs on the CPU — there a loop over a frame's pixels, or over a few thousand scattered
+// fragments, costs less than the dispatches of a shader run lane by lane (issue #29). The results
+// are the same words either way (tests compare both). Throws GlError for another value.
+bool hostPassesWanted();
+// TLAB_HOST_PASSES read alone (no GL needed): the contexts check it when made, so that a wrong
+// value is one line before any work. nullopt: auto.
+std::optional<bool> hostPassesSetting();
 
 // local_size_x of every linear compute pass (frame/compute_index.glsl).
 constexpr std::size_t kComputeGroupSize = 64;

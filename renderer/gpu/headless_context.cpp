@@ -5,6 +5,7 @@
 #include "renderer/gpu/egl_context.hpp"
 #include "renderer/gpu/gl_backend.hpp"
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/osmesa_context.hpp"
 
 namespace tlab::gpu {
@@ -85,6 +86,7 @@ std::unique_ptr<GpuContext> anyEgl(bool gpuOnly, std::string& tried) {
 
 std::unique_ptr<GpuContext> createHeadlessContext() {
   const GlChoice choice = glChoice();
+  hostPassesSetting();  // a wrong TLAB_HOST_PASSES is one line before any work
   if (choice.backend == GlBackend::Osmesa) return createOsmesaContext();
   if (choice.backend == GlBackend::Egl && choice.eglDevice >= 0) return eglDevice(choice.eglDevice);
   std::string tried;

@@ -37,6 +37,7 @@ DiffusionSolver::DiffusionSolver(gpu::ShaderCache& shaders, const SmartSettings&
       spreadDiffusion_(&shaders.compute("ops/spread_field.comp")),
       frontierStep_(&shaders.compute("ops/spread_frontier.comp")),
       frontierStepTexels_(&shaders.compute("ops/spread_frontier.comp", {{"TLAB_FIELD_TEXELS", "1"}})),
+      frontierOnHost_(gpu::hostPassesWanted()),
       changed_(sizeof(std::uint32_t)) {}
 
 const gpu::ShaderProgram& DiffusionSolver::alphaProgram(bool jacobi, Spread fused) const {
@@ -218,6 +219,58 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   return run;
 }
 
+// The steps of spreadFrontier (ops/spread_frontier.comp explains them) as host code: the links
+// and flags mapped, the field read once, raised in place and written back once. A step first
+// takes the values of the fragments the last step changed (u_j after step t − 1), then has each
+// offer u_j − λ_u to its free neighbours (Eq. 9): a neighbour f is raised where the offer exceeds
+// its value so far and listed for the next step the first time this step raises it — the offers
+// that exceed u_f after step t − 1, as the shader's atomic maxima list it. The same float
+// subtraction and maxima, so the same fields bit for bit, and the same checks, so the same steps.
+int DiffusionSolver::spreadFrontierOnHost(TransparencyFields& fields, Field field, double lambda, int steps,
+                                          unsigned freeBit) const {
+  if (fields.allZero(field)) return 1;  // as spreadFrontier: no seed, one step that changes nothing
+  constexpr std::uint32_t kNoNeighbor = 0xFFFFFFFFu;  // NO_NEIGHBOR of ops/field_bindings.glsl
+  const std::size_t n = fields.fragments();
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the connect pass's (and set_listed.comp's) writes, for the host
+  std::vector<std::uint32_t> previous = fields.readList(field), changed;  // step 1: the seeds
+  std::vector<float> u(n);
+  fields.current(field).download(u.data(), n * sizeof(float));
+  const gpu::MappedRead linkWords(fields.links(), n * sizeof(glm::uvec4)), flagWords(fields.flags(), n * 4);
+  const auto* links = linkWords.as<glm::uvec4>();
+  const auto* flags = flagWords.as<std::uint32_t>();
+  const float lambdaF = static_cast<float>(lambda);
+  std::vector<std::uint8_t> raised(n, 0);  // raised in this step (cleared from `changed` after it)
+  std::vector<float> offers;
+  int run = 0, lastCheck = -1;
+  bool movedSinceCheck = false, moved = false;
+  for (int i = 0; i < steps; ++i) {
+    offers.resize(previous.size());
+    for (std::size_t k = 0; k < previous.size(); ++k) offers[k] = u[previous[k]] - lambdaF;  // Eq. 9's u_j − λ_u
+    changed.clear();
+    for (std::size_t k = 0; k < previous.size(); ++k) {
+      const glm::uvec4 around = links[previous[k]];
+      const float offer = offers[k];
+      for (int e = 0; e < 4; ++e) {
+        const std::uint32_t f = around[e];
+        if (f == kNoNeighbor || (flags[f] & freeBit) == 0u || !(offer > u[f])) continue;
+        u[f] = offer;
+        if (!raised[f]) raised[f] = 1, changed.push_back(f);
+      }
+    }
+    for (const std::uint32_t f : changed) raised[f] = 0;
+    moved = moved || !changed.empty();
+    ++run;
+    if (i == lastCheck + 1) movedSinceCheck = !changed.empty();  // spreadFrontier's checks
+    if ((i & (i + 1)) == 0) {
+      if (!movedSinceCheck) break;
+      lastCheck = i;
+    }
+    std::swap(previous, changed);
+  }
+  if (moved) fields.current(field).upload(u.data(), n * sizeof(float));
+  return run;
+}
+
 void DiffusionSolver::solve(TransparencyFields& fields, PassTimer* timer) const {
   const int betaSteps = fields.hasBeta() ? spreadSteps(settings_.lambdaBeta) : 0;
   const int gammaSteps = fields.hasGamma() ? spreadSteps(settings_.lambdaGamma) : 0;
@@ -227,9 +280,15 @@ void DiffusionSolver::solve(TransparencyFields& fields, PassTimer* timer) const 
     // their frontiers — the fields of the full steps below, bit for bit.
     for (int i = 0; settings_.diffusesAlpha() && i < settings_.iterations; ++i)
       timePart(timer, "solve alpha step", [&] { step(fields, Spread{}); });
-    if (betaSteps > 0) betaRun_ = spreadFrontier(fields, Field::Beta, settings_.lambdaBeta, betaSteps, kFreeBeta, timer);
-    if (gammaSteps > 0)
-      gammaRun_ = spreadFrontier(fields, Field::Gamma, settings_.lambdaGamma, gammaSteps, kFreeGamma, timer);
+    const auto spreadOne = [&](Field field, double lambda, int steps, unsigned freeBit) {
+      if (!frontierOnHost_) return spreadFrontier(fields, field, lambda, steps, freeBit, timer);
+      int run = 0;
+      timePart(timer, field == Field::Beta ? "solve beta frontier on the host" : "solve gamma frontier on the host",
+               [&] { run = spreadFrontierOnHost(fields, field, lambda, steps, freeBit); });
+      return run;
+    };
+    if (betaSteps > 0) betaRun_ = spreadOne(Field::Beta, settings_.lambdaBeta, betaSteps, kFreeBeta);
+    if (gammaSteps > 0) gammaRun_ = spreadOne(Field::Gamma, settings_.lambdaGamma, gammaSteps, kFreeGamma);
     return;
   }
   bool betaMoves = true, gammaMoves = true;  // false once a step left the field as it was

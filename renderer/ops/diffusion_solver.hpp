@@ -37,6 +37,13 @@ class DiffusionSolver {
   // The frontier steps read links, flags and the field as buffer textures where the GL allows
   // that many texels (on), or always as storage buffers (off): the same fields (tests compare).
   void setFieldTexels(bool on) { fieldTexels_ = on; }
+  // The frontier steps run as host code over the mapped links, flags and field (on), or as
+  // ops/spread_frontier.comp (off): the same fields and steps, bit for bit (tests compare). The
+  // default is gpu::hostPassesWanted(): on where the GL runs on the CPU, where a step's few
+  // thousand scattered reads and atomic maxima cost more as a shader run lane by lane than as a
+  // loop (issue #29: the torus's 20 steps 5–6 ms as the shader, 1.3–1.9 ms as host code).
+  void setFrontierOnHost(bool on) { frontierOnHost_ = on; }
+  bool frontierOnHost() const { return frontierOnHost_; }
 
  private:
   // Which of β and γ a step spreads.
@@ -55,6 +62,8 @@ class DiffusionSolver {
   // Up to `steps` Eq. 9 steps of `field` from its listed seeds; returns the steps run.
   int spreadFrontier(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit,
                      PassTimer* timer) const;
+  // The same steps as host code (setFrontierOnHost).
+  int spreadFrontierOnHost(TransparencyFields& fields, Field field, double lambda, int steps, unsigned freeBit) const;
 
   SmartSettings settings_;
   gpu::ShaderCache& shaders_;
@@ -63,6 +72,7 @@ class DiffusionSolver {
   const gpu::ShaderProgram* frontierStep_;
   const gpu::ShaderProgram* frontierStepTexels_;  // reading links, flags and the field as buffer textures
   bool fieldTexels_ = true;
+  bool frontierOnHost_;
   mutable gpu::Buffer changed_;  // the fused spreading's change record (BIND_CHANGED)
   mutable int betaRun_ = -1, gammaRun_ = -1;  // steps the last solve spread each field (-1: none yet)
 };

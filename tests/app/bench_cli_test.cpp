@@ -110,7 +110,8 @@ TEST(BenchCli, UntilEndsEachFrameAfterThePassNamed) {
 
 // --parts times each pass's parts as well (the connect pass's phases, the solve's steps, the fill's
 // rasterization and prefix sum, the compose's read-back): by name and count under each row, and in
-// the JSON; a frame's parts lie within their passes (one frame: medians of one sample).
+// the JSON; a frame's parts lie within their passes (one frame: medians of one sample). The solve's
+// frontier steps are one part as host code (llvmpipe's default), one a step as the shader.
 TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
   const std::string base =
       kTlab + " bench render --scene builtin:nested-spheres?n=2 --size 48x40 --gl osmesa --style constant,smart ";
@@ -130,19 +131,31 @@ TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
     }
   }
   const auto& smart = j["rows"][1];
-  for (const char* name : {"connect phase 1", "connect phase 2", "solve beta frontier step"})
+  // llvmpipe runs the solve's frontier steps as host code: one part.
+  for (const char* name : {"connect phase 1", "connect phase 2", "solve beta frontier on the host"})
     EXPECT_TRUE(smart["part_ms"].contains(name)) << name << "\n" << smart;
   EXPECT_EQ(smart["part_counts"]["connect phase 1"], 1);
+  EXPECT_EQ(smart["part_counts"]["solve beta frontier on the host"], 1);
   const std::string beta = smart["operations"][1].get<std::string>();  // "solve: beta spreading (Eq. 9 max, K ..."
   const std::string after = "solve: beta spreading (Eq. 9 max, ";
   ASSERT_EQ(beta.rfind(after, 0), 0u) << beta;
-  EXPECT_EQ(smart["part_counts"]["solve beta frontier step"].get<int>(), std::stoi(beta.substr(after.size()))) << beta;
+  // As the shader (TLAB_HOST_PASSES=off), a part a step, as many as the solve ran.
+  const auto steps = runCommand("TLAB_HOST_PASSES=off " + base + "--frames 1 --parts --json");
+  ASSERT_EQ(steps.exitCode, 0) << steps.err;
+  const auto stepsJson = nlohmann::json::parse(steps.out);
+  const auto& shader = stepsJson["rows"][1];
+  EXPECT_EQ(shader["operations"], smart["operations"]);
+  EXPECT_EQ(shader["part_counts"]["solve beta frontier step"].get<int>(), std::stoi(beta.substr(after.size()))) << beta;
+  EXPECT_FALSE(shader["part_counts"].contains("solve beta frontier on the host")) << shader;
 
   const auto text = runCommand(base + "--frames 2 --parts");
   ASSERT_EQ(text.exitCode, 0) << text.err;
   EXPECT_TRUE(std::regex_search(text.out, std::regex("\n  parts: .*connect phase 1 [0-9.]+ ms \\(1x\\), .*solve beta "
-                                                     "frontier step [0-9.]+ ms \\([0-9]+x\\)")))
+                                                     "frontier on the host [0-9.]+ ms \\(1x\\)")))
       << text.out;
+  const auto wrong = runCommand("TLAB_HOST_PASSES=maybe " + base + "--frames 1");
+  EXPECT_EQ(wrong.exitCode, 1);
+  EXPECT_EQ(wrong.err, "tlab: error: TLAB_HOST_PASSES must be auto, on or off, not 'maybe'\n");
   EXPECT_EQ(runCommand(base + "--frames 1 --json").out.find("part_ms"), std::string::npos);  // only when asked for
   const auto alone = runCommand(kTlab + " bench render --parts");
   EXPECT_EQ(alone.exitCode, 1);

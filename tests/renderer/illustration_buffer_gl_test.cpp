@@ -306,7 +306,9 @@ TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
 // The prefix sum lists the pixels that hold a fragment, in pixel order, for the passes that run
 // for those only (issue #29: the sort, smart transparency's connect and compose passes): exactly
 // the pixels with a count above 0, for the slot fill, the scatter fill and the linked lists, and
-// none for a frame without fragments.
+// none for a frame without fragments. Summed by host code (the default where the GL runs on the
+// CPU, as here) and by buffer/prefix_sum.comp: the same heads (each the sum of the counts before
+// it), covered pixels, fragment count and sorted records.
 TEST(IllustrationBuffer, ThePrefixSumListsThePixelsThatHoldAFragment) {
   tlab::gpu::ShaderCache shaders;
   FragmentProperties colour;
@@ -317,36 +319,54 @@ TEST(IllustrationBuffer, ThePrefixSumListsThePixelsThatHoldAFragment) {
     FillMethod method;
     bool slots;  // lists of up to 8 fit the first frame's slots; 12 make it scatter
   };
+  EXPECT_TRUE(tlab::gpu::hostPassesWanted()) << "llvmpipe runs on the CPU";
+  bool singleFragments = false;  // some pixel holds exactly one fragment (an open surface)
   for (const Case& c : {Case{"builtin:nested-spheres?n=3", FillMethod::CountScatter, true},
                         Case{"builtin:nested-spheres?n=6", FillMethod::CountScatter, false},
-                        Case{"builtin:nested-spheres?n=3", FillMethod::LinkedList, false}}) {
-    SCOPED_TRACE(std::string(c.source) + " " + fillMethodName(c.method));
+                        Case{"builtin:nested-spheres?n=3", FillMethod::LinkedList, false},
+                        Case{"builtin:open-cylinders", FillMethod::CountScatter, true}}) {
     const Scene scene = loadScene(c.source);
     GpuScene gpu(scene);
     const Camera camera = fitCamera(scene.boundingSphere(), 48.0f / 40.0f);
     RasterUniforms u;
     u.view = camera.view();
     u.projection = camera.projection(48.0f / 40.0f);
-    FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), c.method);
-    buffer.build(gpu, u, timer);
-    EXPECT_EQ(buffer.slotsUsed() > 0, c.slots);
-    std::vector<std::uint32_t> expected;
-    const auto counts = buffer.pixelCounts();
-    for (std::uint32_t p = 0; p < counts.size(); ++p)
-      if (counts[p] > 0) expected.push_back(p);
-    ASSERT_GT(expected.size(), 200u);
-    ASSERT_LT(expected.size(), counts.size()) << "the spheres leave background around them";
-    EXPECT_EQ(buffer.coveredPixelCount(), expected.size());
-    EXPECT_EQ(buffer.coveredPixels(), expected);
-    if (c.method == FillMethod::LinkedList) {
-      RasterUniforms away = u;
-      away.view = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 100.0f)) * u.view;  // the scene behind the eye
-      buffer.build(gpu, away, timer);
-      EXPECT_EQ(buffer.fragmentCount(), 0u);
-      EXPECT_EQ(buffer.coveredPixelCount(), 0u);
-      EXPECT_TRUE(buffer.coveredPixels().empty());
+    std::vector<std::uint32_t> recordsOnHost;
+    for (const bool onHost : {true, false}) {
+      SCOPED_TRACE(std::string(c.source) + " " + fillMethodName(c.method) + (onHost ? ", host code" : ", shader"));
+      FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), c.method);
+      buffer.setPrefixSumOnHost(onHost);
+      buffer.build(gpu, u, timer);
+      EXPECT_EQ(buffer.slotsUsed() > 0, c.slots);
+      std::vector<std::uint32_t> expected, heads;
+      const auto counts = buffer.pixelCounts();
+      std::uint32_t sum = 0;
+      for (std::uint32_t p = 0; p < counts.size(); ++p) {
+        heads.push_back(sum);
+        sum += counts[p];
+        if (counts[p] > 0) expected.push_back(p);
+        singleFragments = singleFragments || counts[p] == 1;
+      }
+      ASSERT_GT(expected.size(), 200u);
+      ASSERT_LT(expected.size(), counts.size()) << "the spheres leave background around them";
+      EXPECT_EQ(buffer.coveredPixelCount(), expected.size());
+      EXPECT_EQ(buffer.coveredPixels(), expected);
+      EXPECT_EQ(buffer.pixelHeads(), heads);
+      EXPECT_EQ(buffer.fragmentCount(), sum);
+      const auto records = buffer.sortedRecords(0, sum);
+      if (onHost) recordsOnHost = records;
+      else EXPECT_EQ(records, recordsOnHost);
+      if (c.method == FillMethod::LinkedList) {
+        RasterUniforms away = u;
+        away.view = glm::translate(glm::mat4(1.0f), glm::vec3(0.0f, 0.0f, 100.0f)) * u.view;  // the scene behind the eye
+        buffer.build(gpu, away, timer);
+        EXPECT_EQ(buffer.fragmentCount(), 0u);
+        EXPECT_EQ(buffer.coveredPixelCount(), 0u);
+        EXPECT_TRUE(buffer.coveredPixels().empty());
+      }
     }
   }
+  EXPECT_TRUE(singleFragments);
 }
 
 // A pass that asks for the sorted lists of a frame whose sort was left to the compose pass gets

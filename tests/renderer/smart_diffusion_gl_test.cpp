@@ -144,8 +144,8 @@ TEST(FieldSpreading, SettledSpreadingStopsWithoutChangingTheFields) {
 // the solve spreads from them on the frontier only (ops/spread_frontier.comp): bit for bit the
 // fields of n full steps of every fragment, on scenes with silhouettes, halos, several
 // components, deep and shuffled stacks, lists longer than 32 layers, for both initial α (adaptive α diffuses alongside), for λ
-// that settles within n steps and λ that does not, and with halos off; reading the fields through
-// buffer textures and through storage buffers alike.
+// that settles within n steps and λ that does not, and with halos off; the steps run as host code
+// and as the shader, reading the fields through buffer textures and through storage buffers alike.
 TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
   struct Case {
     const char* source;
@@ -189,17 +189,27 @@ TEST(FieldSpreading, FrontierSpreadingEqualsFullSteps) {
     }
     EXPECT_EQ(seeds > 0u, c.seeded) << what;
     EXPECT_GE(deepest, c.deepSeed) << what;
-    DiffusionSolver buffers(frontier.shaders, frontier.smart);  // the storage-buffer reads, as where texels run out
+    // The steps as host code (the default where the GL runs on the CPU, as here), as the shader
+    // reading buffer textures, and as the shader reading storage buffers (where texels run out).
+    DiffusionSolver shader(frontier.shaders, frontier.smart), buffers(frontier.shaders, frontier.smart);
+    shader.setFrontierOnHost(false);
+    buffers.setFrontierOnHost(false);
     buffers.setFieldTexels(false);
-    SmartRig throughBuffers(loadScene(c.source), c.size, c.size, c.settings);
+    SmartRig throughShader(loadScene(c.source), c.size, c.size, c.settings),
+        throughBuffers(loadScene(c.source), c.size, c.size, c.settings);
+    shader.solve(*throughShader.fields);
     buffers.solve(*throughBuffers.fields);
-    const DiffusionSolver solver(frontier.shaders, frontier.smart);
+    DiffusionSolver solver(frontier.shaders, frontier.smart);
+    EXPECT_TRUE(solver.frontierOnHost()) << "llvmpipe runs on the CPU";
+    solver.setFrontierOnHost(true);
     solver.solve(*frontier.fields);
     EXPECT_FALSE(frontier.fields->seedsListed()) << what;
     for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) {
       if (f == Field::Gamma && !frontier.fields->hasGamma()) continue;
+      EXPECT_EQ(throughShader.fields->read(f), frontier.fields->read(f)) << what << " field " << int(f) << ", shader";
       EXPECT_EQ(throughBuffers.fields->read(f), frontier.fields->read(f)) << what << " field " << int(f) << ", storage buffers";
     }
+    EXPECT_EQ(shader.operations(), solver.operations()) << what;
     EXPECT_EQ(buffers.operations(), solver.operations()) << what;
     const DiffusionSolver stepper(full.shaders, full.smart);
     for (int i = 0; i < full.smart.iterations; ++i) stepper.step(*full.fields);

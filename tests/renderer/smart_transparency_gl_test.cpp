@@ -22,6 +22,7 @@
 #include "renderer/styles/smart_style.hpp"
 #include "tests/renderer/smart_rig.hpp"
 #include "tests/support/gl_fixture.hpp"
+#include "tests/support/scoped_env.hpp"
 
 using namespace tlab::render;
 using namespace tlab::testing;
@@ -267,8 +268,10 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
 }
 
 // RenderRequest::timeParts (tlab bench render --scene ... --parts): the passes' parts are listed
-// by name under their pass, the solve's frontier steps as many times as the solve says it ran
-// them, each part within its pass's time — and the picture is the one an untimed frame gives.
+// by name under their pass — the solve's frontier steps as one part where they run as host code
+// (llvmpipe's default), as many parts as the solve says it ran them where they run as the shader
+// (TLAB_HOST_PASSES=off) — each part within its pass's time; and the picture is the one an
+// untimed frame gives, either way.
 TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   Renderer renderer(loadScene("builtin:nested-spheres?n=2"));
   RenderRequest r;
@@ -285,13 +288,24 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   for (const auto& p : timed.parts) counts[p.name] = p.count;
   // The second frame fills straight into slots as long as the first frame's lists.
   for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2",
-                           "solve beta frontier step", "compose read-back"})
+                           "solve beta frontier on the host", "compose read-back"})
     EXPECT_TRUE(counts.count(name)) << name;
   EXPECT_EQ(counts["connect phase 1"], 1);
+  EXPECT_EQ(counts["solve beta frontier on the host"], 1);
   const std::string beta = timed.operations.at(1);  // "solve: beta spreading (Eq. 9 max, K[ of N] steps...)"
   const std::string after = "solve: beta spreading (Eq. 9 max, ";
   ASSERT_EQ(beta.rfind(after, 0), 0u) << beta;
-  EXPECT_EQ(counts["solve beta frontier step"], std::stoi(beta.substr(after.size()))) << beta;
+  {  // the steps as the shader: one part each
+    const ScopedEnv shaders("TLAB_HOST_PASSES", "off");
+    Renderer onTheGl(loadScene("builtin:nested-spheres?n=2"));
+    RenderStats steps;
+    EXPECT_TRUE(onTheGl.render(r, &steps).pixels == without.pixels);
+    std::map<std::string, int> stepCounts;
+    for (const auto& p : steps.parts) stepCounts[p.name] = p.count;
+    EXPECT_EQ(stepCounts["solve beta frontier step"], std::stoi(beta.substr(after.size()))) << beta;
+    EXPECT_EQ(stepCounts.count("solve beta frontier on the host"), 0u);
+    EXPECT_EQ(steps.operations, timed.operations);
+  }
   for (const auto& [pass, ms] : timed.passMilliseconds) {
     double inside = 0;
     for (const auto& p : timed.parts)
@@ -303,6 +317,46 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
     EXPECT_TRUE(std::any_of(timed.passMilliseconds.begin(), timed.passMilliseconds.end(),
                             [&](const auto& q) { return q.first == pass; }))
         << p.name;
+  }
+}
+
+// The passes with a host-code twin (the fill's prefix sum, the solve's frontier steps: the default
+// where the GL runs on the CPU) and their shaders (TLAB_HOST_PASSES=off) draw the same pictures,
+// bit for bit: smart transparency with silhouettes and halos, adaptive α and halos off, the other
+// buffer styles; lists that fit the slots, lists that outgrow them (the scatter fill, then slots),
+// and two frames of each renderer.
+TEST(SmartTransparency, HostPassesAndTheirShadersDrawTheSamePictures) {
+  struct Case {
+    const char* source;
+    const char* style;
+    std::map<std::string, std::string> settings;
+  };
+  const std::vector<Case> cases = {
+      {"builtin:torus", "smart", {}},
+      {"builtin:nested-spheres?n=6", "smart", {{"lambda_gamma", "0.3"}}},
+      {"builtin:open-cylinders", "smart", {{"alpha_init", "adaptive"}, {"iterations", "5"}}},
+      {"builtin:nested-spheres?n=3", "smart", {{"halos", "off"}}},
+      {"builtin:nested-spheres?n=6", "iris", {}},
+      {"builtin:torus", "constant", {}},
+      {"builtin:open-cylinders", "view-dependent", {}},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(std::string(c.source) + " " + c.style + " " + std::to_string(c.settings.size()) + " settings");
+    RenderRequest r;
+    r.width = 64;
+    r.height = 56;
+    r.style = c.style;
+    r.settings = c.settings;
+    std::vector<tlab::core::Image> pictures[2];
+    for (const bool onHost : {true, false}) {
+      const ScopedEnv passes("TLAB_HOST_PASSES", onHost ? "on" : "off");
+      Renderer renderer(loadScene(c.source));
+      for (int frame = 0; frame < 2; ++frame) pictures[onHost ? 0 : 1].push_back(renderer.render(r));
+    }
+    for (int frame = 0; frame < 2; ++frame) {
+      EXPECT_TRUE(pictures[0][frame].pixels == pictures[1][frame].pixels) << "frame " << frame;
+      EXPECT_TRUE(pictures[0][frame].pixels == pictures[0][0].pixels) << "frame " << frame;
+    }
   }
 }
 
