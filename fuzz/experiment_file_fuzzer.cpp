@@ -1,6 +1,6 @@
 // Fuzz target: experiment file text (TOML) → Experiment, through toml++ and our validation.
 // Every rejection must be an ExperimentFileError (one line naming file:line), nothing else.
-// fuzz-sources: study/design/experiment_file.cpp study/design/session_flow_file.cpp study/design/stimulus_checks.cpp study/design/style_files.cpp
+// fuzz-sources: study/design/experiment_file.cpp study/design/participant_texts.cpp study/design/session_flow_file.cpp study/design/stimulus_checks.cpp study/design/style_files.cpp
 #include <cstddef>
 #include <cstdint>
 #include <string>
