@@ -121,7 +121,7 @@ class FragmentBuffer final : public Fill {
   // u's lighting model (withLighting; compiled on the first frame that model is drawn).
   const gpu::ShaderProgram& shadingFill(const char* fragmentShader, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
-  std::uint32_t prefixSumOnHost();  // the same heads, covered pixels and counters, summed by host code
+  std::uint32_t prefixSumOnHost();  // the same heads, covered pixels and fragment count, summed by host code
   void ensureHeads();  // this frame's prefix sum (heads, fragment count) and a pool that holds it
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();

@@ -27,12 +27,10 @@ void readOutputRect(const gpu::Buffer& output, core::Image& image, PixelRect rec
   }
   if (rect.pixels() == 0) return;
   const std::size_t rowBytes = w * sizeof(glm::vec4);
-  const auto* const mapped = static_cast<const glm::vec4*>(
-      glMapNamedBufferRange(output.id(), GLintptr(rect.y0 * rowBytes), GLsizeiptr(rect.height() * rowBytes), GL_MAP_READ_BIT));
-  if (!mapped) throw gpu::GlError("mapping a compositor's output for reading failed");
+  const gpu::MappedRead rows(output, rect.height() * rowBytes, rect.y0 * rowBytes);
+  const glm::vec4* const mapped = rows.as<glm::vec4>();
   for (int y = rect.y0; y < rect.y1; ++y)
     std::memcpy(&image.pixels[(h - 1 - y) * w + rect.x0], mapped + (y - rect.y0) * w + rect.x0, rect.width() * sizeof(glm::vec4));
-  glUnmapNamedBuffer(output.id());
 }
 
 PixelRect sceneFootprint(const FrameContext& frame) {
