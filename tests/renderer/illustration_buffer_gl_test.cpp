@@ -307,7 +307,7 @@ TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
 // for those only (issue #29: the sort, smart transparency's connect and compose passes): exactly
 // the pixels with a count above 0, for the slot fill, the scatter fill and the linked lists, and
 // none for a frame without fragments. Summed by host code (the default where the GL runs on the
-// CPU, as here) and by buffer/prefix_sum.comp: the same heads (each the sum of the counts before
+// CPU) and by buffer/prefix_sum.comp: the same heads (each the sum of the counts before
 // it), covered pixels, fragment count and sorted records.
 TEST(IllustrationBuffer, ThePrefixSumListsThePixelsThatHoldAFragment) {
   tlab::gpu::ShaderCache shaders;
@@ -319,7 +319,6 @@ TEST(IllustrationBuffer, ThePrefixSumListsThePixelsThatHoldAFragment) {
     FillMethod method;
     bool slots;  // lists of up to 8 fit the first frame's slots; 12 make it scatter
   };
-  EXPECT_TRUE(tlab::gpu::hostPassesWanted()) << "llvmpipe runs on the CPU";
   bool singleFragments = false;  // some pixel holds exactly one fragment (an open surface)
   for (const Case& c : {Case{"builtin:nested-spheres?n=3", FillMethod::CountScatter, true},
                         Case{"builtin:nested-spheres?n=6", FillMethod::CountScatter, false},

@@ -269,10 +269,11 @@ TEST(SmartTransparency, RunsOnlyThePassesItNeeds) {
 
 // RenderRequest::timeParts (tlab bench render --scene ... --parts): the passes' parts are listed
 // by name under their pass — the solve's frontier steps as one part where they run as host code
-// (llvmpipe's default), as many parts as the solve says it ran them where they run as the shader
-// (TLAB_HOST_PASSES=off) — each part within its pass's time; and the picture is the one an
+// (TLAB_HOST_PASSES=on, llvmpipe's default), as many parts as the solve says it ran them where they
+// run as the shader (off) — each part within its pass's time; and the picture is the one an
 // untimed frame gives, either way.
 TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
+  const ScopedEnv hostCode("TLAB_HOST_PASSES", "on");  // (as by default on llvmpipe; the shader's below)
   Renderer renderer(loadScene("builtin:nested-spheres?n=2"));
   RenderRequest r;
   r.width = 48;
