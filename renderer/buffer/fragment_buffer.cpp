@@ -4,8 +4,10 @@
 #include <numeric>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 #include <utility>
 
+#include "renderer/buffer/host_sort.hpp"
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/frame/frame_context.hpp"
 
@@ -47,7 +49,7 @@ std::string fillMethodName(FillMethod m) { return m == FillMethod::CountScatter 
 FragmentBuffer::FragmentBuffer(gpu::ShaderCache& shaders, int width, int height, FragmentLayout layout,
                                FillMethod method, std::size_t initialCapacity, std::size_t maxBytes)
     : width_(width), height_(height), layout_(std::move(layout)), method_(method), maxBytes_(maxBytes), shaders_(shaders),
-      prefixSumOnHost_(gpu::hostPassesWanted()) {
+      prefixSumOnHost_(gpu::hostPassesWanted()), sortOnHost_(prefixSumOnHost_) {
   if (maxBytes_ == 0) {
     GLint64 limit = 0;
     glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
@@ -293,6 +295,10 @@ void FragmentBuffer::sortLists() {
     if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
     colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
   }
+  if (sortOnHost_ && method_ != FillMethod::LinkedList) {
+    sortListsOnHost(steps, plane);
+    return;
+  }
   // Lists in at most 8 slots all fit the sort's 8-register network (buffer/sort.comp).
   const bool shortLists = slotsUsed_ > 0 && slotsUsed_ <= 8;
   const SortSource source = shortLists ? SortSource::ShortSlots : slotsUsed_ > 0 ? SortSource::Slots : SortSource::Block;
@@ -304,6 +310,28 @@ void FragmentBuffer::sortLists() {
   glUniform1ui(program.uniform("uRegisterSortMax"), registers ? (shortLists ? 8u : 16u) : 0u);
   dispatchCovered(program);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  sorted_ = true;
+  listStepsWritten_ = steps;
+  colorPlaneWritten_ = plane;
+}
+
+// buffer/sort.comp's words, written by host code into the mapped buffers (buffer/host_sort.hpp).
+void FragmentBuffer::sortListsOnHost(bool steps, bool plane) {
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the fill's records and counts, for the host
+  const std::size_t n = pixels(), fragments = fragmentCount_, stride = layout_.stride;
+  const gpu::Buffer& unsorted = slotsUsed_ > 0 ? slots_ : fragsUnsorted_;
+  const std::size_t unsortedWords = slotsUsed_ > 0 ? std::size_t(slotsUsed_) * n * stride : fragments * stride;
+  {
+    const gpu::MappedRead records(unsorted, unsortedWords * 4), counts(pixelCount_, n * 4), heads(pixelHead_, n * 4),
+        covered(coveredPixels_, std::size_t(coveredCount_) * 4);
+    const gpu::MappedWrite sorted(fragsSorted_, fragments * stride * 4), colors(colorPlaneBuffer_, plane ? fragments * 4 : 0),
+        listSteps(listSteps_, steps ? n * 8 : 0);
+    const UnsortedLists in{records.as<std::uint32_t>(), layout_.stride, slotsUsed_ > 0 ? n : 0, counts.as<std::uint32_t>(),
+                           heads.as<std::uint32_t>(), covered.as<std::uint32_t>(), coveredCount_};
+    const SortedLists out{sorted.as<std::uint32_t>(), colors.as<std::uint32_t>(), layout_.colorOffset,
+                          listSteps.as<float>(), layout_.depthGradientOffset};
+    render::sortListsOnHost(in, out, std::thread::hardware_concurrency());
+  }
   sorted_ = true;
   listStepsWritten_ = steps;
   colorPlaneWritten_ = plane;

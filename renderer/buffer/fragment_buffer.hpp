@@ -85,6 +85,7 @@ class FragmentBuffer final : public Fill {
   // The per-pixel counts and heads themselves (what bindSorted binds), e.g. for texture views.
   const gpu::Buffer& pixelCountBuffer() const { return pixelCount_; }
   const gpu::Buffer& pixelHeadBuffer() const { return pixelHead_; }
+  const gpu::Buffer& coveredPixelBuffer() const { return coveredPixels_; }  // coveredPixelCount() words (heads ready)
   // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
   // each frame costs page faults whose price varies with the machine's load).
   const gpu::Buffer& composeOutput() const;
@@ -113,6 +114,10 @@ class FragmentBuffer final : public Fill {
   // The prefix sum as host code (on by default where the GL runs on the CPU) or as
   // buffer/prefix_sum.comp (off): the same heads, covered pixels and counts.
   void setPrefixSumOnHost(bool on) { prefixSumOnHost_ = on; }
+  // The sort as host code over the mapped buffers (buffer/host_sort.hpp; on by default where the
+  // GL runs on the CPU) or as buffer/sort.comp (off): the same sorted records, colour plane and
+  // list steps. Linked lists are always sorted by the shader.
+  void setSortOnHost(bool on) { sortOnHost_ = on; }
 
  private:
   void ensureCapacity(std::size_t fragments);
@@ -129,6 +134,7 @@ class FragmentBuffer final : public Fill {
   enum class SortSource { Block, Slots, ShortSlots };  // where the unsorted records sit (ShortSlots: at most 8)
   const gpu::ShaderProgram& sortProgram(SortSource source, bool colorPlane) const;
   void sortLists();
+  void sortListsOnHost(bool steps, bool plane);
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
   int width_, height_;
@@ -169,6 +175,7 @@ class FragmentBuffer final : public Fill {
   // buffer/prefix_sum.comp; the same words either way (tests compare).
   bool prefixSumOnHost_;
   std::vector<std::uint32_t> hostHeads_, hostCovered_;  // prefixSumOnHost's, kept between frames
+  bool sortOnHost_;  // see setSortOnHost()
   std::size_t triangles_ = 0;  // of the last build's scene: the register sort's keys hold triangle * 16
 };
 

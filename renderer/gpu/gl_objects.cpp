@@ -47,7 +47,7 @@ Buffer::Buffer(std::size_t bytes, const void* data) {
   bytes_ = bytes;
   // GL rejects zero-sized storage; keep one word so binding stays valid.
   glNamedBufferStorage(id, static_cast<GLsizeiptr>(bytes == 0 ? 4 : bytes), data,
-                       GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT);
+                       GL_DYNAMIC_STORAGE_BIT | GL_MAP_READ_BIT | GL_MAP_WRITE_BIT);
   checkGl("allocating a buffer of " + std::to_string(bytes) + " bytes");
 }
 
@@ -93,6 +93,17 @@ MappedRead::MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offs
 }
 
 MappedRead::~MappedRead() {
+  if (data_) glUnmapNamedBuffer(id_);
+}
+
+MappedWrite::MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset, bool readable) : id_(buffer.id()) {
+  if (bytes == 0) return;
+  const GLbitfield access = GL_MAP_WRITE_BIT | (readable ? GL_MAP_READ_BIT : 0);
+  data_ = glMapNamedBufferRange(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), access);
+  if (!data_) throw GlError("mapping " + std::to_string(bytes) + " bytes of a buffer for writing failed");
+}
+
+MappedWrite::~MappedWrite() {
   if (data_) glUnmapNamedBuffer(id_);
 }
 

@@ -114,10 +114,29 @@ class MappedRead {
   const void* data_ = nullptr;
 };
 
+// A view of a buffer's bytes [offset, offset + bytes) in host memory for writing (and reading,
+// where `readable`), for as long as it lives (RAII as MappedRead). The mapping waits for the GL's
+// use of the buffer; what the host writes is the buffer's from the unmapping on (on a CPU
+// rasterizer, written straight into its memory). Bytes of the range the host leaves unwritten keep
+// their contents (the range is not invalidated).
+class MappedWrite {
+ public:
+  MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0, bool readable = false);
+  ~MappedWrite();
+  MappedWrite(const MappedWrite&) = delete;
+  MappedWrite& operator=(const MappedWrite&) = delete;
+  template <class T>
+  T* as() const { return static_cast<T*>(data_); }
+
+ private:
+  GLuint id_ = 0;
+  void* data_ = nullptr;
+};
+
 // Whether a GL of this GL_RENDERER string runs on the CPU: Mesa's llvmpipe or softpipe, SwiftShader.
 bool rendererRunsOnCpu(std::string_view glRenderer);
-// Whether the few passes that have a host-code twin (the fill's prefix sum, the solve's frontier
-// steps) run it: TLAB_HOST_PASSES=on or off, or by default (auto) where the current context's GL
+// Whether the few passes that have a host-code twin (the fill's prefix sum, the sort, the connect
+// pass's phase 2, the solve's frontier steps) run it: TLAB_HOST_PASSES=on or off, or by default (auto) where the current context's GL
 // runs on the CPU — there a loop over a frame's pixels, or over a few thousand scattered
 // fragments, costs less than the dispatches of a shader run lane by lane (issue #29). The results
 // are the same words either way (tests compare both). Throws GlError for another value.

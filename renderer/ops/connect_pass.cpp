@@ -1,9 +1,13 @@
 #include "renderer/ops/connect_pass.hpp"
 
+#include <optional>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_error.hpp"
+#include "renderer/ops/boundary_conditions.hpp"
 
 namespace tlab::render {
 
@@ -21,6 +25,35 @@ void writeSeeds(gpu::ShaderCache& shaders, TransparencyFields& fields, Field fie
   glUniform1f(program.uniform("uValue"), 1.0f);
   TransparencyFields::dispatchOnList(program, seeds);
 }
+
+// Phase 2 (ops/connect.comp) as host code over the mapped buffers (ops/boundary_conditions.hpp):
+// the flags, β and γ in their output copies (where not listed) or the seed lists, and the links
+// from their pair bits (where phase 1 kept them so).
+void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks, bool listSeeds) {
+  const std::size_t pixels = buffer.pixels(), n = fields.fragments();
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // phases 1 and 3's words, for the host
+  std::vector<std::uint32_t> seeds[2];  // β's, γ's
+  {
+    const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
+        covered(buffer.coveredPixelBuffer(), std::size_t(buffer.coveredPixelCount()) * 4);
+    std::optional<gpu::MappedRead> pairs;
+    if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
+    const gpu::MappedWrite links(fields.links(), n * sizeof(glm::uvec4), 0, true), flags(fields.flags(), n * 4);
+    std::optional<gpu::MappedWrite> beta, gamma;
+    if (!listSeeds && fields.hasBeta()) beta.emplace(fields.output(Field::Beta), n * 4);
+    if (!listSeeds && fields.hasGamma()) gamma.emplace(fields.output(Field::Gamma), n * 4);
+    const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(),
+                           covered.as<std::uint32_t>(), buffer.coveredPixelCount()};
+    setBoundaryConditionsOnHost(grid, {links.as<glm::uvec4>(), pairs ? pairs->as<glm::uvec4>() : nullptr, flags.as<std::uint32_t>(),
+                                       beta ? beta->as<float>() : nullptr, gamma ? gamma->as<float>() : nullptr,
+                                       listSeeds && fields.hasBeta() ? &seeds[0] : nullptr,
+                                       listSeeds && fields.hasGamma() ? &seeds[1] : nullptr},
+                                std::thread::hardware_concurrency());
+  }
+  if (listSeeds && fields.hasBeta()) TransparencyFields::writeList(fields.frontier(Field::Beta), seeds[0]);
+  if (listSeeds && fields.hasGamma()) TransparencyFields::writeList(fields.frontier(Field::Gamma), seeds[1]);
+}
+
 }  // namespace
 
 std::unique_ptr<TransparencyFields> connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& shaders,
@@ -162,7 +195,12 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     fields.setLinksStored(false);
   } else {
     if (listed > 0) run("3", listed);
-    run("2");
+    // Phase 2 as host code where the host passes run (gpu::hostPassesWanted), unless Eq. 5's α
+    // varies (left to the shader's pow, whose last bit the host's need not match).
+    if (gpu::hostPassesWanted() && !settings.adaptiveAlpha)
+      timePart(timer, "connect phase 2 on the host", [&] { setBoundaryConditions(buffer, fields, linkMasks, listSeeds); });
+    else
+      run("2");
     // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make
     // those current.
     fields.swap(Field::Alpha);

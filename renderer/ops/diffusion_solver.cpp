@@ -15,6 +15,27 @@ constexpr GLuint kChangedBinding = 19;              // BIND_CHANGED
 constexpr GLuint kLinks = 10, kFlags = 17;           // BIND_LINKS, BIND_FLAGS
 constexpr GLuint kFrontierIn = 23, kFrontierOut = 24;
 
+// The frontier steps' checks (the shader's and the host code's), the full steps' own: after steps
+// 1, 2, 4, 8, ... the steps stop where the field has not moved since the last check, so both run
+// the steps the full steps run. A step changed the field iff it listed a fragment, and a step after
+// one that listed none has nothing to spread from: the field moved since the last check iff the
+// first step after it listed something (all a caller is asked for, the shader's count a read-back).
+class SettleChecks {
+ public:
+  bool asksWhetherMoved(int step) const { return step == lastCheck_ + 1; }  // steps 0-based
+  void setMoved(bool moved) { movedSinceCheck_ = moved; }
+  bool stopsAfter(int step) {
+    if ((step & (step + 1)) != 0) return false;
+    if (!movedSinceCheck_) return true;
+    lastCheck_ = step;
+    return false;
+  }
+
+ private:
+  int lastCheck_ = -1;  // the step of the last check
+  bool movedSinceCheck_ = false;
+};
+
 void run(const gpu::ShaderProgram& program, std::size_t fragments, double lambda) {
   program.use();  // (callers may have set further uniforms on it already)
   glUniform1ui(program.uniform("uFragments"), static_cast<GLuint>(fragments));
@@ -188,8 +209,7 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
   glUniform1ui(stepProgram.uniform("uFreeBit"), freeBit);
   int run = 0;
   bool raisedOutput = false;  // whether the last step raised the output copy
-  int lastCheck = -1;         // the step of the last check (0-based)
-  bool movedSinceCheck = false;
+  SettleChecks checks;
   for (int i = 0; i < steps; ++i) {
     const bool readCurrent = i % 2 == 0;  // step 1 reads the current copy and raises the other
     (readCurrent ? fields.current(field) : fields.output(field)).bindBase(GL_SHADER_STORAGE_BUFFER, kFieldIn);
@@ -203,15 +223,8 @@ int DiffusionSolver::spreadFrontier(TransparencyFields& fields, Field field, dou
              [&] { TransparencyFields::dispatchOnList(stepProgram, *previous); });
     raisedOutput = readCurrent;
     ++run;
-    // The same checks as the full steps' (after steps 1, 2, 4, 8, ..., whether the field moved
-    // since the last check), so the same steps are run. A step changed the field iff it listed a
-    // fragment, and a step after one that listed none has nothing to spread from: the field moved
-    // since the last check iff the first step after it listed something.
-    if (i == lastCheck + 1) movedSinceCheck = fields.listCount(*changed) > 0;
-    if ((i & (i + 1)) == 0) {
-      if (!movedSinceCheck) break;
-      lastCheck = i;
-    }
+    if (checks.asksWhetherMoved(i)) checks.setMoved(fields.listCount(*changed) > 0);
+    if (checks.stopsAfter(i)) break;
     std::swap(previous, changed);
   }
   if (raisedOutput) fields.swap(field);
@@ -241,8 +254,9 @@ int DiffusionSolver::spreadFrontierOnHost(TransparencyFields& fields, Field fiel
   const float lambdaF = static_cast<float>(lambda);
   std::vector<std::uint8_t> raised(n, 0);  // raised in this step (cleared from `changed` after it)
   std::vector<float> offers;
-  int run = 0, lastCheck = -1;
-  bool movedSinceCheck = false, moved = false;
+  int run = 0;
+  bool moved = false;
+  SettleChecks checks;
   for (int i = 0; i < steps; ++i) {
     offers.resize(previous.size());
     for (std::size_t k = 0; k < previous.size(); ++k) offers[k] = u[previous[k]] - lambdaF;  // Eq. 9's u_j − λ_u
@@ -260,11 +274,8 @@ int DiffusionSolver::spreadFrontierOnHost(TransparencyFields& fields, Field fiel
     for (const std::uint32_t f : changed) raised[f] = 0;
     moved = moved || !changed.empty();
     ++run;
-    if (i == lastCheck + 1) movedSinceCheck = !changed.empty();  // spreadFrontier's checks
-    if ((i & (i + 1)) == 0) {
-      if (!movedSinceCheck) break;
-      lastCheck = i;
-    }
+    if (checks.asksWhetherMoved(i)) checks.setMoved(!changed.empty());
+    if (checks.stopsAfter(i)) break;
     std::swap(previous, changed);
   }
   if (moved) fields.current(field).upload(u.data(), n * sizeof(float));

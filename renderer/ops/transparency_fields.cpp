@@ -1,5 +1,6 @@
 #include "renderer/ops/transparency_fields.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <stdexcept>
 
@@ -53,6 +54,14 @@ gpu::Buffer& TransparencyFields::frontier(Field field) {
 
 void TransparencyFields::clearList(const gpu::Buffer& list) {
   list.setFirstQuad({0, 1, 1, 0});  // groups, 1, 1, count; written by the GL, not the host (see readSmall)
+}
+
+void TransparencyFields::writeList(const gpu::Buffer& list, const std::vector<std::uint32_t>& items) {
+  constexpr std::uint32_t kGroup = 64, kMaxGroups = 65535;  // FRONTIER_GROUP, FRONTIER_MAX_GROUPS of ops/field_bindings.glsl
+  const auto count = static_cast<std::uint32_t>(items.size());
+  const std::uint32_t header[4] = {std::min((count + kGroup - 1) / kGroup, kMaxGroups), 1, 1, count};
+  list.upload(header, sizeof header);
+  list.upload(items.data(), items.size() * 4, sizeof header);
 }
 
 void TransparencyFields::setSeedsListed(bool listed) {

@@ -71,6 +71,8 @@ class TransparencyFields {
   // where the connect pass lists each field's seeds, frontier(Alpha) a spare list.
   gpu::Buffer& frontier(Field field);
   static void clearList(const gpu::Buffer& list);  // no entries (and no groups to dispatch)
+  // The header and `items` written from the host (the connect pass's phase 2 as host code).
+  static void writeList(const gpu::Buffer& list, const std::vector<std::uint32_t>& items);
   std::uint32_t listCount(const gpu::Buffer& list) const;
   // Reads up to 16 bytes of a large buffer the passes just wrote (a list's count, the connect
   // pass's work header) through a small staging buffer (gpu::Buffer::downloadThrough). On an

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <thread>
 
+#include "core/parallel_shares.hpp"
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/ops/segment_bvh.hpp"
 
@@ -25,19 +26,13 @@ float maxDistanceFromCentre(const TriangleMesh& mesh) {
   return std::max(d, 1e-12f);
 }
 
-// Runs body(i) for i in [0, n) on every hardware thread.
+// Runs body(i) for i in [0, n) on every hardware thread (up to 64), in shares of at least 4096.
 template <typename F>
 void parallelFor(std::size_t n, F&& body) {
-  const std::size_t threads = std::clamp<std::size_t>(std::thread::hardware_concurrency(), 1, 64);
-  if (threads == 1 || n < 4096) {
-    for (std::size_t i = 0; i < n; ++i) body(i);
-    return;
-  }
-  std::vector<std::jthread> workers;
-  for (std::size_t t = 0; t < threads; ++t)
-    workers.emplace_back([&, t] {
-      for (std::size_t i = n * t / threads; i < n * (t + 1) / threads; ++i) body(i);
-    });
+  const unsigned threads = std::min(std::thread::hardware_concurrency(), 64u);
+  core::forEachShare(n, core::sharesFor(n, 4096, threads), [&](std::size_t from, std::size_t to, std::size_t) {
+    for (std::size_t i = from; i < to; ++i) body(i);
+  });
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 #include "renderer/scene/scene_source.hpp"
 #include "tests/renderer/smart_rig.hpp"
 #include "tests/support/gl_fixture.hpp"
+#include "tests/support/scoped_env.hpp"
 
 using namespace tlab::render;
 using namespace tlab::testing;
@@ -417,4 +418,57 @@ TEST(NeighborLinks, PhaseTwoIsLeftOutWhereEveryFragmentIsLinkedAllRound) {
   r.style = "constant";
   r.settings = {{"alpha", "0.45"}};
   EXPECT_EQ(renderer.render(r).pixels, smart.pixels);
+}
+
+// Phase 2 as host code (ops/boundary_conditions.hpp: the default where the GL runs on the CPU) and
+// as the shader (TLAB_HOST_PASSES=off) leave the same links, flags and fields, and list the same
+// seeds (in any order, as the shader's atomics do): links kept as words and as pair bits (lists of
+// 9 to 16, and pairs the fast path could not settle), the seeds listed (Eq. 9) or stored as β and
+// γ values (Eq. 8 spreading), and a stack linked all round (phase 2 run for every field's reader).
+TEST(NeighborLinks, PhaseTwoAsHostCodeLeavesTheShadersFields) {
+  struct Case {
+    Scene scene;
+    int w, h;
+    NeighborSearch search;
+  };
+  const std::vector<Case> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
+                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::Bounded},
+                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
+                                   {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
+                                   {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
+                                   {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
+                                   {loadScene("builtin:torus"), 40, 30, NeighborSearch::AllPairs}};
+  int withSeeds = 0, withBits = 0;
+  for (const auto& c : cases) {
+    for (const char* spread : {"max", "diffusion"}) {
+      SCOPED_TRACE(c.scene.name + " " + std::to_string(int(c.search)) + " " + spread);
+      SmartRig rig(c.scene, c.w, c.h, {{"spread", spread}});
+      const float radius = rig.scene.boundingSphere().radius;
+      std::unique_ptr<TransparencyFields> fields[2];  // host code, shader
+      for (const bool onHost : {true, false}) {
+        const ScopedEnv passes("TLAB_HOST_PASSES", onHost ? "on" : "off");
+        fields[onHost ? 0 : 1] = std::make_unique<TransparencyFields>();
+        connectFragments(*rig.buffer, rig.shaders, rig.smart, radius, *fields[onHost ? 0 : 1], c.search);
+      }
+      const TransparencyFields &host = *fields[0], &shader = *fields[1];
+      EXPECT_EQ(host.linksFromPairBits(), shader.linksFromPairBits());
+      withBits += host.linksFromPairBits();
+      EXPECT_EQ(host.readLinks(), shader.readLinks());
+      EXPECT_EQ(host.readFlags(), shader.readFlags());
+      for (Field f : {Field::Alpha, Field::Beta, Field::Gamma}) EXPECT_EQ(host.read(f), shader.read(f));
+      EXPECT_EQ(host.seedsListed(), std::string(spread) == "max");
+      EXPECT_EQ(shader.seedsListed(), host.seedsListed());
+      if (host.seedsListed())
+        for (Field f : {Field::Beta, Field::Gamma}) {
+          auto a = fields[0]->readList(f), b = fields[1]->readList(f);
+          withSeeds += !a.empty();
+          std::sort(a.begin(), a.end());
+          std::sort(b.begin(), b.end());
+          EXPECT_EQ(a, b);
+          EXPECT_EQ(std::adjacent_find(a.begin(), a.end()), a.end()) << "each seed listed once";
+        }
+    }
+  }
+  EXPECT_GT(withSeeds, 4);
+  EXPECT_GT(withBits, 2);
 }

@@ -288,7 +288,7 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   std::map<std::string, int> counts;
   for (const auto& p : timed.parts) counts[p.name] = p.count;
   // The second frame fills straight into slots as long as the first frame's lists.
-  for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2",
+  for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2 on the host",
                            "solve beta frontier on the host", "compose read-back"})
     EXPECT_TRUE(counts.count(name)) << name;
   EXPECT_EQ(counts["connect phase 1"], 1);
@@ -305,6 +305,8 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
     for (const auto& p : steps.parts) stepCounts[p.name] = p.count;
     EXPECT_EQ(stepCounts["solve beta frontier step"], std::stoi(beta.substr(after.size()))) << beta;
     EXPECT_EQ(stepCounts.count("solve beta frontier on the host"), 0u);
+    EXPECT_EQ(stepCounts["connect phase 2"], 1);
+    EXPECT_EQ(stepCounts.count("connect phase 2 on the host"), 0u);
     EXPECT_EQ(steps.operations, timed.operations);
   }
   for (const auto& [pass, ms] : timed.passMilliseconds) {
@@ -321,11 +323,11 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   }
 }
 
-// The passes with a host-code twin (the fill's prefix sum, the solve's frontier steps: the default
-// where the GL runs on the CPU) and their shaders (TLAB_HOST_PASSES=off) draw the same pictures,
-// bit for bit: smart transparency with silhouettes and halos, adaptive α and halos off, the other
-// buffer styles; lists that fit the slots, lists that outgrow them (the scatter fill, then slots),
-// and two frames of each renderer.
+// The passes with a host-code twin (the fill's prefix sum, the sort, the connect pass's phase 2,
+// the solve's frontier steps: the default where the GL runs on the CPU) and their shaders
+// (TLAB_HOST_PASSES=off) draw the same pictures, bit for bit: smart transparency with silhouettes
+// and halos, adaptive α, halos off and Eq. 8 spreading, the other buffer styles; lists that fit the
+// slots, lists that outgrow them (the scatter fill, then slots), and two frames of each renderer.
 TEST(SmartTransparency, HostPassesAndTheirShadersDrawTheSamePictures) {
   struct Case {
     const char* source;
@@ -337,6 +339,7 @@ TEST(SmartTransparency, HostPassesAndTheirShadersDrawTheSamePictures) {
       {"builtin:nested-spheres?n=6", "smart", {{"lambda_gamma", "0.3"}}},
       {"builtin:open-cylinders", "smart", {{"alpha_init", "adaptive"}, {"iterations", "5"}}},
       {"builtin:nested-spheres?n=3", "smart", {{"halos", "off"}}},
+      {"builtin:nested-spheres?n=6", "smart", {{"spread", "diffusion"}}},
       {"builtin:nested-spheres?n=6", "iris", {}},
       {"builtin:torus", "constant", {}},
       {"builtin:open-cylinders", "view-dependent", {}},

@@ -2,7 +2,8 @@
 // merge network give the very sorted buffer of the insertion sort in the order buffer, on lists
 // of every length from 1 to 20 (the network's padding from 15 keys to none; the order buffer past
 // 16) with ties in depth between near and far positions of a list, from the slots and from the
-// scatter pass.
+// scatter pass. The sort as host code (buffer/host_sort.hpp, the default where the GL runs on the
+// CPU) writes the same words: records, colour plane and list steps.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -41,46 +42,73 @@ Scene nestedSquares(int period = 10, int squares = 20) {
   return s;
 }
 
+enum class Sorter { Registers, OrderBuffer, HostCode };
+
+// What a build's sort wrote: the records, and for the covered pixels the colour plane and each
+// list's steps (the floats' bits).
+struct Sorted {
+  std::vector<std::uint32_t> records, colors, steps;
+  bool operator==(const Sorted&) const = default;
+};
+
 // Two builds (the first may overflow the 8 starting slots and scatter; the second fills slots)
-// of the same buffer, sorting in registers or only in the order buffer: the sorted records.
-std::vector<std::vector<std::uint32_t>> sortedBuilds(const Scene& scene, int size, bool registers,
-                                                     std::vector<std::uint32_t>& slots, std::vector<std::uint32_t>& counts) {
+// of the same buffer, sorted by the shader in registers or only in the order buffer, or by host
+// code: what each sort wrote.
+std::vector<Sorted> sortedBuilds(const Scene& scene, int size, Sorter sorter, std::vector<std::uint32_t>& slots,
+                                 std::vector<std::uint32_t>& counts) {
   GpuScene gpu(scene);
   tlab::gpu::ShaderCache shaders;
   const SmartStyle style;
   const StyleParams params = style.resolve({});
   FragmentBuffer buffer(shaders, size, size, FragmentLayout(style.properties(params, {gpu.componentCount()})),
                         FillMethod::CountScatter);
-  buffer.setRegisterSort(registers);
+  buffer.setRegisterSort(sorter == Sorter::Registers);
+  buffer.setSortOnHost(sorter == Sorter::HostCode);
+  buffer.setColorPlane(true);
   const Camera camera = scene.camera ? *scene.camera : fitCamera(scene.boundingSphere(), 1.0f);
   RasterUniforms u;
   u.view = camera.view();
   u.projection = camera.projection(1.0f);
   PassTimer timer(false);
-  std::vector<std::vector<std::uint32_t>> out;
+  std::vector<Sorted> out;
   for (int frame = 0; frame < 2; ++frame) {
     buffer.build(gpu, u, timer);
     slots.push_back(buffer.slotsUsed());
-    out.push_back(buffer.sortedRecords(0, buffer.fragmentCount()));
+    Sorted sorted;
+    const std::size_t n = buffer.fragmentCount();
+    sorted.records = buffer.sortedRecords(0, n);
+    std::vector<std::uint32_t> colors(n), steps(buffer.pixels() * 2);
+    EXPECT_TRUE(buffer.colorPlane() && buffer.listSteps());
+    buffer.colorPlane()->download(colors.data(), n * 4);
+    buffer.listSteps()->download(steps.data(), steps.size() * 4);
+    counts = buffer.pixelCounts();
+    for (std::size_t p = 0; p < counts.size(); ++p)  // (the steps of an empty pixel are left as they were)
+      if (counts[p] > 0) sorted.steps.insert(sorted.steps.end(), {steps[2 * p], steps[2 * p + 1]});
+    sorted.colors = colors;
+    out.push_back(sorted);
   }
-  counts = buffer.pixelCounts();
   return out;
 }
 
 }  // namespace
 
-TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
+TEST(SortPass, RegisterSortAndHostCodeEqualInsertionSortOnEveryListLength) {
   for (const auto& [scene, size] : {std::pair{nestedSquares(), 96}, std::pair{nestedSquares(3), 96},
                                     std::pair{nestedSquares(3, 8), 96}, std::pair{loadScene("builtin:torus"), 64},
                                     std::pair{loadScene("builtin:quad-stack?n=16&m=3"), 24},
+                                    std::pair{loadScene("builtin:quad-stack?n=40&m=3"), 24},  // past 32: host code's stable_sort
                                     std::pair{loadScene("builtin:nested-spheres?n=3"), 48}}) {
-    std::vector<std::uint32_t> slotsA, slotsB, counts, countsB;
-    const auto registers = sortedBuilds(scene, size, true, slotsA, counts);
-    const auto reference = sortedBuilds(scene, size, false, slotsB, countsB);
+    std::vector<std::uint32_t> slotsA, slotsB, slotsC, counts, countsB, countsC;
+    const auto registers = sortedBuilds(scene, size, Sorter::Registers, slotsA, counts);
+    const auto reference = sortedBuilds(scene, size, Sorter::OrderBuffer, slotsB, countsB);
+    const auto host = sortedBuilds(scene, size, Sorter::HostCode, slotsC, countsC);
     EXPECT_EQ(slotsA, slotsB) << scene.name;
+    EXPECT_EQ(slotsC, slotsB) << scene.name;
     for (std::size_t frame = 0; frame < 2; ++frame) {
-      ASSERT_EQ(registers[frame].size(), reference[frame].size()) << scene.name;
-      EXPECT_EQ(registers[frame], reference[frame]) << scene.name << " frame " << frame;
+      ASSERT_EQ(registers[frame].records.size(), reference[frame].records.size()) << scene.name;
+      ASSERT_FALSE(reference[frame].steps.empty()) << scene.name;
+      EXPECT_TRUE(registers[frame] == reference[frame]) << scene.name << " frame " << frame;
+      EXPECT_TRUE(host[frame] == reference[frame]) << scene.name << " frame " << frame << ", host code";
     }
     if (scene.name == "nested-squares-3-8") {  // lists of 1..8 with ties, in 8 slots: the 8-register network
       const std::set<std::uint32_t> lengths(counts.begin(), counts.end());
@@ -98,13 +126,15 @@ TEST(SortPass, RegisterSortEqualsInsertionSortOnEveryListLength) {
 // checked on the host, independently of either sort; the scenes tie in depth in lists of up to 8
 // and of 9 to 16 (the halves of the network).
 TEST(SortPass, RegisterSortedListsAreInDepthThenTriangleOrder) {
-  for (const int period : {10, 3}) {
+  for (const auto& [period, sorter] : {std::pair{10, Sorter::Registers}, std::pair{3, Sorter::Registers},
+                                       std::pair{10, Sorter::HostCode}, std::pair{3, Sorter::HostCode}}) {
     std::vector<std::uint32_t> slots, counts;
-    const auto builds = sortedBuilds(nestedSquares(period), 96, true, slots, counts);
+    const auto builds = sortedBuilds(nestedSquares(period), 96, sorter, slots, counts);
     GpuScene gpu(nestedSquares(period));
     const SmartStyle style;
     const std::uint32_t stride = FragmentLayout(style.properties(style.resolve({}), {gpu.componentCount()})).stride;
-    for (const auto& records : builds) {
+    for (const auto& build : builds) {
+      const auto& records = build.records;
       std::size_t head = 0, tiesUpTo8 = 0, ties9To16 = 0;
       for (std::uint32_t n : counts) {
         for (std::uint32_t i = 1; i < n; ++i) {

@@ -1,0 +1,44 @@
+#pragma once
+// The connect pass's phase 2 (ops/connect.comp, TLAB_PHASE 2) as host code, for where the GL runs
+// on the CPU (issue #29): from each fragment's (mutual) links, the boundary conditions of Carnecky
+// Sec. 5.3 on β and γ and their b flags, and Eq. 9's seeds listed for the solve's frontier. The
+// words are the shader's (the seeds in pixel and layer order, where the shader's atomics list them
+// in any order; no reader depends on it). Eq. 5's adaptive α is left to the shader (its pow).
+// No GL here: the connect pass hands in its mapped buffers (ops/connect_pass.cpp).
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace tlab::render {
+
+struct CoveredGrid {
+  int width = 0, height = 0;
+  const std::uint32_t* counts = nullptr;   // fragments of each pixel
+  const std::uint32_t* heads = nullptr;    // each pixel's first fragment in the sorted lists
+  const std::uint32_t* covered = nullptr;  // the pixels that hold a fragment, in pixel order
+  std::size_t coveredCount = 0;
+};
+
+struct BoundaryConditions {
+  // Each fragment's 4 links (left, right, below, above; NO_NEIGHBOR 0xFFFFFFFF where none): read,
+  // and where `pairs` is given, written from its bits first (TLAB_LINK_MASKS).
+  glm::uvec4* links = nullptr;
+  // Per pixel: bits of the layers linked to the same layer right (.x) and above (.y), and .z bit i
+  // where pair i was listed for phase 3 (its links then are the words). Null: the links are words.
+  const glm::uvec4* pairs = nullptr;
+  std::uint32_t* flags = nullptr;  // written: FREE_ALPHA | FREE_BETA | FREE_GAMMA less those fixed
+  // β and γ at each fragment (1 at a seed, else 0), written where given.
+  float* beta = nullptr;
+  float* gamma = nullptr;
+  // The fragments where β (γ) starts above 0, appended where given.
+  std::vector<std::uint32_t>* betaSeeds = nullptr;
+  std::vector<std::uint32_t>* gammaSeeds = nullptr;
+};
+
+// Every covered pixel's fragments, the pixels shared out among up to `threads` threads (fewer where
+// there are few pixels); the seeds are listed in pixel and layer order however many there are.
+void setBoundaryConditionsOnHost(const CoveredGrid& grid, const BoundaryConditions& out, unsigned threads = 1);
+
+}  // namespace tlab::render
