@@ -278,6 +278,14 @@ void FragmentBuffer::ensureSorted() {
 }
 
 void FragmentBuffer::sortLists() {
+  const bool steps = layout_.properties.has(FragmentProperty::DepthGradient);
+  if (steps && listSteps_.size() < pixels() * 8) listSteps_ = gpu::Buffer(pixels() * 8);
+  const bool plane = colorPlane_ && layout_.properties.has(FragmentProperty::Color);
+  if (plane && colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
+  if (sortOnHost_ && method_ != FillMethod::LinkedList) {
+    sortListsOnHost(steps, plane);
+    return;
+  }
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
   pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
   pixelCursor_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCursor);
@@ -285,20 +293,8 @@ void FragmentBuffer::sortLists() {
   (slotsUsed_ > 0 ? slots_ : fragsUnsorted_).bindBase(GL_SHADER_STORAGE_BUFFER, kFragsUnsorted);
   fragsSorted_.bindBase(GL_SHADER_STORAGE_BUFFER, kFragsSorted);
   order_.bindBase(GL_SHADER_STORAGE_BUFFER, kOrder);
-  const bool steps = layout_.properties.has(FragmentProperty::DepthGradient);
-  if (steps) {
-    if (listSteps_.size() < pixels() * 8) listSteps_ = gpu::Buffer(pixels() * 8);
-    listSteps_.bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
-  }
-  const bool plane = colorPlane_ && layout_.properties.has(FragmentProperty::Color);
-  if (plane) {
-    if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
-    colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
-  }
-  if (sortOnHost_ && method_ != FillMethod::LinkedList) {
-    sortListsOnHost(steps, plane);
-    return;
-  }
+  if (steps) listSteps_.bindBase(GL_SHADER_STORAGE_BUFFER, kListSteps);
+  if (plane) colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
   // Lists in at most 8 slots all fit the sort's 8-register network (buffer/sort.comp).
   const bool shortLists = slotsUsed_ > 0 && slotsUsed_ <= 8;
   const SortSource source = shortLists ? SortSource::ShortSlots : slotsUsed_ > 0 ? SortSource::Slots : SortSource::Block;

@@ -86,26 +86,22 @@ void Buffer::downloadThrough(const Buffer& staging, void* data, std::size_t byte
   staging.download(data, bytes);
 }
 
-MappedRead::MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset) : id_(buffer.id()) {
+Mapping::Mapping(const Buffer& buffer, std::size_t bytes, std::size_t offset, GLbitfield access, const char* purpose)
+    : id_(buffer.id()) {
   if (bytes == 0) return;
-  data_ = glMapNamedBufferRange(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), GL_MAP_READ_BIT);
-  if (!data_) throw GlError("mapping " + std::to_string(bytes) + " bytes of a buffer for reading failed");
-}
-
-MappedRead::~MappedRead() {
-  if (data_) glUnmapNamedBuffer(id_);
-}
-
-MappedWrite::MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset, bool readable) : id_(buffer.id()) {
-  if (bytes == 0) return;
-  const GLbitfield access = GL_MAP_WRITE_BIT | (readable ? GL_MAP_READ_BIT : 0);
   data_ = glMapNamedBufferRange(id_, static_cast<GLintptr>(offset), static_cast<GLsizeiptr>(bytes), access);
-  if (!data_) throw GlError("mapping " + std::to_string(bytes) + " bytes of a buffer for writing failed");
+  if (!data_) throw GlError("mapping " + std::to_string(bytes) + " bytes of a buffer for " + purpose + " failed");
 }
 
-MappedWrite::~MappedWrite() {
+Mapping::~Mapping() {
   if (data_) glUnmapNamedBuffer(id_);
 }
+
+MappedRead::MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset)
+    : Mapping(buffer, bytes, offset, GL_MAP_READ_BIT, "reading") {}
+
+MappedWrite::MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset, bool readable)
+    : Mapping(buffer, bytes, offset, GL_MAP_WRITE_BIT | (readable ? GL_MAP_READ_BIT : 0), "writing") {}
 
 bool rendererRunsOnCpu(std::string_view name) {
   return name.starts_with("llvmpipe") || name.starts_with("softpipe") || name.find("SwiftShader") != std::string_view::npos;

@@ -97,49 +97,52 @@ class Buffer {
   std::size_t bytes_ = 0;
 };
 
-// A read-only view of a buffer's first bytes in host memory, for as long as it lives (RAII:
+// A buffer's bytes [offset, offset + bytes) mapped into host memory for as long as it lives (RAII:
 // glMapNamedBufferRange on construction, glUnmapNamedBuffer on destruction). The mapping waits for
-// the GL's writes to the buffer; on a CPU rasterizer it is the buffer's own memory, no copy.
-class MappedRead {
+// the GL's use of the buffer; on a CPU rasterizer it is the buffer's own memory, no copy. No bytes:
+// nothing is mapped. The base of MappedRead and MappedWrite.
+class Mapping {
  public:
-  MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0);
-  ~MappedRead();
-  MappedRead(const MappedRead&) = delete;
-  MappedRead& operator=(const MappedRead&) = delete;
-  template <class T>
-  const T* as() const { return static_cast<const T*>(data_); }
+  Mapping(const Mapping&) = delete;
+  Mapping& operator=(const Mapping&) = delete;
 
- private:
-  GLuint id_ = 0;
-  const void* data_ = nullptr;
-};
-
-// A view of a buffer's bytes [offset, offset + bytes) in host memory for writing (and reading,
-// where `readable`), for as long as it lives (RAII as MappedRead). The mapping waits for the GL's
-// use of the buffer; what the host writes is the buffer's from the unmapping on (on a CPU
-// rasterizer, written straight into its memory). Bytes of the range the host leaves unwritten keep
-// their contents (the range is not invalidated).
-class MappedWrite {
- public:
-  MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0, bool readable = false);
-  ~MappedWrite();
-  MappedWrite(const MappedWrite&) = delete;
-  MappedWrite& operator=(const MappedWrite&) = delete;
-  template <class T>
-  T* as() const { return static_cast<T*>(data_); }
+ protected:
+  Mapping(const Buffer& buffer, std::size_t bytes, std::size_t offset, GLbitfield access, const char* purpose);
+  ~Mapping();
+  void* data() const { return data_; }
 
  private:
   GLuint id_ = 0;
   void* data_ = nullptr;
 };
 
+// A read-only view of a buffer's bytes.
+class MappedRead : public Mapping {
+ public:
+  MappedRead(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0);
+  template <class T>
+  const T* as() const { return static_cast<const T*>(data()); }
+};
+
+// A view of a buffer's bytes for writing (and reading, where `readable`): what the host writes is
+// the buffer's from the unmapping on (on a CPU rasterizer, written straight into its memory). Bytes
+// of the range the host leaves unwritten keep their contents (the range is not invalidated).
+class MappedWrite : public Mapping {
+ public:
+  MappedWrite(const Buffer& buffer, std::size_t bytes, std::size_t offset = 0, bool readable = false);
+  template <class T>
+  T* as() const { return static_cast<T*>(data()); }
+};
+
 // Whether a GL of this GL_RENDERER string runs on the CPU: Mesa's llvmpipe or softpipe, SwiftShader.
 bool rendererRunsOnCpu(std::string_view glRenderer);
 // Whether the few passes that have a host-code twin (the fill's prefix sum, the sort, the connect
-// pass's phase 2, the solve's frontier steps) run it: TLAB_HOST_PASSES=on or off, or by default (auto) where the current context's GL
-// runs on the CPU — there a loop over a frame's pixels, or over a few thousand scattered
-// fragments, costs less than the dispatches of a shader run lane by lane (issue #29). The results
-// are the same words either way (tests compare both). Throws GlError for another value.
+// pass's phase 2, the solve's frontier steps) run it: TLAB_HOST_PASSES=on or off, or by default
+// (auto) where the current context's GL runs on the CPU — there a loop over a frame's pixels, or
+// over a few thousand scattered fragments, costs less than the dispatches of a shader run lane by
+// lane (issue #29). The results are the same words either way (tests compare both). Throws
+// GlError for another value. Read anew each time it is asked (by a fragment buffer or solver when
+// made, by the connect pass each frame: a getenv and a glGetString), so tests may switch it.
 bool hostPassesWanted();
 // TLAB_HOST_PASSES read alone (no GL needed): the contexts check it when made, so that a wrong
 // value is one line before any work. nullopt: auto.

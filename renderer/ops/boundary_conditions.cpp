@@ -2,8 +2,6 @@
 
 #include <array>
 
-#include "core/parallel_shares.hpp"
-
 namespace tlab::render {
 
 namespace {
@@ -11,10 +9,6 @@ namespace {
 constexpr std::uint32_t kNoNeighbor = 0xFFFFFFFFu;  // NO_NEIGHBOR of ops/field_bindings.glsl
 constexpr std::uint32_t kFreeAlpha = 1, kFreeBeta = 2, kFreeGamma = 4;
 constexpr std::array<glm::ivec2, 4> kDirections{glm::ivec2(-1, 0), glm::ivec2(1, 0), glm::ivec2(0, -1), glm::ivec2(0, 1)};
-
-bool inside(const CoveredGrid& g, glm::ivec2 q) { return q.x >= 0 && q.y >= 0 && q.x < g.width && q.y < g.height; }
-std::uint32_t indexAt(const CoveredGrid& g, glm::ivec2 q) { return std::uint32_t(q.y * g.width + q.x); }
-std::uint32_t countAt(const CoveredGrid& g, glm::ivec2 q) { return inside(g, q) ? g.counts[indexAt(g, q)] : 0u; }
 
 // A pixel's pair words and those of the pixels to its left and below (their pairs with it), for
 // the links kept as bits (connect.comp's TLAB_LINK_MASKS branch of phase 2).
@@ -27,10 +21,10 @@ PairsAround pairsAround(const CoveredGrid& g, const glm::uvec4* pairs, std::uint
   PairsAround p;
   p.own = pairs[pixel];
   const glm::ivec2 leftQ = xy + kDirections[0], belowQ = xy + kDirections[2];
-  p.leftHasList = countAt(g, leftQ) > 0u;
-  p.belowHasList = countAt(g, belowQ) > 0u;
-  if (p.leftHasList) p.left = pairs[indexAt(g, leftQ)];
-  if (p.belowHasList) p.below = pairs[indexAt(g, belowQ)];
+  p.leftHasList = g.countAt(leftQ) > 0u;
+  p.belowHasList = g.countAt(belowQ) > 0u;
+  if (p.leftHasList) p.left = pairs[g.indexAt(leftQ)];
+  if (p.belowHasList) p.below = pairs[g.indexAt(belowQ)];
   p.anyListed = (p.own.z | (p.leftHasList ? p.left.z & 1u : 0u) | (p.belowHasList ? p.below.z & 2u : 0u)) != 0u;
   return p;
 }
@@ -58,7 +52,7 @@ void setPixel(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t
   std::uint32_t outside = 0;  // adjacent pixels beyond the image edge
   for (int k = 0; k < 4; ++k) {
     const glm::ivec2 q = xy + kDirections[std::size_t(k)];
-    if (inside(g, q)) qHead[k] = g.heads[indexAt(g, q)];
+    if (g.inside(q)) qHead[k] = g.heads[g.indexAt(q)];
     else ++outside;
   }
   const PairsAround around = out.pairs ? pairsAround(g, out.pairs, pixel, xy) : PairsAround{};
@@ -95,15 +89,8 @@ void setBoundaryConditionsOnHost(const CoveredGrid& grid, const BoundaryConditio
   constexpr std::size_t kPixelsPerShareMin = 16384;
   const std::size_t n = grid.coveredCount, shares = core::sharesFor(n, kPixelsPerShareMin, threads);
   std::vector<Seeds> seeds(shares);
-  core::forEachShare(n, shares, [&](std::size_t from, std::size_t to, std::size_t share) {
-    if (from == to) return;
-    const auto width = std::uint32_t(grid.width);
-    std::uint32_t y = grid.covered[from] / width, rowStart = y * width;  // the covered pixels go up: rows counted, not divided
-    for (std::size_t k = from; k < to; ++k) {
-      const std::uint32_t pixel = grid.covered[k];
-      for (; pixel >= rowStart + width; rowStart += width) ++y;
-      setPixel(grid, out, pixel, glm::ivec2(int(pixel - rowStart), int(y)), seeds[share]);
-    }
+  forEachCoveredPixel(grid, shares, [&](std::uint32_t pixel, glm::ivec2 xy, std::size_t share) {
+    setPixel(grid, out, pixel, xy, seeds[share]);
   });
   for (const Seeds& s : seeds) {  // the shares in pixel order
     if (out.betaSeeds) out.betaSeeds->insert(out.betaSeeds->end(), s.beta.begin(), s.beta.end());

@@ -11,15 +11,9 @@
 
 #include <glm/glm.hpp>
 
-namespace tlab::render {
+#include "renderer/ops/covered_grid.hpp"
 
-struct CoveredGrid {
-  int width = 0, height = 0;
-  const std::uint32_t* counts = nullptr;   // fragments of each pixel
-  const std::uint32_t* heads = nullptr;    // each pixel's first fragment in the sorted lists
-  const std::uint32_t* covered = nullptr;  // the pixels that hold a fragment, in pixel order
-  std::size_t coveredCount = 0;
-};
+namespace tlab::render {
 
 struct BoundaryConditions {
   // Each fragment's 4 links (left, right, below, above; NO_NEIGHBOR 0xFFFFFFFF where none): read,

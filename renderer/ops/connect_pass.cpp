@@ -31,6 +31,13 @@ void writeSeeds(gpu::ShaderCache& shaders, TransparencyFields& fields, Field fie
 // from their pair bits (where phase 1 kept them so).
 void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks, bool listSeeds) {
   const std::size_t pixels = buffer.pixels(), n = fields.fragments();
+  constexpr Field kSeeded[2] = {Field::Beta, Field::Gamma};
+  // Per seeded field: its seeds as a list (Eq. 9's spreading), or its values in its output copy.
+  bool listed[2], valued[2];
+  for (int i = 0; i < 2; ++i) {
+    listed[i] = listSeeds && fields.has(kSeeded[i]);
+    valued[i] = !listSeeds && fields.has(kSeeded[i]);
+  }
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // phases 1 and 3's words, for the host
   std::vector<std::uint32_t> seeds[2];  // β's, γ's
   {
@@ -39,19 +46,18 @@ void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fie
     std::optional<gpu::MappedRead> pairs;
     if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
     const gpu::MappedWrite links(fields.links(), n * sizeof(glm::uvec4), 0, true), flags(fields.flags(), n * 4);
-    std::optional<gpu::MappedWrite> beta, gamma;
-    if (!listSeeds && fields.hasBeta()) beta.emplace(fields.output(Field::Beta), n * 4);
-    if (!listSeeds && fields.hasGamma()) gamma.emplace(fields.output(Field::Gamma), n * 4);
+    std::optional<gpu::MappedWrite> values[2];
+    for (int i = 0; i < 2; ++i)
+      if (valued[i]) values[i].emplace(fields.output(kSeeded[i]), n * 4);
     const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(),
                            covered.as<std::uint32_t>(), buffer.coveredPixelCount()};
     setBoundaryConditionsOnHost(grid, {links.as<glm::uvec4>(), pairs ? pairs->as<glm::uvec4>() : nullptr, flags.as<std::uint32_t>(),
-                                       beta ? beta->as<float>() : nullptr, gamma ? gamma->as<float>() : nullptr,
-                                       listSeeds && fields.hasBeta() ? &seeds[0] : nullptr,
-                                       listSeeds && fields.hasGamma() ? &seeds[1] : nullptr},
+                                       values[0] ? values[0]->as<float>() : nullptr, values[1] ? values[1]->as<float>() : nullptr,
+                                       listed[0] ? &seeds[0] : nullptr, listed[1] ? &seeds[1] : nullptr},
                                 std::thread::hardware_concurrency());
   }
-  if (listSeeds && fields.hasBeta()) TransparencyFields::writeList(fields.frontier(Field::Beta), seeds[0]);
-  if (listSeeds && fields.hasGamma()) TransparencyFields::writeList(fields.frontier(Field::Gamma), seeds[1]);
+  for (int i = 0; i < 2; ++i)
+    if (listed[i]) TransparencyFields::writeList(fields.frontier(kSeeded[i]), seeds[i]);
 }
 
 }  // namespace
@@ -127,7 +133,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   const bool listSeeds = settings.spreadByMax && (fields.hasBeta() || fields.hasGamma());
   if (listSeeds)
     for (Field f : {Field::Beta, Field::Gamma})
-      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) {
+      if (fields.has(f)) {
         TransparencyFields::clearList(fields.frontier(f));
         fields.frontier(f).bindBase(GL_SHADER_STORAGE_BUFFER, f == Field::Beta ? kSeedsBeta : kSeedsGamma);
       }
@@ -212,7 +218,7 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   if (!settings.adaptiveAlpha) fields.setUniform(Field::Alpha, float(settings.s));
   if (listSeeds)
     for (Field f : {Field::Beta, Field::Gamma})
-      if (f == Field::Beta ? fields.hasBeta() : fields.hasGamma()) {
+      if (fields.has(f)) {
         if (fields.allZero(f)) fields.setUniform(f, 0.0f);
         else writeSeeds(shaders, fields, f);
       }

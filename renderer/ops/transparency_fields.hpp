@@ -27,6 +27,7 @@ class TransparencyFields {
   std::size_t fragments() const { return fragments_; }
   bool hasBeta() const { return withBeta_; }
   bool hasGamma() const { return withGamma_; }
+  bool has(Field field) const { return field == Field::Alpha || (field == Field::Beta ? withBeta_ : withGamma_); }
   gpu::ShaderDefines defines() const;  // TLAB_HAS_BETA / TLAB_HAS_GAMMA
 
   // Binds links, flags, and the current value of each field as *_IN (and its other copy *_OUT).
