@@ -4,6 +4,8 @@
 #include <cstdint>
 #include <random>
 
+#include <glm/vec3.hpp>
+
 namespace tlab::core {
 
 class SeededRandom {
@@ -13,6 +15,15 @@ class SeededRandom {
   // Uniform in [0, 1) with 24 bits of resolution.
   float uniform() { return static_cast<float>(engine_() >> 8) * (1.0f / 16777216.0f); }
   float uniform(float lo, float hi) { return lo + (hi - lo) * uniform(); }
+  // A point with each coordinate uniform in [lo, hi), drawn z first, then y, then x: the order in
+  // which the first builds (GCC, a call's arguments last to first) drew the points of the flow
+  // surfaces' seed lines and the abstract worlds, kept so that those stay byte-identical.
+  glm::vec3 pointZFirst(float lo, float hi) {
+    const float z = uniform(lo, hi);
+    const float y = uniform(lo, hi);
+    const float x = uniform(lo, hi);
+    return {x, y, z};
+  }
   // Uniform integer in [0, n) (n > 0), by rejection: no modulo bias.
   std::uint32_t below(std::uint32_t n) {
     const std::uint32_t limit = UINT32_MAX - UINT32_MAX % n;

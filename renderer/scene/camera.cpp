@@ -79,6 +79,32 @@ glm::vec3 parseVec3(const std::string& s, const std::string& field) {
   return {v[0], v[1], v[2]};
 }
 
+// Throws where no view or projection can be built from c: eye and target apart (by a finite
+// distance), an up vector that is not zero and not along the line of sight, a look-at matrix a
+// float can hold, a field of view in (0, 180) degrees and 0 < near < far.
+void checkViewable(const Camera& c) {
+  const glm::vec3 sight = c.target - c.eye;
+  const float distance = glm::length(sight);
+  if (c.eye == c.target) throw std::invalid_argument("--camera: eye equals target");
+  if (!(distance > 0.0f)) throw std::invalid_argument("--camera: eye and target are too close together for a float");
+  if (!std::isfinite(distance)) throw std::invalid_argument("--camera: eye and target are too far apart");
+  const float upLength = glm::length(c.up);
+  if (!(upLength > 0.0f)) throw std::invalid_argument("--camera field 'up': must not be zero");
+  if (!std::isfinite(upLength)) throw std::invalid_argument("--camera field 'up': too long for a float (give a direction)");
+  if (!(glm::length(glm::cross(sight / distance, c.up / upLength)) > 1e-4f))
+    throw std::invalid_argument("--camera field 'up': points along the line of sight from eye to target; give one across it");
+  const glm::mat4 view = c.view();
+  const float turn = glm::determinant(glm::mat3(view));  // 1 for a proper look-at
+  if (!(std::abs(turn - 1.0f) < 1e-3f && finite(view)))
+    throw std::invalid_argument("--camera: no view a float can hold from this eye, target and up (give up as a direction about 1 long)");
+  if (!(c.fovyDegrees > 0.0f && c.fovyDegrees < 180.0f))
+    throw std::invalid_argument("--camera field 'fovy': must be in (0, 180) degrees");
+  if (!(c.nearPlane > 0.0f && c.farPlane > c.nearPlane))
+    throw std::invalid_argument("--camera: need 0 < near < far");
+  if (!finite(c.projection(1.0f)))
+    throw std::invalid_argument("--camera: near and far give no projection (they lie too far apart for a float)");
+}
+
 }  // namespace
 
 Camera parseCamera(const std::string& text, const Camera& base) {
@@ -99,27 +125,7 @@ Camera parseCamera(const std::string& text, const Camera& base) {
     else
       throw std::invalid_argument("--camera: unknown field '" + key + "' (known: eye, target, up, fovy, near, far)");
   }
-  // The view must be one a look-at matrix can be built from: eye and target apart (by a finite
-  // distance), and an up vector that is not zero and not along the line of sight.
-  const glm::vec3 sight = c.target - c.eye;
-  const float distance = glm::length(sight);
-  if (c.eye == c.target) throw std::invalid_argument("--camera: eye equals target");
-  if (!(distance > 0.0f)) throw std::invalid_argument("--camera: eye and target are too close together for a float");
-  if (!std::isfinite(distance)) throw std::invalid_argument("--camera: eye and target are too far apart");
-  const float upLength = glm::length(c.up);
-  if (!(upLength > 0.0f)) throw std::invalid_argument("--camera field 'up': must not be zero");
-  if (!std::isfinite(upLength)) throw std::invalid_argument("--camera field 'up': too long for a float (give a direction)");
-  if (!(glm::length(glm::cross(sight / distance, c.up / upLength)) > 1e-4f))
-    throw std::invalid_argument("--camera field 'up': points along the line of sight from eye to target; give one across it");
-  const float turn = glm::determinant(glm::mat3(c.view()));  // 1 for a proper look-at
-  if (!(std::abs(turn - 1.0f) < 1e-3f && finite(c.view())))
-    throw std::invalid_argument("--camera: no view a float can hold from this eye, target and up (give up as a direction about 1 long)");
-  if (!(c.fovyDegrees > 0.0f && c.fovyDegrees < 180.0f))
-    throw std::invalid_argument("--camera field 'fovy': must be in (0, 180) degrees");
-  if (!(c.nearPlane > 0.0f && c.farPlane > c.nearPlane))
-    throw std::invalid_argument("--camera: need 0 < near < far");
-  if (!finite(c.projection(1.0f)))
-    throw std::invalid_argument("--camera: near and far give no projection (they lie too far apart for a float)");
+  checkViewable(c);
   return c;
 }
 

@@ -62,11 +62,7 @@ std::vector<glm::dvec3> startPoints(const BenchmarkCase& c, int n) {
   core::SeededRandom random(17);
   std::vector<glm::dvec3> points;
   for (int i = 0; i < n; ++i) {
-    // One draw a statement: a call's arguments are evaluated in an order C++ leaves open.
-    const float z = random.uniform(-1.0f, 1.0f);
-    const float y = random.uniform(-1.0f, 1.0f);
-    const float x = random.uniform(-1.0f, 1.0f);
-    points.push_back(c.center + c.spread * glm::dvec3(x, y, z));
+    points.push_back(c.center + c.spread * glm::dvec3(random.pointZFirst(-1.0f, 1.0f)));
   }
   return points;
 }

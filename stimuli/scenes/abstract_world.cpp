@@ -40,12 +40,7 @@ std::pair<float, float> randomTurn(core::SeededRandom& random) {
 }
 
 // A random position in the cube [0, size]³, z drawn first.
-glm::vec3 randomPoint(core::SeededRandom& random, float size) {
-  const float z = random.uniform(0.0f, size);
-  const float y = random.uniform(0.0f, size);
-  const float x = random.uniform(0.0f, size);
-  return {x, y, z};
-}
+glm::vec3 randomPoint(core::SeededRandom& random, float size) { return random.pointZFirst(0.0f, size); }
 
 // A random primitive of `kind`, centred at the origin, randomly oriented (cones stay upright).
 render::TriangleMesh randomShape(core::SeededRandom& random, ShapeKind kind) {

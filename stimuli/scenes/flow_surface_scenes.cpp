@@ -13,10 +13,7 @@ namespace {
 // A reproducible jitter of a seed point, at most `amount` per coordinate; z is drawn first, then y
 // and x (see seedLine).
 glm::dvec3 jitter(core::SeededRandom& random, const glm::dvec3& p, double amount) {
-  const float z = random.uniform(-1.0f, 1.0f);
-  const float y = random.uniform(-1.0f, 1.0f);
-  const float x = random.uniform(-1.0f, 1.0f);
-  return p + amount * glm::dvec3(x, y, z);
+  return p + amount * glm::dvec3(random.pointZFirst(-1.0f, 1.0f));
 }
 
 // The seed line from a to b, each end jittered, b's first. C++ leaves the order of a call's
