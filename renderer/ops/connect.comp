@@ -158,13 +158,17 @@ Surfel surfel(uint f) {
 
 // ε(i, j) for fragment i and fragment j one pixel away in direction d (Eqs. 1-3); fragments of
 // different connected components are never neighbours.
-float continuity(Surfel i, Surfel j, ivec2 d) {
+// normalDot is n_i·n_j, given where the caller has it already (phase 1's fast path: the product
+// is symmetric, so a pair of layers met from both ends takes it once; the same float operations
+// in the same order either way, so the same bits).
+float continuityOfDot(Surfel i, Surfel j, ivec2 d, float normalDot) {
   if (i.comp != j.comp) return 1.0 / 0.0;
   float predicted = i.z + dot(vec2(d), i.g);
   float epsZ = abs(predicted - j.z) / uObjectRadius;  // Eq. 1
-  float epsN = 1.0 - dot(i.n, j.n);                   // Eq. 2
+  float epsN = 1.0 - normalDot;                       // Eq. 2
   return uWz * epsZ + uWn * epsN;                     // Eq. 3
 }
+float continuity(Surfel i, Surfel j, ivec2 d) { return continuityOfDot(i, j, d, dot(i.n, j.n)); }
 
 const ivec2 kDirections[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
 
@@ -275,15 +279,16 @@ const uint UNRESOLVED = 0xFFFFFFFEu;
 //    maxStep is not beyond ε (a contiguous range, the gap being V-shaped in k). Layers L ± 1 are
 //    tested here; the rest is settled when L ± 1 lie on the far side of b and are beyond (all
 //    layers further out then are too), or when the list ends there.
+// The normals' products n_a·n_b, n_next·n_b and n_prev·n_b come from the caller (dots: x, y, z).
 uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint headB, uint countB, Surfel sb,
-                  float bPrevZ, float bNextZ, ivec2 d, float maxStep) {
+                  float bPrevZ, float bNextZ, ivec2 d, float maxStep, vec3 dots) {
 #ifdef TLAB_ALL_PAIRS
   return countB == 0u ? NO_NEIGHBOR : UNRESOLVED;  // (every pair is searched in phase 3)
 #else
   // Written without early returns: llvmpipe runs every branch under a lane mask, so the
   // conditions are combined and one answer selected, in the order the cases take precedence.
   float predicted = sa.z + dot(vec2(d), sa.g);
-  float e = continuity(sa, sb, d);
+  float e = continuityOfDot(sa, sb, d, dots.x);
   bool unresolved = L >= countB || !(e < 1.0 / 0.0) ||
                     (L + 1u < countB && !(bNextZ >= predicted && beyond(bNextZ - predicted, e))) ||
                     (L > 0u && !(bPrevZ <= predicted && beyond(predicted - bPrevZ, e)));
@@ -293,7 +298,7 @@ uint fastNeighbor(Surfel sa, uint L, Surfel prev, Surfel next, uint n, uint head
   bool nextVisited = hasNext && !beyond(nextFar ? next.z - sb.z - maxStep : sb.z - next.z - maxStep, e);
   bool prevFar = !hasPrev || prev.z <= sb.z;
   bool prevVisited = hasPrev && !beyond(prevFar ? sb.z - prev.z - maxStep : prev.z - sb.z - maxStep, e);
-  bool beaten = (nextVisited && continuity(next, sb, d) < e) || (prevVisited && continuity(prev, sb, d) < e);
+  bool beaten = (nextVisited && continuityOfDot(next, sb, d, dots.y) < e) || (prevVisited && continuityOfDot(prev, sb, d, dots.z) < e);
   bool forwardDone = L + 2u >= n || (nextFar && !nextVisited);
   bool backwardDone = L < 2u || (prevFar && !prevVisited);
   uint settled = beaten ? NO_NEIGHBOR : forwardDone && backwardDone ? headB + L : UNRESOLVED;
@@ -391,6 +396,9 @@ void main() {
     bCur[i] = bNext[i];
   }
   bool listed[2] = bool[2](false, false);
+  // Per pair, the normals' products layer L + 1 of each list takes with layer L of the other,
+  // which the next layer's tests of layer L + 1 against its previous one take again.
+  float aNextDotB[2] = float[2](0.0, 0.0), bNextDotA[2] = float[2](0.0, 0.0);
 #ifdef TLAB_LINK_MASKS
   // Bit L: layer L of A links to layer L of B (sameA), and the other way (sameB). A pair with no
   // UNRESOLVED answer links both ways or not at all, so sameA is its pair word.
@@ -406,13 +414,18 @@ void main() {
       bPrev[i] = bCur[i];
       bCur[i] = bNext[i];
       if (L + 1u < b[i].count) bNext[i] = surfel(b[i].head + L + 1u);
+      // n_prev·n_cur of this layer is n_next·n_cur of the last (the registers shifted by one).
+      float aPrevDotB = bNextDotA[i], bPrevDotA = aNextDotB[i];
+      float curDot = dot(aCur.n, bCur[i].n);
+      aNextDotB[i] = dot(aNext.n, bCur[i].n);
+      bNextDotA[i] = dot(bNext[i].n, aCur.n);
       uint fa = NO_NEIGHBOR, fb = NO_NEIGHBOR;
       if (L < n)
         fa = fastNeighbor(aCur, L, aPrev, aNext, n, b[i].head, b[i].count, bCur[i], bPrev[i].z, bNext[i].z,
-                          kPairDirections[i], a.step[i]);
+                          kPairDirections[i], a.step[i], vec3(curDot, aNextDotB[i], aPrevDotB));
       if (L < b[i].count)
         fb = fastNeighbor(bCur[i], L, bPrev[i], bNext[i], b[i].count, head, n, aCur, aPrev.z, aNext.z,
-                          -kPairDirections[i], b[i].step[i]);
+                          -kPairDirections[i], b[i].step[i], vec3(curDot, bNextDotA[i], bPrevDotA));
       listed[i] = listed[i] || fa == UNRESOLVED || fb == UNRESOLVED;
 #ifdef TLAB_LINK_MASKS
       if (L < n && settledLink(head + L, fa, fb) == b[i].head + L) sameA[i] |= 1u << L;

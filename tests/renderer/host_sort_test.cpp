@@ -1,8 +1,8 @@
 // The sort pass as host code (buffer/host_sort.hpp, issue #29), on hand-made lists whose sorted
 // order is known: ties in depth broken by the triangle, then by where the record sat; pixels in
-// slots and in blocks; the colour plane and the list steps; lists past the insertion sort's 32;
-// and the same words from one thread and from several. (The GL suite compares it with the shader:
-// tests/renderer/sort_pass_gl_test.cpp.)
+// slots and in blocks; lists read in the order that sorted the last one; the colour plane and the
+// list steps; lists past the insertion sort's 32; and the same words from one thread and from
+// several. (The GL suite compares it with the shader: tests/renderer/sort_pass_gl_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <array>
@@ -75,6 +75,19 @@ TEST(HostSort, SlotsHoldThePixelsIthRecordAtIPixelsOn) {
   sortListsOnHost({records.data(), kStride, pixels, counts.data(), heads.data(), covered.data(), covered.size()},
                   {sorted.data(), nullptr, 0, nullptr, 0}, 1);
   EXPECT_EQ(colorsOf(sorted), (std::vector<std::uint32_t>{11, 10, 12}));
+}
+
+TEST(HostSort, TheLastListsOrderIsTriedFirstAndTiesStillGoByRecord) {
+  // Each list of 3 is read in the order that sorted the last one: pixel 1's tie, read with its
+  // second record first, still goes by record; pixel 3 is sorted as read in pixel 2's order.
+  const Blocks b({{{2, 0, 100}, {1, 0, 101}, {2, 0, 102}},
+                  {{5, 0, 200}, {5, 0, 201}, {3, 0, 202}},
+                  {{9, 0, 300}, {8, 0, 301}, {7, 0, 302}},
+                  {{6, 0, 400}, {5, 0, 401}, {4, 0, 402}},
+                  {{1, 1, 500}, {1, 0, 501}}});
+  std::vector<std::uint32_t> sorted(b.records.size());
+  sortListsOnHost(b.in(), {sorted.data(), nullptr, 0, nullptr, 0}, 1);
+  EXPECT_EQ(colorsOf(sorted), (std::vector<std::uint32_t>{101, 100, 102, 202, 200, 201, 302, 301, 300, 402, 401, 400, 501, 500}));
 }
 
 TEST(HostSort, ListStepsAreTheLargestGradientMagnitudes) {
