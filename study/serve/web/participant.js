@@ -386,7 +386,8 @@ function turntable(s, stage, img) {
 // arrow-key presses (Up/Down: forward/back, Left/Right: turn), wheel steps (forward/back), the
 // cursor for a lens that follows it — and shows the PNG that comes back. One request is in
 // flight at a time; input piles up meanwhile and goes with the next. The stage carries the frame
-// shown (data-frame-index, data-frame-sha256: the server's log of it) for browser tests.
+// shown (data-frame-index, data-frame-sha256: the server's log of it) for browser tests, and
+// data-swapping while a new frame replaces the picture and these have not caught up with it.
 function live(s, stage, img) {
   const L = s.live;
   let input = { dx: 0, dy: 0, forward: 0, turn: 0 }, point = null, inFlight = false, started = false, dragging = null, shown = null;
@@ -408,6 +409,7 @@ function live(s, stage, img) {
     } catch (e) { r = null; }
     if (r && r.status === 200 && current === s) {
       const url = URL.createObjectURL(await r.blob());
+      stage.dataset.swapping = '1';
       img.src = url;
       await img.decode().catch(() => {});
       if (shown) URL.revokeObjectURL(shown);
@@ -415,6 +417,7 @@ function live(s, stage, img) {
       stage.dataset.frameIndex = r.headers.get('X-Frame-Index');
       stage.dataset.frameSha256 = r.headers.get('X-Frame-Sha256');
       stage.dataset.frames = String(Number(stage.dataset.frames) + 1);
+      delete stage.dataset.swapping;
     } else if (r && r.status === 409) {
       const b = await r.json().catch(() => ({}));
       if (b.screen && b.screen.seq > s.seq) show(b.screen);

@@ -25,22 +25,30 @@ from serve_browser_test import ActionChains, Keys, check  # noqa: E402
 
 base.EXPERIMENT_ID = "live-online"
 
-# The pixels of the picture on show, as the page decoded them: framePixelsSha256's "WxH:" + RGBA.
+# The pixels of the picture on show, as the page decoded them: framePixelsSha256's "WxH:" + RGBA,
+# with the stage's record of the frame read in the same task as the pixels. A frame that is
+# replacing the picture (data-swapping: its pixels may be on show before the record is) is waited
+# for: CI once read frame 6's pixels against frame 5's record.
 DISPLAYED_SHA256 = """
 const done = arguments[arguments.length - 1];
-const img = document.querySelector('#stage img');
-const c = document.createElement('canvas');
-c.width = img.naturalWidth; c.height = img.naturalHeight;
-const g = c.getContext('2d', { colorSpace: 'srgb' });
-g.drawImage(img, 0, 0);
-const rgba = g.getImageData(0, 0, c.width, c.height).data;
-const head = new TextEncoder().encode(c.width + 'x' + c.height + ':');
-const bytes = new Uint8Array(head.length + rgba.length);
-bytes.set(head); bytes.set(rgba, head.length);
-crypto.subtle.digest('SHA-256', bytes).then((d) => done({
-  sha: Array.from(new Uint8Array(d), (b) => b.toString(16).padStart(2, '0')).join(''),
-  index: Number(document.getElementById('stage').dataset.frameIndex), width: img.naturalWidth, height: img.naturalHeight,
-  logged: document.getElementById('stage').dataset.frameSha256 }));
+const stage = document.getElementById('stage');
+const read = () => {
+  if (stage.dataset.swapping) { setTimeout(read, 10); return; }
+  const img = document.querySelector('#stage img');
+  const c = document.createElement('canvas');
+  c.width = img.naturalWidth; c.height = img.naturalHeight;
+  const g = c.getContext('2d', { colorSpace: 'srgb' });
+  g.drawImage(img, 0, 0);
+  const rgba = g.getImageData(0, 0, c.width, c.height).data;
+  const shown = { index: Number(stage.dataset.frameIndex), width: img.naturalWidth, height: img.naturalHeight,
+                  logged: stage.dataset.frameSha256 };
+  const head = new TextEncoder().encode(c.width + 'x' + c.height + ':');
+  const bytes = new Uint8Array(head.length + rgba.length);
+  bytes.set(head); bytes.set(rgba, head.length);
+  crypto.subtle.digest('SHA-256', bytes).then((d) => done(Object.assign(shown, {
+    sha: Array.from(new Uint8Array(d), (b) => b.toString(16).padStart(2, '0')).join('') })));
+};
+read();
 """
 
 
