@@ -105,7 +105,7 @@ void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene
   glUniform1ui(program.uniform("uPrimitiveBase"), 0u);
   glUniform1ui(program.uniform("uSlots"), slotsUsed_);
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
-  endFragmentCapture(scene);
+  endFragmentCapture(scene, program);
 }
 
 const gpu::ShaderProgram& FragmentBuffer::shadingFill(const char* fragmentShader, const RasterUniforms& u) const {

@@ -16,9 +16,9 @@ void beginFragmentCapture(const gpu::Framebuffer& framebuffer, int width, int he
   glUniform1i(program.uniform("uWidth"), width);
 }
 
-void endFragmentCapture(const GpuScene& scene) {
+void endFragmentCapture(const GpuScene& scene, const gpu::ShaderProgram& program) {
   scene.bindObjectTable();
-  scene.draw();
+  scene.draw(program.uniform("uPrimitiveBase"));
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

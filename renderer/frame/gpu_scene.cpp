@@ -1,5 +1,6 @@
 #include "renderer/frame/gpu_scene.hpp"
 
+#include <algorithm>
 #include <vector>
 
 #include "renderer/gpu/gl_error.hpp"
@@ -68,14 +69,29 @@ GpuScene::GpuScene(const Scene& scene) : bounds_(scene.boundingBox()) {
   attribute(4, componentIds_, 1, GL_UNSIGNED_INT, 4, true);
   glVertexArrayElementBuffer(vao, indices_.id());
   gpu::checkGl("uploading the scene");
+  const std::optional<std::size_t> runs = gpu::drawRunsSetting();
+  runs_ = runs ? *runs : defaultDrawRuns(triangleCount_, gpu::glRunsOnCpu());
 }
 
 void GpuScene::bindObjectTable() const { objectTable_.bindBase(GL_SHADER_STORAGE_BUFFER, kBindObjects); }
 
-void GpuScene::draw() const {
+void GpuScene::draw(GLint primitiveBase) const {
   glBindVertexArray(vao_.id());
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(triangleCount_ * 3), GL_UNSIGNED_INT, nullptr);
+  const std::size_t runs = std::max<std::size_t>(1, std::min(runs_, triangleCount_));
+  for (std::size_t r = 0; r < runs; ++r) {
+    const std::size_t first = triangleCount_ * r / runs, end = triangleCount_ * (r + 1) / runs;
+    if (primitiveBase >= 0 && runs > 1) glUniform1ui(primitiveBase, static_cast<GLuint>(first));
+    glDrawElements(GL_TRIANGLES, static_cast<GLsizei>((end - first) * 3), GL_UNSIGNED_INT,
+                   reinterpret_cast<const void*>(first * 3 * sizeof(std::uint32_t)));
+    if (runs > 1) glFlush();
+  }
+  if (primitiveBase >= 0 && runs > 1) glUniform1ui(primitiveBase, 0u);
   glBindVertexArray(0);
+}
+
+std::size_t defaultDrawRuns(std::size_t triangles, bool glOnCpu) {
+  if (!glOnCpu) return 1;
+  return std::clamp<std::size_t>(triangles / kTrianglesPerDrawRun, 1, kMaxDrawRuns);
 }
 
 }  // namespace tlab::render

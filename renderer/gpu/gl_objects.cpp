@@ -1,3 +1,4 @@
+#include <charconv>
 #include "renderer/gpu/gl_objects.hpp"
 
 #include <cstdlib>
@@ -116,10 +117,26 @@ std::optional<bool> hostPassesSetting() {
   return std::nullopt;
 }
 
-bool hostPassesWanted() {
-  if (const std::optional<bool> set = hostPassesSetting()) return *set;
+std::optional<std::size_t> drawRunsSetting() {
+  const char* set = std::getenv("TLAB_DRAW_RUNS");
+  const std::string value = set ? set : "auto";
+  if (value == "auto") return std::nullopt;
+  std::size_t runs = 0;
+  const auto [end, error] = std::from_chars(value.data(), value.data() + value.size(), runs);
+  if (error != std::errc() || end != value.data() + value.size() || runs < 1 || runs > kMaxDrawRunsSetting)
+    throw GlError("TLAB_DRAW_RUNS must be auto or a whole number from 1 to " + std::to_string(kMaxDrawRunsSetting) +
+                  ", not '" + value + "'");
+  return runs;
+}
+
+bool glRunsOnCpu() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   return renderer && rendererRunsOnCpu(renderer);
+}
+
+bool hostPassesWanted() {
+  if (const std::optional<bool> set = hostPassesSetting()) return *set;
+  return glRunsOnCpu();
 }
 
 void Buffer::bindBase(GLenum target, GLuint index) const { glBindBufferBase(target, index, id()); }

@@ -136,6 +136,8 @@ class MappedWrite : public Mapping {
 
 // Whether a GL of this GL_RENDERER string runs on the CPU: Mesa's llvmpipe or softpipe, SwiftShader.
 bool rendererRunsOnCpu(std::string_view glRenderer);
+// Whether the current context's GL does (rendererRunsOnCpu of its GL_RENDERER).
+bool glRunsOnCpu();
 // Whether the few passes that have a host-code twin (the fill's prefix sum, the sort, the connect
 // pass's phase 2, the solve's frontier steps) run it: TLAB_HOST_PASSES=on or off, or by default
 // (auto) where the current context's GL runs on the CPU — there a loop over a frame's pixels, or
@@ -147,6 +149,12 @@ bool hostPassesWanted();
 // TLAB_HOST_PASSES read alone (no GL needed): the contexts check it when made, so that a wrong
 // value is one line before any work. nullopt: auto.
 std::optional<bool> hostPassesSetting();
+
+// TLAB_DRAW_RUNS read alone (no GL needed; the contexts check it when made): how many runs a
+// scene's triangles are drawn in (GpuScene::draw), a whole number from 1 to kMaxDrawRunsSetting,
+// or nullopt for auto (the default). Throws GlError for another value.
+constexpr std::size_t kMaxDrawRunsSetting = 64;
+std::optional<std::size_t> drawRunsSetting();
 
 // local_size_x of every linear compute pass (frame/compute_index.glsl).
 constexpr std::size_t kComputeGroupSize = 64;

@@ -87,6 +87,7 @@ std::unique_ptr<GpuContext> anyEgl(bool gpuOnly, std::string& tried) {
 std::unique_ptr<GpuContext> createHeadlessContext() {
   const GlChoice choice = glChoice();
   hostPassesSetting();  // a wrong TLAB_HOST_PASSES is one line before any work
+  drawRunsSetting();    // and a wrong TLAB_DRAW_RUNS
   if (choice.backend == GlBackend::Osmesa) return createOsmesaContext();
   if (choice.backend == GlBackend::Egl && choice.eglDevice >= 0) return eglDevice(choice.eglDevice);
   std::string tried;

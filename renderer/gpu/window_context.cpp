@@ -66,6 +66,7 @@ void WindowContext::showUntilClosed(const unsigned char* rgba, int width, int he
 
 std::unique_ptr<WindowContext> createWindowContext(int width, int height, const std::string& title) {
   hostPassesSetting();  // a wrong TLAB_HOST_PASSES is one line before any work (as headless)
+  drawRunsSetting();    // and a wrong TLAB_DRAW_RUNS
   return std::make_unique<WindowContext>(width, height, title);
 }
 

@@ -56,7 +56,7 @@ void BucketedKBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScen
   glUniform1i(program.uniform("uShapeFromComponent"), settings_.shapeId == ShapeIdSource::Component ? 1 : 0);
   glUniform1f(program.uniform("uNear"), settings_.nearPlane);
   glUniform1f(program.uniform("uFar"), settings_.farPlane);
-  endFragmentCapture(scene);
+  endFragmentCapture(scene, program);
 }
 
 void BucketedKBuffer::build(FrameContext& frame, PassTimer& timer) { build(frame.gpuScene, frame.raster, timer); }

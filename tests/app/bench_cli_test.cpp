@@ -159,6 +159,9 @@ TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
   const auto wrong = runCommand("TLAB_HOST_PASSES=maybe " + base + "--frames 1");
   EXPECT_EQ(wrong.exitCode, 1);
   EXPECT_EQ(wrong.err, "tlab: error: TLAB_HOST_PASSES must be auto, on or off, not 'maybe'\n");
+  const auto wrongRuns = runCommand("TLAB_DRAW_RUNS=lots " + base + "--frames 1");
+  EXPECT_EQ(wrongRuns.exitCode, 1);
+  EXPECT_EQ(wrongRuns.err, "tlab: error: TLAB_DRAW_RUNS must be auto or a whole number from 1 to 64, not 'lots'\n");
   EXPECT_EQ(runCommand(base + "--frames 1 --json").out.find("part_ms"), std::string::npos);  // only when asked for
   const auto alone = runCommand(kTlab + " bench render --parts");
   EXPECT_EQ(alone.exitCode, 1);
