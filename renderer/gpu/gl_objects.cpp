@@ -1,6 +1,6 @@
-#include <charconv>
 #include "renderer/gpu/gl_objects.hpp"
 
+#include <charconv>
 #include <cstdlib>
 #include <stdexcept>
 #include <string>
