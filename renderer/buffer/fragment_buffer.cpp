@@ -102,7 +102,6 @@ void FragmentBuffer::ensureCapacity(std::size_t fragments) {
 void FragmentBuffer::rasterize(const gpu::ShaderProgram& program, const GpuScene& scene, const RasterUniforms& u) const {
   beginFragmentCapture(emptyFbo_, width_, height_, program, u);
   glUniform1ui(program.uniform("uCapacity"), static_cast<GLuint>(capacity_));
-  glUniform1ui(program.uniform("uPrimitiveBase"), 0u);
   glUniform1ui(program.uniform("uSlots"), slotsUsed_);
   glUniform1ui(program.uniform("uPixels"), static_cast<GLuint>(pixels()));
   endFragmentCapture(scene, program);

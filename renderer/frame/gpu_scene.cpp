@@ -80,12 +80,11 @@ void GpuScene::draw(GLint primitiveBase) const {
   const std::size_t runs = std::max<std::size_t>(1, std::min(runs_, triangleCount_));
   for (std::size_t r = 0; r < runs; ++r) {
     const std::size_t first = triangleCount_ * r / runs, end = triangleCount_ * (r + 1) / runs;
-    if (primitiveBase >= 0 && runs > 1) glUniform1ui(primitiveBase, static_cast<GLuint>(first));
+    if (primitiveBase >= 0) glUniform1ui(primitiveBase, static_cast<GLuint>(first));
     glDrawElements(GL_TRIANGLES, static_cast<GLsizei>((end - first) * 3), GL_UNSIGNED_INT,
                    reinterpret_cast<const void*>(first * 3 * sizeof(std::uint32_t)));
     if (runs > 1) glFlush();
   }
-  if (primitiveBase >= 0 && runs > 1) glUniform1ui(primitiveBase, 0u);
   glBindVertexArray(0);
 }
 

@@ -30,8 +30,8 @@ class GpuScene {
   // while its worker threads rasterize the last. The GL rasterizes the runs in order, so each
   // pixel receives its fragments in the order of one call. gl_PrimitiveID restarts at 0 with
   // every call: a program that reads it offsets it by its uint uniform uPrimitiveBase
-  // (buffer/fragment_record.glsl), whose location is `primitiveBase`; it is set to each run's
-  // first triangle, and back to 0 after.
+  // (buffer/fragment_record.glsl), whose location is `primitiveBase`: the draw sets it to each
+  // run's first triangle (0 for one run), so no caller sets it.
   void draw(GLint primitiveBase = -1) const;
   std::size_t drawRuns() const { return runs_; }
   void setDrawRuns(std::size_t runs) { runs_ = runs < 1 ? 1 : runs; }  // tests compare 1 and more
