@@ -79,7 +79,9 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   s.recordWords = layout.stride;
   s.dataWords = layout.words;
   s.listSteps = layout.properties.has(render::FragmentProperty::DepthGradient);
-  s.colorPlane = render::findStyle(style).fill(params).colorPlane && layout.properties.has(render::FragmentProperty::Color);
+  const render::FillSpec fill = render::findStyle(style).fill(params);
+  s.colorPlane = fill.colorPlane && layout.properties.has(render::FragmentProperty::Color);
+  s.sortsInCompose = fill.sortsInCompose;
   // The fill stores and the sort copies whole records, their padding too (uvec4 at a time); the
   // passes that read records read only the words they use. A compositor reads every property of the
   // record (constant's, which sorts each list as it blends (issue #29), its depth and triangle for
@@ -112,12 +114,19 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
   const std::string recordText = std::to_string(s.recordWords) + " words" +
                                  (s.recordWords > s.dataWords ? " with " + std::to_string(s.recordWords - s.dataWords) + " of padding" : "");
   std::vector<PassTraffic> out;
+  // A compositor that sorts, after a sort that wrote the colour plane alone (FrameShape::sortsInCompose).
+  const bool planeOnly = s.sortsInCompose && std::find(passes.begin(), passes.end(), "sort") != passes.end();
   for (const auto& name : passes) {
     PassTraffic t;
     t.pass = name;
     if (name == "fill") {
       t.bytesWritten = fr * record + px * 8;
       t.model = "writes each record once (" + recordText + "), a count and a head per pixel";
+    } else if (name == "sort" && planeOnly) {
+      t.bytesRead = fr * 4.0 * 3 + px * 8;
+      t.bytesWritten = fr * 4;
+      t.model = "reads count, head and each record's depth, triangle and colour once, writes each colour word once "
+                "in sorted order (the colour plane, for a compositor that sorts)";
     } else if (name == "sort") {
       t.bytesRead = fr * record + px * 8;
       t.bytesWritten = fr * record + (s.listSteps ? px * 8 : 0) + (s.colorPlane ? fr * 4 : 0);
@@ -125,10 +134,11 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
                 (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "") +
                 (s.colorPlane ? " and each colour word again (the colour plane)" : "");
     } else if (name == "compose") {
-      t.bytesRead = px * (8 + 16) + fr * 4.0 * (s.composeWords + s.composeFields);
+      const std::uint32_t words = planeOnly ? 1 : s.composeWords;
+      t.bytesRead = px * (8 + 16) + fr * 4.0 * (words + s.composeFields);
       t.bytesWritten = px * (16 + 16);
-      t.model = "reads count, head and " + std::to_string(s.composeWords) +
-                (s.colorPlane ? " word(s) of the colour plane" : " word(s) of each record") +
+      t.model = "reads count, head and " + std::to_string(words) +
+                (s.colorPlane || planeOnly ? " word(s) of the colour plane" : " word(s) of each record") +
                 (s.composeFields ? " and " + std::to_string(s.composeFields) + " field(s)" : std::string()) +
                 " per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {

@@ -47,6 +47,10 @@ struct FrameShape {
   std::uint32_t connectWords = 0;  // smart: the words of each record the connect pass reads (depth, ∇z, normal, ids)
   bool listSteps = false;          // records with a depth gradient: the sort also writes each list's maxStep
   bool colorPlane = false;         // the sort also writes each colour word into a plane (render::FillSpec::colorPlane)
+  // The compositor sorts (render::FillSpec::sortsInCompose): a "sort" pass, where one ran, wrote
+  // the colour plane alone (the sort as host code, where the GL runs on the CPU), which the
+  // compositor then reads in place of the records.
+  bool sortsInCompose = false;
   int fieldsPerFragment = 1;       // smart: the fields the connect pass stores (those that vary)
   bool connectPhase2 = true;        // smart: whether the connect pass ran its phase 2 (else the links were not stored)
   bool linkPairBits = false;       // smart: the connect pass kept its settled links as bits of each pixel's pairs

@@ -253,6 +253,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
   if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { ensureSorted(); });
+  else if (sortOnHost_ && layout_.properties.has(FragmentProperty::Color)) timer.time("sort", [&] { sortColorsOnHost(); });
   gpu::checkGl("building the illustration buffer");
 }
 
@@ -282,7 +283,7 @@ void FragmentBuffer::sortLists() {
   const bool plane = colorPlane_ && layout_.properties.has(FragmentProperty::Color);
   if (plane && colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
   if (sortOnHost_ && method_ != FillMethod::LinkedList) {
-    sortListsOnHost(steps, plane);
+    sortListsOnHost(true, steps, plane);
     return;
   }
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
@@ -310,26 +311,45 @@ void FragmentBuffer::sortLists() {
   colorPlaneWritten_ = plane;
 }
 
-// buffer/sort.comp's words, written by host code into the mapped buffers (buffer/host_sort.hpp).
-void FragmentBuffer::sortListsOnHost(bool steps, bool plane) {
+// buffer/sort.comp's words, written by host code into the mapped buffers (buffer/host_sort.hpp):
+// the sorted records (`records`; otherwise they are left as they were), the list steps and the
+// colour plane, as asked.
+void FragmentBuffer::sortListsOnHost(bool records, bool steps, bool plane) {
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the fill's records and counts, for the host
   const std::size_t n = pixels(), fragments = fragmentCount_, stride = layout_.stride;
   const gpu::Buffer& unsorted = slotsUsed_ > 0 ? slots_ : fragsUnsorted_;
   const std::size_t unsortedWords = slotsUsed_ > 0 ? std::size_t(slotsUsed_) * n * stride : fragments * stride;
   {
-    const gpu::MappedRead records(unsorted, unsortedWords * 4), counts(pixelCount_, n * 4), heads(pixelHead_, n * 4),
+    const gpu::MappedRead unsortedRecords(unsorted, unsortedWords * 4), counts(pixelCount_, n * 4), heads(pixelHead_, n * 4),
         covered(coveredPixels_, std::size_t(coveredCount_) * 4);
-    const gpu::MappedWrite sorted(fragsSorted_, fragments * stride * 4), colors(colorPlaneBuffer_, plane ? fragments * 4 : 0),
-        listSteps(listSteps_, steps ? n * 8 : 0);
-    const UnsortedLists in{records.as<std::uint32_t>(), layout_.stride, slotsUsed_ > 0 ? n : 0, counts.as<std::uint32_t>(),
+    const gpu::MappedWrite sorted(fragsSorted_, records ? fragments * stride * 4 : 0),
+        colors(colorPlaneBuffer_, plane ? fragments * 4 : 0), listSteps(listSteps_, steps ? n * 8 : 0);
+    const UnsortedLists in{unsortedRecords.as<std::uint32_t>(), layout_.stride, slotsUsed_ > 0 ? n : 0, counts.as<std::uint32_t>(),
                            heads.as<std::uint32_t>(), covered.as<std::uint32_t>(), coveredCount_};
     const SortedLists out{sorted.as<std::uint32_t>(), colors.as<std::uint32_t>(), layout_.colorOffset,
                           listSteps.as<float>(), layout_.depthGradientOffset};
     render::sortListsOnHost(in, out, std::thread::hardware_concurrency());
   }
-  sorted_ = true;
+  sorted_ = records;
   listStepsWritten_ = steps;
   colorPlaneWritten_ = plane;
+}
+
+// Where the compositor sorts and the GL runs on the CPU: the colour words alone, in each list's
+// sorted order, for compose/blend.comp (TLAB_COLOR_PLANE). On llvmpipe the host's sort plus a
+// blend of one word a fragment took less time than the compose pass sorting its lists in lanes
+// (issue #29, twenty-eighth round).
+void FragmentBuffer::sortColorsOnHost() {
+  ensureHeads();
+  if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
+  sortListsOnHost(false, false, true);
+}
+
+void FragmentBuffer::bindColorPlane() const {
+  if (!colorPlaneWritten_) throw std::logic_error("a pass bound the colour plane of a frame whose sort did not write one");
+  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
+  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
+  colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
 }
 
 void FragmentBuffer::bindSorted() {

@@ -59,8 +59,10 @@ class FragmentBuffer final : public Fill {
   // When on (FillSpec::colorPlane), the sort also writes each fragment's colour word alone, one
   // word a fragment in the sorted order, for a compositor that reads nothing else of the records
   // (issue #29: reading one word of each 8-word record cost smart's compose on the 16-layer stack
-  // about 20 of its 24 ms). colorPlane() is that buffer once this frame's lists are sorted, null
-  // otherwise (off, records without a colour, or not sorted yet).
+  // about 20 of its 24 ms). colorPlane() is that buffer once this frame's sort wrote it, null
+  // otherwise (off, records without a colour, or not sorted yet). Where the compositor sorts
+  // (setSortInCompose) and the sort runs as host code (setSortOnHost), build() writes the colour
+  // plane alone, without the sorted records (sorted() stays false), for compose/blend.comp.
   void setColorPlane(bool on) { colorPlane_ = on; }
   const gpu::Buffer* colorPlane() const { return colorPlaneWritten_ ? &colorPlaneBuffer_ : nullptr; }
   // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
@@ -77,6 +79,9 @@ class FragmentBuffer final : public Fill {
   // i * pixels + pixel, as buffer/fill_slots.frag stores them, and so does the order buffer its
   // keys), false when in the pixel's block (pixelHead bound, a key per fragment at the block).
   bool bindUnsorted() const;
+  // Binds pixelCount, pixelHead and the colour plane (BIND_COLOR_PLANE); throws where this frame's
+  // sort wrote none (colorPlane() null).
+  void bindColorPlane() const;
   // Dispatches `program` with one invocation per pixel that holds a fragment, in pixel order
   // (frame/covered_pixels.glsl: binding BIND_COVERED and uniform uCovered; the prefix sum lists
   // them with the heads, so this frame's heads must be ready: after bindSorted, for instance).
@@ -116,7 +121,8 @@ class FragmentBuffer final : public Fill {
   void setPrefixSumOnHost(bool on) { prefixSumOnHost_ = on; }
   // The sort as host code over the mapped buffers (buffer/host_sort.hpp; on by default where the
   // GL runs on the CPU) or as buffer/sort.comp (off): the same sorted records, colour plane and
-  // list steps. Linked lists are always sorted by the shader.
+  // list steps. Linked lists are always sorted by the shader. Where the compositor sorts, on means
+  // the colour plane sorted by host code, off the compositor's own sort (setColorPlane).
   void setSortOnHost(bool on) { sortOnHost_ = on; }
 
  private:
@@ -134,7 +140,8 @@ class FragmentBuffer final : public Fill {
   enum class SortSource { Block, Slots, ShortSlots };  // where the unsorted records sit (ShortSlots: at most 8)
   const gpu::ShaderProgram& sortProgram(SortSource source, bool colorPlane) const;
   void sortLists();
-  void sortListsOnHost(bool steps, bool plane);
+  void sortListsOnHost(bool records, bool steps, bool plane);
+  void sortColorsOnHost();  // the heads, then the colour plane alone (see setColorPlane)
   void fillLinkedList(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
 
   int width_, height_;

@@ -75,7 +75,7 @@ void sortPixel(const UnsortedLists& in, const SortedLists& out, std::uint32_t pi
   float stepX = 0.0f, stepY = 0.0f;
   for (std::size_t i = 0; i < keys.size(); ++i) {
     const std::uint32_t* record = in.records + sourceOf(in, pixel, keys[i].place) * in.stride;
-    std::memcpy(out.records + (base + i) * in.stride, record, std::size_t(in.stride) * 4);
+    if (out.records) std::memcpy(out.records + (base + i) * in.stride, record, std::size_t(in.stride) * 4);
     if (out.colorPlane) out.colorPlane[base + i] = record[out.colorOffset];
     if (out.listSteps) {  // GLSL's max(step, abs(gradient))
       stepX = std::max(stepX, std::fabs(wordAsFloat(record[out.gradientOffset])));

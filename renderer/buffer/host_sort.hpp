@@ -23,7 +23,9 @@ struct UnsortedLists {
 };
 
 struct SortedLists {
-  std::uint32_t* records = nullptr;  // the sorted records, as many words a fragment as the unsorted
+  // The sorted records, as many words a fragment as the unsorted (null: none, where a compositor
+  // reads the colour plane alone).
+  std::uint32_t* records = nullptr;
   // Each fragment's colour word again, in the sorted order (null: none); its word in the record.
   std::uint32_t* colorPlane = nullptr;
   std::uint32_t colorOffset = 0;

@@ -6,14 +6,18 @@
 namespace tlab::render {
 
 // The lists sorted by the fill's sort pass, or, when the fill left them unsorted (FillSpec::
-// sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED). Only the
+// sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED), or, where
+// the GL runs on the CPU, their colour words sorted by host code (TLAB_COLOR_PLANE). Only the
 // pixels the scene can reach are composed and read back; the others are the background
 // (c = 0, T = 1: c + T·c_background), painted here (issue #29: most of a 512² frame of the
 // teapot is background).
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   gpu::ShaderDefines defines = buffer.layout().defines();
-  if (!buffer.sorted()) {
+  if (buffer.colorPlane()) {  // each list's colour words in sorted order (the sort ran as host code)
+    defines.emplace_back("TLAB_COLOR_PLANE", "1");
+    buffer.bindColorPlane();
+  } else if (!buffer.sorted()) {
     defines.emplace_back("TLAB_FUSED", "1");
     if (buffer.bindUnsorted()) defines.emplace_back("TLAB_SLOTS", "1");
     // The register network of 16 for frames whose slots hold lists longer than 8 (its keys hold

@@ -57,6 +57,15 @@ TEST(HostSort, TiesInDepthGoByTriangleThenByRecord) {
       << "each record copied whole";
 }
 
+// A compositor that reads the colour plane alone gets the plane without the sorted records
+// (null: none written), in the same order as with them.
+TEST(HostSort, TheColourPlaneAloneIsSortedWithoutTheRecords) {
+  const Blocks b({{{5, 2, 100}, {3, 9, 101}, {5, 1, 102}, {3, 9, 103}, {1, 0, 104}}, {}, {{7, 0, 200}}});
+  std::vector<std::uint32_t> plane(6, 0xDEADu);
+  sortListsOnHost(b.in(), {nullptr, plane.data(), 2, nullptr, 0}, 1);
+  EXPECT_EQ(plane, (std::vector<std::uint32_t>{104, 101, 103, 102, 100, 200}));
+}
+
 TEST(HostSort, SlotsHoldThePixelsIthRecordAtIPixelsOn) {
   // 3 pixels, 2 slots: pixel 0 holds 2 fragments, pixel 1 none, pixel 2 one.
   const std::size_t pixels = 3;

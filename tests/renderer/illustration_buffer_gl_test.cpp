@@ -9,6 +9,7 @@
 #include "renderer/pipeline/renderer.hpp"
 #include "renderer/scene/scene_source.hpp"
 #include "tests/support/gl_fixture.hpp"
+#include "tests/support/scoped_env.hpp"
 
 using namespace tlab::render;
 
@@ -251,6 +252,9 @@ TEST(IllustrationBuffer, FramesFilledThroughSlotsAndThroughTheScatterPassAreByte
 // them: for lists of 1 to 20 fragments (2 to 12 of varied length in the nested spheres: both
 // register paths in one frame; 16 in the stack of 16: the network full), from the slots (second
 // frame) and from the scatter pass (a first frame whose lists outgrow the 8 slots it starts with).
+// With the host passes on (the default where the GL runs on the CPU), the colours come sorted by
+// host code instead and the compose pass only blends them (the twenty-eighth round): the same
+// pictures again.
 TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
   for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:quad-stack?n=16&m=3", "builtin:quad-stack?n=5&m=3",
                              "builtin:open-cylinders",
@@ -258,11 +262,76 @@ TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
     SCOPED_TRACE(source);
     Renderer sortPass(loadScene(source));
     const tlab::core::Image expected = sortPass.render(request(72, 60, FillMethod::LinkedList));
-    Renderer fused(loadScene(source));
-    for (int frame = 0; frame < 2; ++frame) {
-      const tlab::core::Image image = fused.render(request(72, 60));
-      ASSERT_EQ(image.pixels.size(), expected.pixels.size());
-      for (std::size_t i = 0; i < image.pixels.size(); ++i) ASSERT_EQ(image.pixels[i], expected.pixels[i]) << "pixel " << i << ", frame " << frame;
+    for (const char* hostPasses : {"off", "on"}) {
+      SCOPED_TRACE(std::string("TLAB_HOST_PASSES=") + hostPasses);
+      const tlab::testing::ScopedEnv passes("TLAB_HOST_PASSES", hostPasses);
+      Renderer fused(loadScene(source));
+      for (int frame = 0; frame < 2; ++frame) {
+        const tlab::core::Image image = fused.render(request(72, 60));
+        ASSERT_EQ(image.pixels.size(), expected.pixels.size());
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) ASSERT_EQ(image.pixels[i], expected.pixels[i]) << "pixel " << i << ", frame " << frame;
+      }
+    }
+  }
+}
+
+// Issue #29, twenty-eighth round: for a compositor that sorts, with the sort as host code, the
+// build writes the colour plane alone: each list's colour words in the order the sort pass would
+// put the records in (a fill that sorts in its own pass is the reference), from the scatter pass
+// (the first frame's 20-layer lists outgrow 8 slots) and from the slots, for records of one quad
+// and of more; no sorted records (sorted() stays false, and a reader that wants them gets them
+// sorted then). With the sort as a shader the compositor sorts, and no plane is written.
+TEST(IllustrationBuffer, ACompositorThatSortsGetsTheColourPlaneSortedByHostCode) {
+  tlab::gpu::ShaderCache shaders;
+  FragmentProperties colour, padded;
+  colour |= FragmentProperty::Color;
+  padded = colour;
+  padded |= FragmentProperty::Normal;
+  padded |= FragmentProperty::DepthGradient;
+  padded |= FragmentProperty::Ids;
+  PassTimer timer(false);
+  for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:nested-spheres?n=3"}) {
+    const Scene scene = loadScene(source);
+    GpuScene gpu(scene);
+    RasterUniforms u;
+    u.view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
+    u.projection = glm::perspective(0.9f, 48.0f / 40.0f, 0.1f, 20.0f);
+    for (const FragmentLayout& layout : {FragmentLayout(colour), FragmentLayout(padded)}) {
+      FragmentBuffer reference(shaders, 48, 40, layout, FillMethod::CountScatter);
+      reference.build(gpu, u, timer);
+      const std::size_t n = reference.fragmentCount();
+      ASSERT_GT(n, 48u * 40u / 2);
+      std::vector<std::uint32_t> expected;
+      const auto records = reference.sortedRecords(0, n);
+      for (std::size_t f = 0; f < n; ++f) expected.push_back(records[f * layout.stride + layout.colorOffset]);
+      ASSERT_GT(std::set<std::uint32_t>(expected.begin(), expected.end()).size(), 1u);
+
+      FragmentBuffer buffer(shaders, 48, 40, layout, FillMethod::CountScatter);
+      buffer.setSortInCompose(true);
+      buffer.setSortOnHost(true);
+      std::set<std::uint32_t> slotsSeen;
+      for (int frame = 0; frame < 2; ++frame) {
+        SCOPED_TRACE(std::string(source) + ", stride " + std::to_string(layout.stride) + ", frame " + std::to_string(frame));
+        buffer.build(gpu, u, timer);
+        slotsSeen.insert(buffer.slotsUsed());
+        EXPECT_FALSE(buffer.sorted());
+        ASSERT_NE(buffer.colorPlane(), nullptr);
+        ASSERT_EQ(buffer.fragmentCount(), n);
+        std::vector<std::uint32_t> plane(n);
+        buffer.colorPlane()->download(plane.data(), n * 4);
+        EXPECT_EQ(plane, expected);
+        EXPECT_EQ(buffer.pixelHeads(), reference.pixelHeads());
+      }
+      EXPECT_GT(*slotsSeen.rbegin(), 0u) << "the second frame fills slots";
+      if (std::string(source).find("n=20") != std::string::npos) {
+        EXPECT_EQ(*slotsSeen.begin(), 0u) << "the first frame scatters";
+      }
+      EXPECT_EQ(buffer.sortedRecords(0, n), records) << "sorted when read";
+
+      buffer.setSortOnHost(false);
+      buffer.build(gpu, u, timer);
+      EXPECT_EQ(buffer.colorPlane(), nullptr) << "the compose pass sorts";
+      EXPECT_THROW(buffer.bindColorPlane(), std::logic_error);
     }
   }
 }
@@ -289,6 +358,7 @@ TEST(IllustrationBuffer, AFrameInSlotsLeavesTheHeadsToWhoeverNeedsThem) {
 
   FragmentBuffer buffer(shaders, 48, 40, FragmentLayout(colour), FillMethod::CountScatter, 16);
   buffer.setSortInCompose(true);
+  buffer.setSortOnHost(false);  // with the sort as host code the build sorts the colours (next test)
   buffer.build(gpu, u, timer);
   ASSERT_GT(buffer.slotsUsed(), 0u);
   EXPECT_FALSE(buffer.sorted());
