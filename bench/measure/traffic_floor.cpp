@@ -133,12 +133,17 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "reads count, head and each record once, writes each record once (" + recordText + ")" +
                 (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "") +
                 (s.colorPlane ? " and each colour word again (the colour plane)" : "");
+    } else if (name == "compose" && planeOnly) {
+      t.bytesRead = px * 8 + fr * 4;
+      t.bytesWritten = px * 16;
+      t.model = "reads count and head per pixel and one word of the colour plane per fragment; writes the image "
+                "(RGBA32F per pixel: host code, no read-back)";
     } else if (name == "compose") {
-      const std::uint32_t words = planeOnly ? 1 : s.composeWords;
+      const std::uint32_t words = s.composeWords;
       t.bytesRead = px * (8 + 16) + fr * 4.0 * (words + s.composeFields);
       t.bytesWritten = px * (16 + 16);
       t.model = "reads count, head and " + std::to_string(words) +
-                (s.colorPlane || planeOnly ? " word(s) of the colour plane" : " word(s) of each record") +
+                (s.colorPlane ? " word(s) of the colour plane" : " word(s) of each record") +
                 (s.composeFields ? " and " + std::to_string(s.composeFields) + " field(s)" : std::string()) +
                 " per fragment; writes RGBA32F per pixel, read back into the image";
     } else if (name == "connect") {

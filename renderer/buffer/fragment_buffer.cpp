@@ -336,20 +336,12 @@ void FragmentBuffer::sortListsOnHost(bool records, bool steps, bool plane) {
 }
 
 // Where the compositor sorts and the GL runs on the CPU: the colour words alone, in each list's
-// sorted order, for compose/blend.comp (TLAB_COLOR_PLANE). On llvmpipe the host's sort plus a
-// blend of one word a fragment took less time than the compose pass sorting its lists in lanes
-// (issue #29, twenty-eighth round).
+// sorted order, which compose/host_blend.hpp blends. On llvmpipe the two took a third of the time
+// of the compose pass sorting its lists in lanes (issue #29, twenty-eighth round).
 void FragmentBuffer::sortColorsOnHost() {
   ensureHeads();
   if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
   sortListsOnHost(false, false, true);
-}
-
-void FragmentBuffer::bindColorPlane() const {
-  if (!colorPlaneWritten_) throw std::logic_error("a pass bound the colour plane of a frame whose sort did not write one");
-  pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
-  pixelHead_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelHead);
-  colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
 }
 
 void FragmentBuffer::bindSorted() {

@@ -62,7 +62,7 @@ class FragmentBuffer final : public Fill {
   // about 20 of its 24 ms). colorPlane() is that buffer once this frame's sort wrote it, null
   // otherwise (off, records without a colour, or not sorted yet). Where the compositor sorts
   // (setSortInCompose) and the sort runs as host code (setSortOnHost), build() writes the colour
-  // plane alone, without the sorted records (sorted() stays false), for compose/blend.comp.
+  // plane alone, without the sorted records (sorted() stays false), for compose/host_blend.hpp.
   void setColorPlane(bool on) { colorPlane_ = on; }
   const gpu::Buffer* colorPlane() const { return colorPlaneWritten_ ? &colorPlaneBuffer_ : nullptr; }
   // The sort pass sorts lists up to 16 fragments in registers (on) or every list by insertion
@@ -79,9 +79,6 @@ class FragmentBuffer final : public Fill {
   // i * pixels + pixel, as buffer/fill_slots.frag stores them, and so does the order buffer its
   // keys), false when in the pixel's block (pixelHead bound, a key per fragment at the block).
   bool bindUnsorted() const;
-  // Binds pixelCount, pixelHead and the colour plane (BIND_COLOR_PLANE); throws where this frame's
-  // sort wrote none (colorPlane() null).
-  void bindColorPlane() const;
   // Dispatches `program` with one invocation per pixel that holds a fragment, in pixel order
   // (frame/covered_pixels.glsl: binding BIND_COVERED and uniform uCovered; the prefix sum lists
   // them with the heads, so this frame's heads must be ready: after bindSorted, for instance).
@@ -124,6 +121,7 @@ class FragmentBuffer final : public Fill {
   // list steps. Linked lists are always sorted by the shader. Where the compositor sorts, on means
   // the colour plane sorted by host code, off the compositor's own sort (setColorPlane).
   void setSortOnHost(bool on) { sortOnHost_ = on; }
+  bool sortsOnHost() const { return sortOnHost_; }
 
  private:
   void ensureCapacity(std::size_t fragments);

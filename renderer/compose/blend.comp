@@ -28,9 +28,6 @@ layout(std430, binding = BIND_OUTPUT) writeonly buffer Output { vec4 outColor[];
 #ifdef TLAB_FUSED
 layout(std430, binding = BIND_FRAGS_UNSORTED) readonly buffer Frags { uint frags[]; };
 layout(std430, binding = BIND_ORDER) buffer Order { uvec2 order[]; };
-#elif defined(TLAB_COLOR_PLANE)
-// Each list's colour words alone, in sorted order (the sort ran as host code: issue #29).
-layout(std430, binding = BIND_COLOR_PLANE) readonly buffer ColorPlane { uint colorPlane[]; };
 #else
 layout(std430, binding = BIND_FRAGS_SORTED) readonly buffer Sorted { uint sorted[]; };
 #endif
@@ -149,8 +146,6 @@ void main() {
   else if (n > REGISTER_SORT) blendInNetwork(pixel, base, n);
 #endif
   else if (n > 0u) blendInRegisters(pixel, base, n);
-#elif defined(TLAB_COLOR_PLANE)
-  for (uint i = 0u; i < n; ++i) blendFragment(colorPlane[base + i]);
 #else
   for (uint i = 0u; i < n; ++i) blendFragment(sorted[fragWord(base + i, TLAB_OFF_COLOR)]);
 #endif

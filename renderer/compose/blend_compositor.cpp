@@ -1,23 +1,46 @@
 #include "renderer/compose/blend_compositor.hpp"
 
+#include <thread>
+
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/buffer/fragment_buffer.hpp"
+#include "renderer/compose/host_blend.hpp"
 
 namespace tlab::render {
 
+namespace {
+
+// Where the host sort wrote each list's colour words in order (the GL runs on the CPU: issue #29,
+// twenty-eighth round), they are blended by host code too, straight into the image: the shader's
+// arithmetic (compose/host_blend.hpp), without a dispatch of lanes or a read-back.
+void composeBlendOnHost(FrameContext& frame, const FragmentBuffer& buffer, float alpha) {
+  const PixelRect rect = sceneFootprint(frame);
+  const std::size_t pixels = buffer.pixels();
+  const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
+      plane(*buffer.colorPlane(), std::size_t(buffer.fragmentCount()) * 4);
+  timePart(frame.timer, "compose blend on the host", [&] {
+    blendOnHost({counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), plane.as<std::uint32_t>(), buffer.width(), buffer.height()},
+                rect.x0, rect.y0, rect.x1, rect.y1, alpha, glm::vec3(frame.background), frame.image,
+                std::thread::hardware_concurrency());
+  });
+}
+
+}  // namespace
+
 // The lists sorted by the fill's sort pass, or, when the fill left them unsorted (FillSpec::
 // sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED), or, where
-// the GL runs on the CPU, their colour words sorted by host code (TLAB_COLOR_PLANE). Only the
+// the GL runs on the CPU, their colour words sorted by host code and blended here by host code. Only the
 // pixels the scene can reach are composed and read back; the others are the background
 // (c = 0, T = 1: c + T·c_background), painted here (issue #29: most of a 512² frame of the
 // teapot is background).
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
+  if (buffer.colorPlane() && buffer.sortsOnHost()) {
+    composeBlendOnHost(frame, buffer, alpha);
+    return;
+  }
   gpu::ShaderDefines defines = buffer.layout().defines();
-  if (buffer.colorPlane()) {  // each list's colour words in sorted order (the sort ran as host code)
-    defines.emplace_back("TLAB_COLOR_PLANE", "1");
-    buffer.bindColorPlane();
-  } else if (!buffer.sorted()) {
+  if (!buffer.sorted()) {
     defines.emplace_back("TLAB_FUSED", "1");
     if (buffer.bindUnsorted()) defines.emplace_back("TLAB_SLOTS", "1");
     // The register network of 16 for frames whose slots hold lists longer than 8 (its keys hold

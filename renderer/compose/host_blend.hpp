@@ -1,0 +1,30 @@
+#pragma once
+// compose/blend.comp's front-to-back blending as host code, for where the GL runs on the CPU
+// (issue #29, twenty-eighth round): each pixel's colour words, sorted front to back by the host
+// sort (the colour plane: buffer/host_sort.hpp), blended with the shader's float operations in
+// the shader's order,
+//   c ← c + (T·α)·c_i,  T ← T·(1 − α),  and finally c + T·c_background,
+// so the picture is the shader's, float for float (tests compare the two). No GL here: the
+// fragment buffer's mapped counts, heads and plane come in.
+#include <cstdint>
+
+#include <glm/glm.hpp>
+
+#include "core/image.hpp"
+
+namespace tlab::render {
+
+struct SortedColours {
+  const std::uint32_t* counts = nullptr;  // fragments of each pixel (GL pixel order: row 0 at the bottom)
+  const std::uint32_t* heads = nullptr;   // each pixel's first colour word in `plane`
+  const std::uint32_t* plane = nullptr;   // RGBA8 words (GLSL's packUnorm4x8), each list front to back
+  int width = 0, height = 0;
+};
+
+// Blends the pixels of [x0, x1) × [y0, y1) (GL rows) into `image` (row 0 at the top, so GL row y is
+// image row height − 1 − y), with opacity `alpha` and `background` behind; every other pixel of
+// the image becomes `background` with alpha 1. Rows are shared out among `threads` threads.
+void blendOnHost(const SortedColours& in, int x0, int y0, int x1, int y1, float alpha, glm::vec3 background,
+                 core::Image& image, unsigned threads);
+
+}  // namespace tlab::render
