@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "renderer/buffer/fragment_layout.hpp"
+#include "renderer/gpu/gl_objects.hpp"
 #include "renderer/ops/smart_settings.hpp"
 #include "renderer/ops/transparency_fields.hpp"
 #include "renderer/styles/style.hpp"
@@ -82,6 +83,7 @@ FrameShape frameShape(const render::RenderStats& stats, const std::string& style
   const render::FillSpec fill = render::findStyle(style).fill(params);
   s.colorPlane = fill.colorPlane && layout.properties.has(render::FragmentProperty::Color);
   s.sortsInCompose = fill.sortsInCompose;
+  s.hostBlend = gpu::hostPassesWanted() && (style == "constant" || style == "smart");
   // The fill stores and the sort copies whole records, their padding too (uvec4 at a time); the
   // passes that read records read only the words they use. A compositor reads every property of the
   // record (constant's, which sorts each list as it blends (issue #29), its depth and triangle for
@@ -133,19 +135,18 @@ std::vector<PassTraffic> passTraffic(const FrameShape& s, const std::vector<std:
       t.model = "reads count, head and each record once, writes each record once (" + recordText + ")" +
                 (s.listSteps ? " and each list's maxStep (two floats a pixel)" : "") +
                 (s.colorPlane ? " and each colour word again (the colour plane)" : "");
-    } else if (name == "compose" && planeOnly) {
-      t.bytesRead = px * 8 + fr * 4;
-      t.bytesWritten = px * 16;
-      t.model = "reads count and head per pixel and one word of the colour plane per fragment; writes the image "
-                "(RGBA32F per pixel: host code, no read-back)";
     } else if (name == "compose") {
-      const std::uint32_t words = s.composeWords;
-      t.bytesRead = px * (8 + 16) + fr * 4.0 * (words + s.composeFields);
-      t.bytesWritten = px * (16 + 16);
+      // After a sort of the colours (planeOnly) the compositor reads the colour plane alone; blended
+      // as host code, the image is written once, with no output buffer to read back.
+      const std::uint32_t words = planeOnly ? 1 : s.composeWords;
+      const bool host = s.hostBlend && (planeOnly || !s.sortsInCompose);
+      t.bytesRead = px * (host ? 8 : 8 + 16) + fr * 4.0 * (words + s.composeFields);
+      t.bytesWritten = px * (host ? 16 : 16 + 16);
       t.model = "reads count, head and " + std::to_string(words) +
-                (s.colorPlane ? " word(s) of the colour plane" : " word(s) of each record") +
+                (s.colorPlane || planeOnly ? " word(s) of the colour plane" : " word(s) of each record") +
                 (s.composeFields ? " and " + std::to_string(s.composeFields) + " field(s)" : std::string()) +
-                " per fragment; writes RGBA32F per pixel, read back into the image";
+                (host ? " per fragment; writes the image (RGBA32F per pixel: host code, no read-back)"
+                      : " per fragment; writes RGBA32F per pixel, read back into the image");
     } else if (name == "connect") {
       // Phase 1 reads count, head and maxStep (written by the sort) of each pixel and the words ε
       // needs of each record once (depth, ∇z, normal, ids), and writes each link once (each pair

@@ -51,6 +51,9 @@ struct FrameShape {
   // the colour plane alone (the sort as host code, where the GL runs on the CPU), which the
   // compositor then reads in place of the records.
   bool sortsInCompose = false;
+  // The compositor blends as host code straight into the image (`constant` and smart where the
+  // host passes run: render/compose/host_blend.hpp): no RGBA32F output to write and read back.
+  bool hostBlend = false;
   int fieldsPerFragment = 1;       // smart: the fields the connect pass stores (those that vary)
   bool connectPhase2 = true;        // smart: whether the connect pass ran its phase 2 (else the links were not stored)
   bool linkPairBits = false;       // smart: the connect pass kept its settled links as bits of each pixel's pairs

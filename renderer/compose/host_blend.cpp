@@ -15,15 +15,18 @@ glm::vec3 unpackRgb(std::uint32_t word) {
   return glm::vec3(float(word & 0xFFu) / 255.0f, float((word >> 8) & 0xFFu) / 255.0f, float((word >> 16) & 0xFFu) / 255.0f);
 }
 
-// compose/blend.comp's main() for one pixel's list, term by term.
-glm::vec4 blendList(const std::uint32_t* colours, std::uint32_t n, float alpha, glm::vec3 background) {
+// The shaders' main() for the list of `n` fragments from `head`, term by term.
+glm::vec4 blendList(const SortedColours& in, std::uint32_t head, std::uint32_t n, float alpha, glm::vec3 background) {
   glm::vec3 c(0.0f);
   float T = 1.0f;  // remaining transmittance
-  for (std::uint32_t i = 0; i < n; ++i) {
-    const glm::vec3 ci = unpackRgb(colours[i]);
-    const float weight = T * alpha;  // GLSL's T * a * ci: (T·α)·c_i
+  for (std::uint32_t f = head; f < head + n; ++f) {
+    const float a = in.alpha ? std::clamp(in.alpha[f], 0.0f, 1.0f) : alpha;
+    const float b = in.beta ? in.beta[f] : 0.0f, g = in.gamma ? in.gamma[f] : 0.0f;
+    const float aHat = (1.0f - g) * (a + (1.0f - a) * b);
+    const glm::vec3 ci = unpackRgb(in.plane[f]);
+    const float weight = T * aHat;  // GLSL's T * aHat * ci: (T·α̂)·c_i
     c += weight * ci;
-    T *= 1.0f - alpha;
+    T *= 1.0f - aHat;
   }
   return glm::vec4(c + T * background, 1.0f);
 }
@@ -44,7 +47,7 @@ void blendOnHost(const SortedColours& in, int x0, int y0, int x1, int y1, float 
       const std::size_t glRow = std::size_t(y) * std::size_t(in.width);
       for (int x = x0; x < x1; ++x) {
         const std::uint32_t n = in.counts[glRow + x];
-        if (n > 0) row[x] = blendList(in.plane + in.heads[glRow + x], n, alpha, background);
+        if (n > 0) row[x] = blendList(in, in.heads[glRow + x], n, alpha, background);
       }
     }
   });

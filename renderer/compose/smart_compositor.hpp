@@ -6,6 +6,9 @@
 
 namespace tlab::render {
 
-void composeSmart(FrameContext& frame, const TransparencyFields& fields, const SmartSettings& settings);
+// Where the GL runs on the CPU and the host sorted the colours (FragmentBuffer::sortsOnHost), the
+// blend runs as host code (compose/host_blend.hpp), with Eqs. 10-11 applied by the shader to the
+// values that need them (in the fields' scratch buffer).
+void composeSmart(FrameContext& frame, TransparencyFields& fields, const SmartSettings& settings);
 
 }  // namespace tlab::render

@@ -296,8 +296,9 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   for (const auto& p : timed.parts) counts[p.name] = p.count;
   // The second frame fills straight into slots as long as the first frame's lists.
   for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2 on the host",
-                           "solve beta frontier on the host", "compose read-back"})
+                           "solve beta frontier on the host", "compose blend on the host"})
     EXPECT_TRUE(counts.count(name)) << name;
+  EXPECT_EQ(counts.count("compose read-back"), 0u);
   EXPECT_EQ(counts["connect phase 1"], 1);
   EXPECT_EQ(counts["solve beta frontier on the host"], 1);
   const std::string beta = timed.operations.at(1);  // "solve: beta spreading (Eq. 9 max, K[ of N] steps...)"
@@ -314,6 +315,8 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
     EXPECT_EQ(stepCounts.count("solve beta frontier on the host"), 0u);
     EXPECT_EQ(stepCounts["connect phase 2"], 1);
     EXPECT_EQ(stepCounts.count("connect phase 2 on the host"), 0u);
+    EXPECT_EQ(stepCounts["compose read-back"], 1);
+    EXPECT_EQ(stepCounts.count("compose blend on the host"), 0u);
     EXPECT_EQ(steps.operations, timed.operations);
   }
   for (const auto& [pass, ms] : timed.passMilliseconds) {
@@ -331,7 +334,7 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
 }
 
 // The passes with a host-code twin (the fill's prefix sum, the sort, the connect pass's phase 2,
-// the solve's frontier steps: the default where the GL runs on the CPU) and their shaders
+// the solve's frontier steps, constant's and smart's blends: the default where the GL runs on the CPU) and their shaders
 // (TLAB_HOST_PASSES=off) draw the same pictures, bit for bit: smart transparency with silhouettes
 // and halos, adaptive α, halos off and Eq. 8 spreading, the other buffer styles; lists that fit the
 // slots, lists that outgrow them (the scatter fill, then slots), and two frames of each renderer.
@@ -347,6 +350,11 @@ TEST(SmartTransparency, HostPassesAndTheirShadersDrawTheSamePictures) {
       {"builtin:open-cylinders", "smart", {{"alpha_init", "adaptive"}, {"iterations", "5"}}},
       {"builtin:nested-spheres?n=3", "smart", {{"halos", "off"}}},
       {"builtin:nested-spheres?n=6", "smart", {{"spread", "diffusion"}}},
+      // The blend as host code (issue #29, twenty-eighth round) with each profile modifier: Eq. 11,
+      // none, and Eq. 10 (the default) with halos whose γ spreads.
+      {"builtin:nested-spheres?n=6", "smart", {{"modifier", "pow"}, {"p", "2.5"}}},
+      {"builtin:torus", "smart", {{"modifier", "none"}, {"alpha_init", "adaptive"}}},
+      {"builtin:quad-stack?n=6&m=3", "smart", {{"modifier", "pow"}}},
       {"builtin:nested-spheres?n=6", "iris", {}},
       {"builtin:torus", "constant", {}},
       {"builtin:open-cylinders", "view-dependent", {}},
