@@ -27,6 +27,26 @@ RenderRequest request(int w, int h, FillMethod fill = FillMethod::CountScatter) 
 
 std::uint16_t countAt(const Renderer& renderer, int w, int x, int y) { return renderer.layerCounts()[std::size_t(y) * w + x]; }
 
+// Records of one quad (colour: depth, triangle, colour) and of two (with normal, ∇z and ids): the
+// word-by-word and the quad paths of the fill and the sort.
+std::vector<FragmentLayout> oneAndTwoQuadLayouts() {
+  FragmentProperties colour, padded;
+  colour |= FragmentProperty::Color;
+  padded = colour;
+  padded |= FragmentProperty::Normal;
+  padded |= FragmentProperty::DepthGradient;
+  padded |= FragmentProperty::Ids;
+  return {FragmentLayout(colour), FragmentLayout(padded)};
+}
+
+// Looking down −z at the origin from 4 units away, for a 48×40 buffer.
+RasterUniforms lookingDownZ() {
+  RasterUniforms u;
+  u.view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
+  u.projection = glm::perspective(0.9f, 48.0f / 40.0f, 0.1f, 20.0f);
+  return u;
+}
+
 }  // namespace
 
 class BothFillMethods : public ::testing::TestWithParam<FillMethod> {};
@@ -283,20 +303,12 @@ TEST(IllustrationBuffer, ConstantSortingInItsComposePassEqualsTheSortPass) {
 // sorted then). With the sort as a shader the compositor sorts, and no plane is written.
 TEST(IllustrationBuffer, ACompositorThatSortsGetsTheColourPlaneSortedByHostCode) {
   tlab::gpu::ShaderCache shaders;
-  FragmentProperties colour, padded;
-  colour |= FragmentProperty::Color;
-  padded = colour;
-  padded |= FragmentProperty::Normal;
-  padded |= FragmentProperty::DepthGradient;
-  padded |= FragmentProperty::Ids;
   PassTimer timer(false);
   for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:nested-spheres?n=3"}) {
     const Scene scene = loadScene(source);
     GpuScene gpu(scene);
-    RasterUniforms u;
-    u.view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
-    u.projection = glm::perspective(0.9f, 48.0f / 40.0f, 0.1f, 20.0f);
-    for (const FragmentLayout& layout : {FragmentLayout(colour), FragmentLayout(padded)}) {
+    const RasterUniforms u = lookingDownZ();
+    for (const FragmentLayout& layout : oneAndTwoQuadLayouts()) {
       FragmentBuffer reference(shaders, 48, 40, layout, FillMethod::CountScatter);
       reference.build(gpu, u, timer);
       const std::size_t n = reference.fragmentCount();
@@ -545,21 +557,13 @@ TEST(IllustrationBuffer, ConstantComposesEveryCoveredPixelAndPaintsTheRestBackgr
 // and whether records are copied word by word or in quads. Off, no plane is written.
 TEST(IllustrationBuffer, TheColorPlaneHoldsEachSortedRecordsColour) {
   tlab::gpu::ShaderCache shaders;
-  FragmentProperties colour, padded;
-  colour |= FragmentProperty::Color;
-  padded = colour;
-  padded |= FragmentProperty::Normal;
-  padded |= FragmentProperty::DepthGradient;
-  padded |= FragmentProperty::Ids;
   PassTimer timer(false);
   // 20 layers (the first frame scatters, the second fills 20 slots) and at most 4 (8 slots or fewer).
   for (const char* source : {"builtin:quad-stack?n=20&m=4", "builtin:nested-spheres?n=2"}) {
     const Scene scene = loadScene(source);
     GpuScene gpu(scene);
-    RasterUniforms u;
-    u.view = glm::lookAt(glm::vec3(0, 0, 4), glm::vec3(0), glm::vec3(0, 1, 0));
-    u.projection = glm::perspective(0.9f, 48.0f / 40.0f, 0.1f, 20.0f);
-    for (const FragmentLayout& layout : {FragmentLayout(colour), FragmentLayout(padded)})
+    const RasterUniforms u = lookingDownZ();
+    for (const FragmentLayout& layout : oneAndTwoQuadLayouts())
       for (const FillMethod method : {FillMethod::CountScatter, FillMethod::LinkedList}) {
         FragmentBuffer buffer(shaders, 48, 40, layout, method);
         buffer.build(gpu, u, timer);
