@@ -159,12 +159,20 @@ std::uint32_t FragmentBuffer::prefixSumOnHost() {
   return total;
 }
 
-void FragmentBuffer::ensureHeads() {
+void FragmentBuffer::sumHeads() {
   if (headsReady_) return;
   fragmentCount_ = prefixSum();
   fragmentCountKnown_ = true;
   headsReady_ = true;
+}
+
+void FragmentBuffer::ensureHeads() {
+  sumHeads();
   ensureCapacity(fragmentCount_);
+}
+
+bool FragmentBuffer::colorsSortedOnHost() const {
+  return sortInCompose_ && sortOnHost_ && method_ == FillMethod::CountScatter && layout_.properties.has(FragmentProperty::Color);
 }
 
 // Slots per pixel for this frame's count pass: as many as the largest list seen so far, when
@@ -172,7 +180,7 @@ void FragmentBuffer::ensureHeads() {
 // A compositor that sorts keeps its keys beside the slots, within the same budget.
 std::uint32_t FragmentBuffer::slotsForThisFrame() {
   const std::size_t bytes = pixels() * slotsWanted_ * std::size_t(layout_.stride) * 4;
-  const std::size_t orderBytes = sortInCompose_ ? pixels() * slotsWanted_ * 8 : 0;
+  const std::size_t orderBytes = sortInCompose_ && !colorsSortedOnHost() ? pixels() * slotsWanted_ * 8 : 0;
   if (slotsWanted_ == 0 || std::max(bytes, orderBytes) > maxBytes_ || bytes + orderBytes > kSlotBudgetBytes) return 0;
   if (slots_.size() < bytes) slots_ = gpu::Buffer(bytes);
   if (slotOrder_.size() < orderBytes) slotOrder_ = gpu::Buffer(orderBytes);
@@ -253,7 +261,7 @@ void FragmentBuffer::build(const GpuScene& scene, const RasterUniforms& uniforms
   if (method_ == FillMethod::CountScatter) fillCountScatter(scene, uniforms, timer);
   else fillLinkedList(scene, uniforms, timer);
   if (!sortInCompose_ || method_ == FillMethod::LinkedList) timer.time("sort", [&] { ensureSorted(); });
-  else if (sortOnHost_ && layout_.properties.has(FragmentProperty::Color)) timer.time("sort", [&] { sortColorsOnHost(); });
+  else if (colorsSortedOnHost()) timer.time("sort", [&] { sortColorsOnHost(); });
   gpu::checkGl("building the illustration buffer");
 }
 
@@ -338,9 +346,10 @@ void FragmentBuffer::sortListsOnHost(bool records, bool steps, bool plane) {
 // Where the compositor sorts and the GL runs on the CPU: the colour words alone, in each list's
 // sorted order, which compose/host_blend.hpp blends. On llvmpipe the two took a third of the time
 // of the compose pass sorting its lists in lanes (issue #29, twenty-eighth round).
+// The heads alone: records in slots need no pool (a reader that wants them sorted gets one then).
 void FragmentBuffer::sortColorsOnHost() {
-  ensureHeads();
-  if (colorPlaneBuffer_.size() < capacity_ * 4) colorPlaneBuffer_ = gpu::Buffer(capacity_ * 4);
+  sumHeads();
+  if (colorPlaneBuffer_.size() < fragmentCount_ * 4) colorPlaneBuffer_ = gpu::Buffer(fragmentCount_ * 4);
   sortListsOnHost(false, false, true);
 }
 

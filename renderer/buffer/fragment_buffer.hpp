@@ -131,7 +131,10 @@ class FragmentBuffer final : public Fill {
   const gpu::ShaderProgram& shadingFill(const char* fragmentShader, const RasterUniforms& u) const;
   std::uint32_t prefixSum();
   std::uint32_t prefixSumOnHost();  // the same heads, covered pixels and fragment count, summed by host code
-  void ensureHeads();  // this frame's prefix sum (heads, fragment count) and a pool that holds it
+  void sumHeads();     // this frame's prefix sum (heads, fragment count, covered pixels), once
+  void ensureHeads();  // sumHeads and a pool that holds the frame's fragments
+  // The compositor sorts, and its colours are sorted by host code instead (see setColorPlane).
+  bool colorsSortedOnHost() const;
   void fillCountScatter(const GpuScene& scene, const RasterUniforms& u, PassTimer& timer);
   std::uint32_t slotsForThisFrame();
   void ensureSorted();  // the heads, then sortLists(), unless this frame's lists are sorted

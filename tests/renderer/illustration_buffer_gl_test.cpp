@@ -343,6 +343,21 @@ TEST(IllustrationBuffer, ACompositorThatSortsGetsTheColourPlaneSortedByHostCode)
       buffer.setSortOnHost(false);
       buffer.build(gpu, u, timer);
       EXPECT_EQ(buffer.colorPlane(), nullptr) << "the compose pass sorts";
+
+      // Records in slots need no pool: colours sorted from the slots leave a pool of 16 alone, and
+      // a reader that wants the sorted records gets a pool then.
+      if (std::string(source).find("nested") != std::string::npos) {
+        FragmentBuffer small(shaders, 48, 40, layout, FillMethod::CountScatter, 16);
+        small.setSortInCompose(true);
+        small.setSortOnHost(true);
+        small.build(gpu, u, timer);
+        ASSERT_GT(small.slotsUsed(), 0u) << "lists of up to 6 fit the first frame's 8 slots";
+        EXPECT_EQ(small.capacity(), 16u);
+        ASSERT_NE(small.colorPlane(), nullptr);
+        EXPECT_EQ(small.fragmentCount(), n);
+        EXPECT_EQ(small.sortedRecords(0, n), records);
+        EXPECT_EQ(small.capacity(), n);
+      }
     }
   }
 }
