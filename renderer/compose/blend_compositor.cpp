@@ -8,24 +8,20 @@
 
 namespace tlab::render {
 
-namespace {
-
-// Where the host sort wrote each list's colour words in order (the GL runs on the CPU: issue #29,
-// twenty-eighth round), they are blended by host code too, straight into the image: the shader's
-// arithmetic (compose/host_blend.hpp), without a dispatch of lanes or a read-back.
-void composeBlendOnHost(FrameContext& frame, const FragmentBuffer& buffer, float alpha) {
-  const PixelRect rect = sceneFootprint(frame);
+void blendColourPlaneOnHost(FrameContext& frame, const FragmentBuffer& buffer, PixelRect rect, float alpha,
+                            const float* alphas, const float* betas, const float* gammas) {
   const std::size_t pixels = buffer.pixels();
   const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
       plane(*buffer.colorPlane(), std::size_t(buffer.fragmentCount()) * 4);
+  SortedColours in{counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), plane.as<std::uint32_t>(), buffer.width(), buffer.height()};
+  in.alpha = alphas;
+  in.beta = betas;
+  in.gamma = gammas;
   timePart(frame.timer, "compose blend on the host", [&] {
-    blendOnHost({counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), plane.as<std::uint32_t>(), buffer.width(), buffer.height()},
-                rect.x0, rect.y0, rect.x1, rect.y1, alpha, glm::vec3(frame.background), frame.image,
+    blendOnHost(in, rect.x0, rect.y0, rect.x1, rect.y1, alpha, glm::vec3(frame.background), frame.image,
                 std::thread::hardware_concurrency());
   });
 }
-
-}  // namespace
 
 // The lists sorted by the fill's sort pass, or, when the fill left them unsorted (FillSpec::
 // sortsInCompose), sorted here as they are blended (compose/blend.comp, TLAB_FUSED), or, where
@@ -35,8 +31,8 @@ void composeBlendOnHost(FrameContext& frame, const FragmentBuffer& buffer, float
 // teapot is background).
 void composeBlend(FrameContext& frame, float alpha) {
   FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
-  if (buffer.colorPlane() && buffer.sortsOnHost()) {
-    composeBlendOnHost(frame, buffer, alpha);
+  if (buffer.colorPlane() && buffer.sortsOnHost()) {  // the host sorted the colours: blend them there too
+    blendColourPlaneOnHost(frame, buffer, sceneFootprint(frame), alpha);
     return;
   }
   gpu::ShaderDefines defines = buffer.layout().defines();

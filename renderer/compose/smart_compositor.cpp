@@ -3,11 +3,10 @@
 #include <algorithm>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "renderer/buffer/fragment_buffer.hpp"
-#include "renderer/compose/host_blend.hpp"
+#include "renderer/compose/blend_compositor.hpp"
 #include "renderer/gpu/gl_error.hpp"
 
 namespace tlab::render {
@@ -58,20 +57,11 @@ void composeSmartOnHost(FrameContext& frame, TransparencyFields& fields, const S
   const FragmentBuffer& buffer = frame.fillAs<FragmentBuffer>();
   const std::vector<float> beta = readsBeta ? modifiedProfile(frame, fields, Field::Beta, settings) : std::vector<float>();
   const std::vector<float> gamma = readsGamma ? modifiedProfile(frame, fields, Field::Gamma, settings) : std::vector<float>();
-  const std::size_t pixels = buffer.pixels(), n = fields.fragments();
-  const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
-      plane(*buffer.colorPlane(), n * 4);
   std::optional<gpu::MappedRead> alpha;
-  if (!uniformAlpha) alpha.emplace(fields.current(Field::Alpha), n * 4);
-  SortedColours in{counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), plane.as<std::uint32_t>(), buffer.width(), buffer.height()};
-  in.alpha = alpha ? alpha->as<float>() : nullptr;
-  in.beta = readsBeta ? beta.data() : nullptr;
-  in.gamma = readsGamma ? gamma.data() : nullptr;
-  const float a = uniformAlpha ? std::clamp(*uniformAlpha, 0.0f, 1.0f) : 0.0f;
-  timePart(frame.timer, "compose blend on the host", [&] {
-    blendOnHost(in, 0, 0, buffer.width(), buffer.height(), a, glm::vec3(frame.background), frame.image,
-                std::thread::hardware_concurrency());
-  });
+  if (!uniformAlpha) alpha.emplace(fields.current(Field::Alpha), fields.fragments() * 4);
+  blendColourPlaneOnHost(frame, buffer, PixelRect{0, 0, buffer.width(), buffer.height()},
+                         uniformAlpha ? std::clamp(*uniformAlpha, 0.0f, 1.0f) : 0.0f, alpha ? alpha->as<float>() : nullptr,
+                         readsBeta ? beta.data() : nullptr, readsGamma ? gamma.data() : nullptr);
 }
 
 }  // namespace
@@ -82,16 +72,16 @@ void composeSmart(FrameContext& frame, TransparencyFields& fields, const SmartSe
   // everywhere adds nothing: modifier(0) = 0), α where it varies (Eq. 4's α is s everywhere).
   // (The compose binds only the fields it reads: a field the connect pass left unstored is then
   // never written out, TransparencyFields::setUniform.)
-  gpu::ShaderDefines defines = buffer.layout().defines();
   const bool readsBeta = fields.hasBeta() && !fields.allZero(Field::Beta);
   const bool readsGamma = fields.hasGamma() && !fields.allZero(Field::Gamma);
   const std::optional<float> uniformAlpha = fields.uniformValue(Field::Alpha);
-  if (readsBeta) defines.emplace_back("TLAB_HAS_BETA", "1");
-  if (readsGamma) defines.emplace_back("TLAB_HAS_GAMMA", "1");
-  if (buffer.colorPlane() && buffer.sortsOnHost()) {
+  if (buffer.colorPlane() && buffer.sortsOnHost()) {  // the host sorted the colours: blend them there too
     composeSmartOnHost(frame, fields, settings, readsBeta, readsGamma, uniformAlpha);
     return;
   }
+  gpu::ShaderDefines defines = buffer.layout().defines();
+  if (readsBeta) defines.emplace_back("TLAB_HAS_BETA", "1");
+  if (readsGamma) defines.emplace_back("TLAB_HAS_GAMMA", "1");
   if (uniformAlpha) defines.emplace_back("TLAB_UNIFORM_ALPHA", "1");
   defines.emplace_back("TLAB_MODIFIER", std::to_string(settings.modifier));
   // The colours from the sort's colour plane where it wrote one (SmartStyle::fill asks for it).
