@@ -366,6 +366,11 @@ void FragmentBuffer::bindSorted() const {
   if (colorPlaneWritten_) colorPlaneBuffer_.bindBase(GL_SHADER_STORAGE_BUFFER, kColorPlane);
 }
 
+const gpu::Buffer& FragmentBuffer::sortedRecordBuffer() const {
+  if (!sorted_) throw std::logic_error("a pass read the sorted records of a frame whose sort was left to the compose pass");
+  return fragsSorted_;
+}
+
 bool FragmentBuffer::bindUnsorted() const {
   pixelCount_.bindBase(GL_SHADER_STORAGE_BUFFER, kPixelCount);
   if (slotsUsed_ > 0) {

@@ -87,6 +87,7 @@ class FragmentBuffer final : public Fill {
   // The per-pixel counts and heads themselves (what bindSorted binds), e.g. for texture views.
   const gpu::Buffer& pixelCountBuffer() const { return pixelCount_; }
   const gpu::Buffer& pixelHeadBuffer() const { return pixelHead_; }
+  const gpu::Buffer& sortedRecordBuffer() const;  // this frame's sorted records; throws where the lists are not sorted
   const gpu::Buffer& coveredPixelBuffer() const { return coveredPixels_; }  // coveredPixelCount() words (heads ready)
   // One RGBA32F texel per pixel for a compositor's output, kept across frames (a fresh buffer
   // each frame costs page faults whose price varies with the machine's load).

@@ -1,5 +1,7 @@
 #include "renderer/ops/connect_pass.hpp"
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <stdexcept>
 #include <thread>
@@ -8,6 +10,7 @@
 #include "renderer/buffer/fragment_layout.hpp"
 #include "renderer/gpu/gl_error.hpp"
 #include "renderer/ops/boundary_conditions.hpp"
+#include "renderer/ops/fast_links.hpp"
 
 namespace tlab::render {
 
@@ -58,6 +61,39 @@ void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fie
   }
   for (int i = 0; i < 2; ++i)
     if (listed[i]) TransparencyFields::writeList(fields.frontier(kSeeded[i]), seeds[i]);
+}
+
+// Phase 1 (ops/connect.comp) as host code over the mapped buffers (ops/fast_links.hpp): the links
+// the fast path settles (as words, or as pair bits where `linkMasks`), and the work buffer's count,
+// `partial` word and listed pairs for phase 3. Returns the header (count, partial).
+std::array<std::uint32_t, 2> settleFastLinks(const FragmentBuffer& buffer, const SmartSettings& settings, float objectRadius,
+                                             TransparencyFields& fields, bool linkMasks) {
+  const std::size_t pixels = buffer.pixels(), n = buffer.fragmentCount();
+  if (n == 0) return {0, 0};  // (the work buffer's header is cleared)
+  const FragmentLayout& layout = buffer.layout();
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // the sort's words, for the host
+  FastLinks out;
+  {
+    const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
+        records(buffer.sortedRecordBuffer(), n * layout.stride * 4), steps(*buffer.listSteps(), pixels * sizeof(glm::vec2));
+    const gpu::MappedWrite links(fields.links(), n * sizeof(glm::uvec4));
+    std::optional<gpu::MappedWrite> pairs;
+    if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
+    const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), nullptr, 0};
+    const bool ids = layout.properties.has(FragmentProperty::Ids);
+    const SortedSurfels surfels{records.as<std::uint32_t>(), layout.stride, layout.depthGradientOffset, layout.normalOffset,
+                                ids, layout.idsOffset, steps.as<glm::vec2>()};
+    // The shader's uniforms, computed as connectFragments sets them.
+    const ContinuityWeights weights{objectRadius, float(settings.wz), float(settings.wz / objectRadius), float(settings.wn)};
+    out.links = links.as<glm::uvec4>();
+    out.pairs = pairs ? pairs->as<glm::uvec4>() : nullptr;
+    settleFastLinksOnHost(grid, surfels, weights, out, fields.fastLinkRows(), std::thread::hardware_concurrency());
+  }
+  const std::array<std::uint32_t, 2> header{std::uint32_t(out.listed.size()), out.partial ? 1u : 0u};
+  const gpu::MappedWrite work(fields.connectWork(pixels), (2 + out.listed.size()) * 4);
+  std::copy(header.begin(), header.end(), work.as<std::uint32_t>());
+  std::copy(out.listed.begin(), out.listed.end(), work.as<std::uint32_t>() + 2);
+  return header;
 }
 
 }  // namespace
@@ -185,9 +221,16 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   };
   // Phase 1 settles most pairs of adjacent pixels; phase 3 searches the pairs it listed; phase 2
   // sets the fields from the (mutual) links.
-  run("1");
-  std::uint32_t header[2] = {0, 0};  // the listed pairs, and whether some fragment lacks a same-layer link
-  fields.readSmall(work, header, sizeof header);
+  // The listed pairs, and whether some fragment lacks a same-layer link: from phase 1 as host code
+  // where the host passes run (gpu::hostPassesWanted), else from the shader's work buffer.
+  std::array<std::uint32_t, 2> header{0, 0};
+  if (bounded && gpu::hostPassesWanted()) {
+    timePart(timer, "connect phase 1 on the host",
+             [&] { header = settleFastLinks(buffer, settings, objectRadius, fields, linkMasks); });
+  } else {
+    run("1");
+    fields.readSmall(work, header.data(), sizeof header);
+  }
   const std::uint32_t listed = header[0];
   // Phase 2 would find every fragment with its 4 neighbours (see ConnectOutput) where the links
   // are bits joining whole lists all round; the frame then reads nothing it writes, unless Eq. 5's

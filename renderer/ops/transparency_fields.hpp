@@ -11,6 +11,7 @@
 
 #include "renderer/gpu/gl_objects.hpp"
 #include "renderer/gpu/shader_program.hpp"
+#include "renderer/ops/fast_links.hpp"
 
 namespace tlab::render {
 
@@ -63,6 +64,7 @@ class TransparencyFields {
   // The connect pass's work list (a count, a flag, then up to 2 × `pixels` pairs of adjacent pixels), kept likewise.
   gpu::Buffer& connectWork(std::size_t pixels);
   gpu::Buffer& connectPairs(std::size_t pixels);  // the connect pass's pair bits, a uvec4 a pixel
+  std::vector<FastLinkRows>& fastLinkRows() { return fastLinkRows_; }  // phase 1 as host code's, a thread each
   // Whether the last connect pass kept its settled links as pair bits (written out by its phase 2).
   void setLinksFromPairBits(bool on) { linksFromPairBits_ = on; }
   bool linksFromPairBits() const { return linksFromPairBits_; }
@@ -113,6 +115,7 @@ class TransparencyFields {
   std::size_t fragments_ = 0;
   bool withBeta_ = false, withGamma_ = false;
   gpu::Buffer links_, flags_, alphaOld_, connectWork_, connectPairs_;
+  std::vector<FastLinkRows> fastLinkRows_;
   bool linksFromPairBits_ = false;
   PingPong alpha_, beta_, gamma_;
   gpu::Buffer frontier_[3];  // by Field

@@ -134,10 +134,10 @@ TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
     }
   }
   const auto& smart = j["rows"][1];
-  // llvmpipe runs the connect pass's phase 2 and the solve's frontier steps as host code: one part each.
-  for (const char* name : {"connect phase 1", "connect phase 2 on the host", "solve beta frontier on the host"})
+  // llvmpipe runs the connect pass's phases 1 and 2 and the solve's frontier steps as host code: one part each.
+  for (const char* name : {"connect phase 1 on the host", "connect phase 2 on the host", "solve beta frontier on the host"})
     EXPECT_TRUE(smart["part_ms"].contains(name)) << name << "\n" << smart;
-  EXPECT_EQ(smart["part_counts"]["connect phase 1"], 1);
+  EXPECT_EQ(smart["part_counts"]["connect phase 1 on the host"], 1);
   EXPECT_EQ(smart["part_counts"]["solve beta frontier on the host"], 1);
   const std::string beta = smart["operations"][1].get<std::string>();  // "solve: beta spreading (Eq. 9 max, K ..."
   const std::string after = "solve: beta spreading (Eq. 9 max, ";
@@ -150,6 +150,7 @@ TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
   EXPECT_EQ(shader["operations"], smart["operations"]);
   EXPECT_EQ(shader["part_counts"]["solve beta frontier step"].get<int>(), std::stoi(beta.substr(after.size()))) << beta;
   EXPECT_FALSE(shader["part_counts"].contains("solve beta frontier on the host")) << shader;
+  EXPECT_EQ(shader["part_counts"]["connect phase 1"], 1) << shader;
   EXPECT_EQ(shader["part_counts"]["connect phase 2"], 1) << shader;
   EXPECT_FALSE(shader["part_counts"].contains("connect phase 2 on the host")) << shader;
   for (const auto& row : stepsJson["rows"]) {  // the compose shaders blend, then their output is read back
@@ -159,7 +160,7 @@ TEST(BenchCli, PartsListEachPassPiecesUnderItsRow) {
 
   const auto text = runCommand(base + "--frames 2 --parts");
   ASSERT_EQ(text.exitCode, 0) << text.err;
-  EXPECT_TRUE(std::regex_search(text.out, std::regex("\n  parts: .*connect phase 1 [0-9.]+ ms \\(1x\\), .*solve beta "
+  EXPECT_TRUE(std::regex_search(text.out, std::regex("\n  parts: .*connect phase 1 on the host [0-9.]+ ms \\(1x\\), .*solve beta "
                                                      "frontier on the host [0-9.]+ ms \\(1x\\)")))
       << text.out;
   const auto wrong = runCommand("TLAB_HOST_PASSES=maybe " + base + "--frames 1");

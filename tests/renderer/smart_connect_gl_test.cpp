@@ -472,3 +472,71 @@ TEST(NeighborLinks, PhaseTwoAsHostCodeLeavesTheShadersFields) {
   EXPECT_GT(withSeeds, 4);
   EXPECT_GT(withBits, 2);
 }
+
+// Phase 1 as host code (ops/fast_links.hpp: the default where the GL runs on the CPU) and as the
+// shader (TLAB_HOST_PASSES=off) write the same words: the pairs listed for the full search (in pixel
+// order on the host, in any order by the shader's atomics), `partial`, each covered pixel's pair
+// bits, and after phases 3 and 2 the same links and flags. Lists of 2 to 40 layers (the bits up to
+// 32, the words past them), several components, pairs the fast path cannot settle, and a larger
+// torus for more pairs near a tie.
+TEST(NeighborLinks, PhaseOneAsHostCodeWritesTheShadersWords) {
+  struct Case {
+    Scene scene;
+    int w, h;
+    NeighborSearch search;
+  };
+  const std::vector<Case> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
+                                   {occluderScene(), 48, 40, NeighborSearch::Bounded},
+                                   {loadScene("builtin:torus"), 200, 150, NeighborSearch::Bounded},
+                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
+                                   {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
+                                   {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
+                                   {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
+                                   {loadScene("builtin:quad-stack?n=40"), 17, 13, NeighborSearch::Bounded}};
+  std::size_t listedPairs = 0, withBits = 0, partial = 0;
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.scene.name + " " + std::to_string(c.w) + " " + std::to_string(int(c.search)));
+    SmartRig rig(c.scene, c.w, c.h);
+    const float radius = rig.scene.boundingSphere().radius;
+    const std::size_t pixels = std::size_t(c.w) * c.h;
+    struct Words {
+      std::vector<std::uint32_t> work;
+      std::vector<glm::uvec4> pairs, links;
+      std::vector<std::uint32_t> flags;
+      bool bits = false;
+    } words[2];  // host code, shader
+    for (const bool onHost : {true, false}) {
+      const ScopedEnv passes("TLAB_HOST_PASSES", onHost ? "on" : "off");
+      TransparencyFields fields;
+      connectFragments(*rig.buffer, rig.shaders, rig.smart, radius, fields, c.search);
+      Words& w = words[onHost ? 0 : 1];
+      std::uint32_t header[2];
+      fields.connectWork(pixels).download(header, sizeof header);
+      w.work.assign(header, header + 2);
+      std::vector<std::uint32_t> listed(header[0]);
+      if (!listed.empty()) fields.connectWork(pixels).download(listed.data(), listed.size() * 4, 8);
+      std::sort(listed.begin(), listed.end());
+      w.work.insert(w.work.end(), listed.begin(), listed.end());
+      w.bits = fields.linksFromPairBits();
+      if (w.bits) {
+        std::vector<glm::uvec4> all(pixels);
+        fields.connectPairs(pixels).download(all.data(), pixels * sizeof(glm::uvec4));
+        for (std::size_t p = 0; p < pixels; ++p)
+          if (rig.counts[p] > 0) w.pairs.push_back(all[p]);  // the words phase 1 writes
+      }
+      w.links = fields.readLinks();
+      w.flags = fields.readFlags();
+    }
+    EXPECT_EQ(words[0].bits, words[1].bits);
+    EXPECT_EQ(words[0].work, words[1].work);
+    EXPECT_EQ(words[0].pairs, words[1].pairs);
+    EXPECT_EQ(words[0].links, words[1].links);
+    EXPECT_EQ(words[0].flags, words[1].flags);
+    listedPairs += words[1].work.size() - 2;
+    withBits += words[1].bits;
+    partial += words[1].bits && words[1].work[1] != 0;
+  }
+  EXPECT_GT(listedPairs, 10u);  // the full search had pairs to take over
+  EXPECT_GE(withBits, 2u);
+  EXPECT_GE(partial, 1u);
+}

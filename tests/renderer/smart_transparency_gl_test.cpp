@@ -295,11 +295,12 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
   std::map<std::string, int> counts;
   for (const auto& p : timed.parts) counts[p.name] = p.count;
   // The second frame fills straight into slots as long as the first frame's lists.
-  for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1", "connect phase 2 on the host",
+  for (const char* name : {"fill rasterization into slots", "fill prefix sum", "connect phase 1 on the host", "connect phase 2 on the host",
                            "solve beta frontier on the host", "compose blend on the host"})
     EXPECT_TRUE(counts.count(name)) << name;
   EXPECT_EQ(counts.count("compose read-back"), 0u);
-  EXPECT_EQ(counts["connect phase 1"], 1);
+  EXPECT_EQ(counts["connect phase 1 on the host"], 1);
+  EXPECT_EQ(counts.count("connect phase 1"), 0u);
   EXPECT_EQ(counts["solve beta frontier on the host"], 1);
   const std::string beta = timed.operations.at(1);  // "solve: beta spreading (Eq. 9 max, K[ of N] steps...)"
   const std::string after = "solve: beta spreading (Eq. 9 max, ";
@@ -313,6 +314,8 @@ TEST(SmartTransparency, TimingThePassesPartsLeavesThePictureAsItWas) {
     for (const auto& p : steps.parts) stepCounts[p.name] = p.count;
     EXPECT_EQ(stepCounts["solve beta frontier step"], std::stoi(beta.substr(after.size()))) << beta;
     EXPECT_EQ(stepCounts.count("solve beta frontier on the host"), 0u);
+    EXPECT_EQ(stepCounts["connect phase 1"], 1);
+    EXPECT_EQ(stepCounts.count("connect phase 1 on the host"), 0u);
     EXPECT_EQ(stepCounts["connect phase 2"], 1);
     EXPECT_EQ(stepCounts.count("connect phase 2 on the host"), 0u);
     EXPECT_EQ(stepCounts["compose read-back"], 1);

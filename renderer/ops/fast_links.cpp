@@ -1,0 +1,429 @@
+#include "renderer/ops/fast_links.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "core/parallel_shares.hpp"
+
+// 32-byte vectors are passed only between functions inlined into one another (always_inline),
+// all of them compiled for AVX2 where they are (see settleRows): no ABI crosses here.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace tlab::render {
+
+namespace {
+
+constexpr std::uint32_t kNone = 0xFFFFFFFFu;        // NO_NEIGHBOR of ops/field_bindings.glsl
+constexpr std::uint32_t kUnresolved = 0xFFFFFFFEu;  // UNRESOLVED of ops/connect.comp
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
+constexpr float kEpsNSlack = 1e-4f;  // ops/connect.comp's, for beyond
+constexpr int kMaxLanes = 8;
+
+#define TLAB_INLINE __attribute__((always_inline)) inline
+
+// N lanes, as GCC's vector extension (SSE, or AVX2 where settleRows is built for it): the same IEEE
+// operations lane by lane as one at a time, so each lane's bits are the scalar code's (no
+// contraction: -std=c++20, and no FMA instructions).
+template <int N>
+struct Lanes {
+  typedef float F __attribute__((vector_size(4 * N)));
+  typedef std::int32_t I __attribute__((vector_size(4 * N)));
+  static TLAB_INLINE F load(const float* p) {
+    F v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  static TLAB_INLINE I load(const std::int32_t* p) {
+    I v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+  }
+  static TLAB_INLINE void store(std::int32_t* p, I v) { std::memcpy(p, &v, sizeof v); }
+  static TLAB_INLINE void store(float* p, F v) { std::memcpy(p, &v, sizeof v); }
+  static TLAB_INLINE F splat(float x) { return F{} + x; }
+  static TLAB_INLINE I all() { return I{} - 1; }
+  static TLAB_INLINE F absolute(F v) { return F(I(v) & 0x7FFFFFFF); }
+};
+
+enum Plane { kZ, kGx, kGy, kNx, kNy, kNz, kPlanes };
+
+struct Weights {
+  float r, wz, gapScale, wn, wnSlack;
+};
+
+// One row's layer planes (FastLinkRows::Row), decoded from the sorted records.
+class RowPlanes {
+ public:
+  RowPlanes(FastLinkRows::Row& row, std::size_t paddedWidth, std::uint32_t layers)
+      : row_(row), pitch_(paddedWidth), layers_(layers) {
+    const std::size_t cells = std::size_t(layers) * paddedWidth;
+    // Never shrunk, and zero where new: every cell holds 0 or a value decoded for some list.
+    if (row.planes.size() < kPlanes * cells) row.planes.resize(kPlanes * cells, 0.0f);
+    if (row.comps.size() < cells) row.comps.resize(cells, 0);
+    row.counts.resize(paddedWidth);
+    row.stepX.resize(paddedWidth);
+    row.stepY.resize(paddedWidth);
+  }
+  const float* plane(Plane p, std::uint32_t layer) const { return row_.planes.data() + (std::size_t(p) * layers_ + layer) * pitch_; }
+  float* plane(Plane p, std::uint32_t layer) { return row_.planes.data() + (std::size_t(p) * layers_ + layer) * pitch_; }
+  const std::int32_t* comps(std::uint32_t layer) const { return row_.comps.data() + std::size_t(layer) * pitch_; }
+  const std::int32_t* counts() const { return row_.counts.data(); }
+  const float* stepX() const { return row_.stepX.data(); }
+  const float* stepY() const { return row_.stepY.data(); }
+  int first = 0, last = -1;  // the row's covered columns
+
+  // Row y of the grid (no list beyond the image).
+  template <int N>
+  TLAB_INLINE void load(const CoveredGrid& grid, const SortedSurfels& s, int y) {
+    std::fill(row_.counts.begin(), row_.counts.end(), 0);
+    first = grid.width;
+    last = -1;
+    if (y >= grid.height) return;
+    std::uint32_t longest = 0;
+    const std::size_t planeCells = std::size_t(layers_) * pitch_;
+    float* planes = row_.planes.data();
+    for (int x = 0; x < grid.width; ++x) {
+      const std::size_t pixel = std::size_t(y) * grid.width + x;
+      const std::uint32_t n = grid.counts[pixel];
+      row_.counts[x] = std::int32_t(n);
+      if (n == 0) continue;
+      first = std::min(first, x);
+      last = x;
+      longest = std::max(longest, n);
+      row_.stepX[x] = s.steps[pixel].x;
+      row_.stepY[x] = s.steps[pixel].y;
+      const std::uint32_t* record = s.words + std::size_t(grid.heads[pixel]) * s.stride;
+      for (std::uint32_t layer = 0; layer < n; ++layer, record += s.stride) {
+        const std::size_t at = std::size_t(layer) * pitch_ + x;
+        planes[kZ * planeCells + at] = std::bit_cast<float>(record[0]);
+        planes[kGx * planeCells + at] = std::bit_cast<float>(record[s.gradientOffset]);
+        planes[kGy * planeCells + at] = std::bit_cast<float>(record[s.gradientOffset + 1]);
+        planes[kNx * planeCells + at] = std::bit_cast<float>(record[s.normalOffset]);  // the word, decoded below
+        row_.comps[at] = s.hasIds ? std::int32_t((record[s.idsOffset] >> 16) & 0x7FFFu) : 0;
+      }
+    }
+    for (std::uint32_t layer = 0; layer < longest; ++layer)
+      for (int x = first; x <= last; x += N) decodeNormals<N>(layer, x);
+  }
+
+ private:
+  // The normal words of N cells decoded in place: frame/fragment_layout.glsl's decodeNormal
+  // (render::decodeNormal) lane by lane. Cells beyond a list's end decode whatever word they
+  // hold: a unit normal too, never read.
+  template <int N>
+  TLAB_INLINE void decodeNormals(std::uint32_t layer, int x) {
+    using V = Lanes<N>;
+    using F = typename V::F;
+    using I = typename V::I;
+    float *nx = plane(kNx, layer) + x, *ny = plane(kNy, layer) + x, *nz = plane(kNz, layer) + x;
+    const I word = I(V::load(nx));
+    // unpackSnorm2x16: clamp(int16 / 32767, -1, 1), low half first.
+    const auto component = [](I bits) {
+      const F v = __builtin_convertvector(bits, F) / 32767.0f;
+      const F lo = v < -1.0f ? V::splat(-1.0f) : v;
+      return 1.0f < lo ? V::splat(1.0f) : lo;
+    };
+    const F ex = component((word << 16) >> 16), ey = component(word >> 16);
+    const F z = 1.0f - V::absolute(ex) - V::absolute(ey);
+    const I wrap = z < 0.0f;  // octahedralWrap
+    const F x1 = wrap ? (1.0f - V::absolute(ey)) * (ex >= 0.0f ? V::splat(1.0f) : V::splat(-1.0f)) : ex;
+    const F y1 = wrap ? (1.0f - V::absolute(ex)) * (ey >= 0.0f ? V::splat(1.0f) : V::splat(-1.0f)) : ey;
+    const F length2 = x1 * x1 + y1 * y1 + z * z;  // glm::normalize: v * (1 / sqrt(dot(v, v)))
+    F root{};
+    for (int j = 0; j < N; ++j) root[j] = std::sqrt(length2[j]);
+    const F inverse = 1.0f / root;
+    V::store(nx, x1 * inverse);
+    V::store(ny, y1 * inverse);
+    V::store(nz, z * inverse);
+  }
+
+  FastLinkRows::Row& row_;
+  std::size_t pitch_;
+  std::uint32_t layers_;
+};
+
+// Layer `layer` of N adjacent pixels from column x on.
+template <int N>
+struct Surfels {
+  typename Lanes<N>::F z, gx, gy, n[3];
+  typename Lanes<N>::I comp;
+};
+template <int N>
+TLAB_INLINE Surfels<N> surfelsAt(const RowPlanes& row, std::uint32_t layer, int x) {
+  using V = Lanes<N>;
+  return {V::load(row.plane(kZ, layer) + x),
+          V::load(row.plane(kGx, layer) + x),
+          V::load(row.plane(kGy, layer) + x),
+          {V::load(row.plane(kNx, layer) + x), V::load(row.plane(kNy, layer) + x), V::load(row.plane(kNz, layer) + x)},
+          V::load(row.comps(layer) + x)};
+}
+
+// What ε reads of a fragment: depth, the depth it predicts one pixel on (z + d·∇z), component.
+template <int N>
+struct Predicting {
+  typename Lanes<N>::F z, predicted;
+  typename Lanes<N>::I comp;
+};
+// d = ±x or ±y (connect.comp's dot(vec2(d), ∇z): the zero component adds nothing).
+template <int N>
+TLAB_INLINE Predicting<N> towards(const Surfels<N>& s, int axis, bool negative) {
+  const auto g = axis == 0 ? s.gx : s.gy;
+  return {s.z, negative ? s.z - g : s.z + g, s.comp};
+}
+
+// ε(i, j) with n_i·n_j given (Eqs. 1-3: connect.comp's continuityOfDot); ∞ across components.
+template <int N>
+TLAB_INLINE typename Lanes<N>::F continuity(const Predicting<N>& i, typename Lanes<N>::F jz, typename Lanes<N>::I jComp,
+                                            typename Lanes<N>::F normalDot, const Weights& w) {
+  using V = Lanes<N>;
+  const auto epsZ = V::absolute(i.predicted - jz) / w.r;  // Eq. 1
+  const auto epsN = 1.0f - normalDot;                     // Eq. 2
+  const auto e = w.wz * epsZ + w.wn * epsN;               // Eq. 3
+  return i.comp != jComp ? V::splat(kInfinity) : e;
+}
+
+// connect.comp's beyond: a depth gap past which no fragment matches better than bestEps.
+template <int N>
+TLAB_INLINE typename Lanes<N>::I beyond(typename Lanes<N>::F depthGap, typename Lanes<N>::F bestEps, const Weights& w) {
+  return w.gapScale * depthGap - w.wnSlack > bestEps + Lanes<N>::absolute(bestEps) * 1e-5f;
+}
+
+// connect.comp's fastNeighbor for layer L of N lists towards their adjacent lists: `same` where it
+// answers the same layer of the adjacent list, `unresolved` where it answers UNRESOLVED (else
+// NO_NEIGHBOR). Lanes beyond a list's end hold any values: the masks leave them out, as the
+// shader's conditions do.
+template <int N>
+struct Answer {
+  typename Lanes<N>::I same, unresolved;
+};
+template <int N>
+struct FastQuery {
+  using F = typename Lanes<N>::F;
+  using I = typename Lanes<N>::I;
+  Predicting<N> a, prev, next;  // layer L of the own lists and the layers next to it
+  I n, countB;                  // the own and the adjacent lists' lengths
+  F bz, bPrevZ, bNextZ;
+  I bComp;
+  F maxStep;
+  F dotCur, dotNext, dotPrev;  // n_a·n_b, n_next·n_b, n_prev·n_b
+};
+template <int N>
+TLAB_INLINE Answer<N> fastNeighbor(const FastQuery<N>& q, std::int32_t L, const Weights& w) {
+  using V = Lanes<N>;
+  using I = typename V::I;
+  const auto predicted = q.a.predicted;
+  const auto e = continuity<N>(q.a, q.bz, q.bComp, q.dotCur, w);
+  I unresolved = (L >= q.countB) | ~(e < kInfinity) |
+                 ((L + 1 < q.countB) & ~((q.bNextZ >= predicted) & beyond<N>(q.bNextZ - predicted, e, w)));
+  if (L > 0) unresolved |= ~((q.bPrevZ <= predicted) & beyond<N>(predicted - q.bPrevZ, e, w));
+  // The mutual test over the own list (Alg. 2's second half).
+  const I hasNext = L + 1 < q.n;
+  const I nextFar = ~hasNext | (q.next.z >= q.bz);
+  const I nextVisited = hasNext & ~beyond<N>(nextFar ? q.next.z - q.bz - q.maxStep : q.bz - q.next.z - q.maxStep, e, w);
+  I prevFar = V::all(), prevVisited = I{};
+  if (L > 0) {
+    prevFar = q.prev.z <= q.bz;
+    prevVisited = ~beyond<N>(prevFar ? q.bz - q.prev.z - q.maxStep : q.prev.z - q.bz - q.maxStep, e, w);
+  }
+  const I beaten = (nextVisited & (continuity<N>(q.next, q.bz, q.bComp, q.dotNext, w) < e)) |
+                   (prevVisited & (continuity<N>(q.prev, q.bz, q.bComp, q.dotPrev, w) < e));
+  const I forwardDone = (L + 2 >= q.n) | (nextFar & ~nextVisited);
+  const I backwardDone = L < 2 ? V::all() : prevFar & ~prevVisited;
+  const I hasList = q.countB != 0;  // no list (also beyond the image edge): no neighbour
+  const I done = forwardDone & backwardDone;
+  return {hasList & ~unresolved & ~beaten & done, hasList & (unresolved | (~beaten & ~done))};
+}
+
+template <int N>
+TLAB_INLINE typename Lanes<N>::F dot(const typename Lanes<N>::F a[3], const typename Lanes<N>::F b[3]) {
+  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+
+// Per layer and pair, what phase 1 settles for each lane (bits): 1 A's link kept, 2 A's link
+// UNRESOLVED, 4 B's link kept, 8 B's link UNRESOLVED (else none).
+constexpr std::int32_t kKeepA = 1, kOpenA = 2, kKeepB = 4, kOpenB = 8;
+
+// Settles the pairs of row y (A) with the pixels to their right (same row) and above (row y + 1).
+struct RowPass {
+  const CoveredGrid& grid;
+  const Weights& w;
+  FastLinks& out;
+  FastLinkRows& work;
+  bool& partial;
+
+  template <int N>
+  TLAB_INLINE void run(const RowPlanes& a, const RowPlanes& up, int y) const {
+    for (int x0 = a.first; x0 <= a.last; x0 += N) chunk<N>(a, up, y, x0);
+  }
+
+  template <int N>
+  TLAB_INLINE void chunk(const RowPlanes& a, const RowPlanes& up, int y, int x0) const {
+    using V = Lanes<N>;
+    using F = typename V::F;
+    using I = typename V::I;
+    const I nA = V::load(a.counts() + x0), nB[2] = {V::load(a.counts() + x0 + 1), V::load(up.counts() + x0)};
+    std::int32_t layers = 0;
+    for (int j = 0; j < N; ++j)
+      if (nA[j] > 0) layers = std::max({layers, nA[j], nB[0][j], nB[1][j]});
+    if (layers == 0) return;
+    const I active = nA > 0;
+    const F stepA[2] = {V::load(a.stepX() + x0), V::load(a.stepY() + x0)};
+    const F stepB[2] = {V::load(a.stepX() + x0 + 1), V::load(up.stepY() + x0)};
+    const RowPlanes* rowB[2] = {&a, &up};
+    const int xB[2] = {x0 + 1, x0};
+    if (work.codes.size() < std::size_t(2 * layers * N)) work.codes.resize(std::size_t(2 * layers * N));
+    std::int32_t* codes = work.codes.data();  // [pair][layer][lane]
+    for (int i = 0; i < 2; ++i) {
+      // The normals' products carried to the next layer (connect.comp's aNextDotB, bNextDotA).
+      F aNextDotB{}, bNextDotA{};
+      for (std::int32_t L = 0; L < layers; ++L) {
+        const std::uint32_t l = std::uint32_t(L), prevL = L > 0 ? l - 1 : 0u;
+        const Surfels<N> aCur = surfelsAt<N>(a, l, x0), aNext = surfelsAt<N>(a, l + 1, x0), aPrev = surfelsAt<N>(a, prevL, x0);
+        const Surfels<N> bCur = surfelsAt<N>(*rowB[i], l, xB[i]), bNext = surfelsAt<N>(*rowB[i], l + 1, xB[i]),
+                         bPrev = surfelsAt<N>(*rowB[i], prevL, xB[i]);
+        const F aPrevDotB = bNextDotA, bPrevDotA = aNextDotB;
+        const F curDot = dot<N>(aCur.n, bCur.n);
+        aNextDotB = dot<N>(aNext.n, bCur.n);
+        bNextDotA = dot<N>(bNext.n, aCur.n);
+        const FastQuery<N> forA{towards(aCur, i, false), towards(aPrev, i, false), towards(aNext, i, false), nA, nB[i],
+                                bCur.z, bPrev.z, bNext.z, bCur.comp, stepA[i], curDot, aNextDotB, aPrevDotB};
+        const FastQuery<N> forB{towards(bCur, i, true), towards(bPrev, i, true), towards(bNext, i, true), nB[i], nA,
+                                aCur.z, aPrev.z, aNext.z, aCur.comp, stepB[i], curDot, bNextDotA, bPrevDotA};
+        const Answer<N> fa = fastNeighbor<N>(forA, L, w), fb = fastNeighbor<N>(forB, L, w);
+        const I hasA = (L < nA) & active, hasB = (L < nB[i]) & active;
+        const I aSame = hasA & fa.same, aOpen = hasA & fa.unresolved, bSame = hasB & fb.same, bOpen = hasB & fb.unresolved;
+        // connect.comp's settledLink: a chosen link is kept unless the other end chose nobody.
+        const I keepA = aSame & (bSame | bOpen), keepB = bSame & (aSame | aOpen);
+        V::store(codes + (i * layers + L) * N, (keepA & kKeepA) | (aOpen & kOpenA) | (keepB & kKeepB) | (bOpen & kOpenB));
+      }
+    }
+    for (int j = 0; j < N; ++j)
+      if (nA[j] > 0) settlePixel(x0 + j, y, std::uint32_t(nA[j]), codes + j, layers, N);
+  }
+
+  // One pixel's links from its codes (codes[(i * layers + L) * stride] for pair i and layer L):
+  // as words, or as its pair word and the listed pairs' words (TLAB_LINK_MASKS), with the work
+  // list and `partial` as connect.comp writes them.
+  void settlePixel(int x, int y, std::uint32_t n, const std::int32_t* codes, std::int32_t layers, int stride) const {
+    const glm::ivec2 xy(x, y), kPairDirections[2] = {{1, 0}, {0, 1}};
+    const std::uint32_t pixel = grid.indexAt(xy), head = grid.heads[pixel];
+    bool listed[2] = {false, false};
+    std::uint32_t sameA[2] = {0, 0}, sameB[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+      const glm::ivec2 q = xy + kPairDirections[i];
+      const std::uint32_t countB = grid.countAt(q), headB = countB > 0 ? grid.heads[grid.indexAt(q)] : 0u;
+      const std::uint32_t pairLayers = std::max(n, countB);
+      for (std::uint32_t l = 0; l < pairLayers; ++l) listed[i] = listed[i] || (codes[(i * layers + l) * stride] & (kOpenA | kOpenB)) != 0;
+      if (out.pairs) {
+        for (std::uint32_t l = 0; l < pairLayers; ++l) {
+          const std::int32_t c = codes[(i * layers + l) * stride];
+          sameA[i] |= std::uint32_t(c & kKeepA) << l;
+          sameB[i] |= std::uint32_t((c & kKeepB) >> 2) << l;
+        }
+        if (!listed[i]) continue;  // a listed pair's links are words for phase 3, both ways
+        for (std::uint32_t l = 0; l < pairLayers; ++l) {
+          if (l < n) out.links[head + l][2 * i + 1] = (sameA[i] >> l) & 1u ? headB + l : kUnresolved;
+          if (l < countB) out.links[headB + l][2 * i] = (sameB[i] >> l) & 1u ? head + l : kUnresolved;
+        }
+        continue;
+      }
+      for (std::uint32_t l = 0; l < pairLayers; ++l) {
+        const std::int32_t c = codes[(i * layers + l) * stride];
+        if (l < n) out.links[head + l][2 * i + 1] = c & kKeepA ? headB + l : c & kOpenA ? kUnresolved : kNone;
+        if (l < countB) out.links[headB + l][2 * i] = c & kKeepB ? head + l : c & kOpenB ? kUnresolved : kNone;
+      }
+    }
+    if (out.pairs) {
+      // Whether the pixel and its pairs link the same layer all round (connect.comp's `partial`).
+      bool whole = !listed[0] && !listed[1];
+      for (int i = 0; i < 2; ++i) {
+        const glm::ivec2 q = xy + kPairDirections[i];
+        const std::uint32_t all = n >= 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
+        whole = whole && (!grid.inside(q) || (grid.countAt(q) == n && sameA[i] == all));
+        whole = whole && (!grid.inside(xy - kPairDirections[i]) || grid.countAt(xy - kPairDirections[i]) > 0u);
+      }
+      out.pairs[pixel] = glm::uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
+      if (!whole) partial = true;
+    } else {
+      // No pair writes these beyond the left and bottom edges, nor where the pixel there is empty.
+      const bool leftEmpty = grid.countAt(xy - glm::ivec2(1, 0)) == 0, belowEmpty = grid.countAt(xy - glm::ivec2(0, 1)) == 0;
+      for (std::uint32_t l = 0; l < n && (leftEmpty || belowEmpty); ++l) {
+        if (leftEmpty) out.links[head + l][0] = kNone;
+        if (belowEmpty) out.links[head + l][2] = kNone;
+      }
+    }
+    for (int i = 0; i < 2; ++i)
+      if (listed[i]) work.listed.push_back(2 * pixel + std::uint32_t(i));
+  }
+};
+
+// Rows [from, to) of the grid, N lanes at a time; returns `partial` for them.
+template <int N>
+TLAB_INLINE bool settleRows(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w, FastLinks& out,
+                            FastLinkRows& work, std::size_t pitch, std::uint32_t layers, std::size_t from, std::size_t to) {
+  bool partial = false;
+  RowPlanes rows[2] = {RowPlanes(work.rows[0], pitch, layers), RowPlanes(work.rows[1], pitch, layers)};
+  int current = 0;
+  rows[current].load<N>(grid, surfels, int(from));
+  const RowPass pass{grid, w, out, work, partial};
+  for (std::size_t y = from; y < to; ++y) {
+    const int next = 1 - current;
+    rows[next].load<N>(grid, surfels, int(y) + 1);
+    pass.run<N>(rows[current], rows[next], int(y));
+    current = next;
+  }
+  return partial;
+}
+
+#if defined(__x86_64__) && defined(__GNUC__)
+[[gnu::target("avx2")]] bool settleRowsAvx2(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w,
+                                            FastLinks& out, FastLinkRows& work, std::size_t pitch, std::uint32_t layers,
+                                            std::size_t from, std::size_t to) {
+  return settleRows<8>(grid, surfels, w, out, work, pitch, layers, from, to);
+}
+bool hasAvx2() { return __builtin_cpu_supports("avx2"); }
+#else
+bool settleRowsAvx2(const CoveredGrid&, const SortedSurfels&, const Weights&, FastLinks&, FastLinkRows&, std::size_t,
+                    std::uint32_t, std::size_t, std::size_t) {
+  return false;
+}
+bool hasAvx2() { return false; }
+#endif
+
+bool settleRowsSse(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w, FastLinks& out,
+                   FastLinkRows& work, std::size_t pitch, std::uint32_t layers, std::size_t from, std::size_t to) {
+  return settleRows<4>(grid, surfels, w, out, work, pitch, layers, from, to);
+}
+
+}  // namespace
+
+void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels, const ContinuityWeights& weights,
+                           FastLinks& out, std::vector<FastLinkRows>& work, unsigned threads, FastLinkLanes lanes) {
+  out.listed.clear();
+  out.partial = false;
+  if (grid.width <= 0 || grid.height <= 0) return;
+  std::uint32_t longest = 0;
+  for (std::size_t p = 0, pixels = std::size_t(grid.width) * grid.height; p < pixels; ++p) longest = std::max(longest, grid.counts[p]);
+  if (longest == 0) return;
+  const Weights w{weights.objectRadius, weights.wz, weights.gapScale, weights.wn, weights.wn * kEpsNSlack};
+  // Columns up to the last pixel's right neighbour's and a chunk's lanes beyond; planes up to L + 1.
+  const std::size_t pitch = std::size_t(grid.width) + 2 * kMaxLanes;
+  const std::uint32_t layers = longest + 1;
+  const std::size_t shares = std::clamp<std::size_t>(threads, 1, std::size_t(grid.height));
+  if (work.size() < shares) work.resize(shares);
+  const auto settle = lanes == FastLinkLanes::Widest && hasAvx2() ? settleRowsAvx2 : settleRowsSse;
+  std::vector<char> partial(shares, 0);
+  core::forEachShare(std::size_t(grid.height), shares, [&](std::size_t from, std::size_t to, std::size_t share) {
+    work[share].listed.clear();
+    partial[share] = settle(grid, surfels, w, out, work[share], pitch, layers, from, to);
+  });
+  for (std::size_t s = 0; s < shares; ++s) {
+    out.listed.insert(out.listed.end(), work[s].listed.begin(), work[s].listed.end());
+    out.partial = out.partial || partial[s] != 0;
+  }
+}
+
+}  // namespace tlab::render
