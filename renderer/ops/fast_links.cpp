@@ -83,26 +83,33 @@ class RowPlanes {
     last = -1;
     if (y >= grid.height) return;
     std::uint32_t longest = 0;
-    const std::size_t planeCells = std::size_t(layers_) * pitch_;
-    float* planes = row_.planes.data();
+    // Locals: the stores below (int32 among them) would otherwise make the compiler reload these.
+    const std::size_t planeCells = std::size_t(layers_) * pitch_, pitch = pitch_, stride = s.stride;
+    const std::uint32_t gradient = s.gradientOffset, normal = s.normalOffset, ids = s.idsOffset;
+    const bool hasIds = s.hasIds;
+    const std::uint32_t *counts = grid.counts + std::size_t(y) * grid.width, *heads = grid.heads + std::size_t(y) * grid.width;
+    const glm::vec2* steps = s.steps + std::size_t(y) * grid.width;
+    const std::uint32_t* words = s.words;
+    float *z = row_.planes.data() + kZ * planeCells, *gx = z + (kGx - kZ) * planeCells, *gy = z + (kGy - kZ) * planeCells,
+          *nx = z + (kNx - kZ) * planeCells;
+    std::int32_t *rowCounts = row_.counts.data(), *comps = row_.comps.data();
+    float *stepX = row_.stepX.data(), *stepY = row_.stepY.data();
     for (int x = 0; x < grid.width; ++x) {
-      const std::size_t pixel = std::size_t(y) * grid.width + x;
-      const std::uint32_t n = grid.counts[pixel];
-      row_.counts[x] = std::int32_t(n);
+      const std::uint32_t n = counts[x];
+      rowCounts[x] = std::int32_t(n);
       if (n == 0) continue;
       first = std::min(first, x);
       last = x;
       longest = std::max(longest, n);
-      row_.stepX[x] = s.steps[pixel].x;
-      row_.stepY[x] = s.steps[pixel].y;
-      const std::uint32_t* record = s.words + std::size_t(grid.heads[pixel]) * s.stride;
-      for (std::uint32_t layer = 0; layer < n; ++layer, record += s.stride) {
-        const std::size_t at = std::size_t(layer) * pitch_ + x;
-        planes[kZ * planeCells + at] = std::bit_cast<float>(record[0]);
-        planes[kGx * planeCells + at] = std::bit_cast<float>(record[s.gradientOffset]);
-        planes[kGy * planeCells + at] = std::bit_cast<float>(record[s.gradientOffset + 1]);
-        planes[kNx * planeCells + at] = std::bit_cast<float>(record[s.normalOffset]);  // the word, decoded below
-        row_.comps[at] = s.hasIds ? std::int32_t((record[s.idsOffset] >> 16) & 0x7FFFu) : 0;
+      stepX[x] = steps[x].x;
+      stepY[x] = steps[x].y;
+      const std::uint32_t* record = words + std::size_t(heads[x]) * stride;
+      for (std::size_t at = std::size_t(x), end = at + n * pitch; at < end; at += pitch, record += stride) {
+        z[at] = std::bit_cast<float>(record[0]);
+        gx[at] = std::bit_cast<float>(record[gradient]);
+        gy[at] = std::bit_cast<float>(record[gradient + 1]);
+        nx[at] = std::bit_cast<float>(record[normal]);  // the word, decoded below
+        comps[at] = hasIds ? std::int32_t((record[ids] >> 16) & 0x7FFFu) : 0;
       }
     }
     for (std::uint32_t layer = 0; layer < longest; ++layer)
