@@ -3,15 +3,16 @@
 // on the CPU (issue #29): for each pair of adjacent pixels, the fast path of Alg. 2 (Carnecky
 // Sec. 4.4) over both lists — ε of Eqs. 1-3 in the shader's single-precision operations and
 // order, with no fused multiply-add, as llvmpipe computes them — and the same words: each
-// fragment's link words (or, for lists of at most 32 layers, the pair bits), the pairs left to
-// the full search (phase 3) and the `partial` word. The listed pairs come in pixel order, where the
-// shader's atomics list them in any order (phase 3 treats each on its own).
+// fragment's link words (or, where the pass keeps them so, the pair bits: lists of at most 32
+// layers), the pairs left to the full search (phase 3) and the `partial` word. The listed pairs
+// come in pixel order, where the shader's atomics list them in any order (phase 3 treats each on
+// its own).
 //
 // Row by row, as lanes: each row's surfels are decoded once into layer planes (plane L holds
-// layer L of every pixel of the row), and four adjacent pixels are settled at once, their pairs
-// to the right read from the same planes one pixel on and those above from the next row's. The
-// planes are kept across frames (FastLinkRows), as the GL buffers are. No GL here: the connect
-// pass hands in its mapped buffers (ops/connect_pass.cpp).
+// layer L of every pixel of the row), and 8 adjacent pixels (4 without AVX2) are settled at once,
+// their pairs to the right read from the same planes one pixel on and those above from the next
+// row's. The planes are kept across frames (FastLinkRows), as the GL buffers are. No GL here: the
+// connect pass hands in its mapped buffers (ops/connect_pass.cpp).
 #include <cstddef>
 #include <cstdint>
 #include <vector>
