@@ -385,25 +385,25 @@ TLAB_INLINE bool settleRows(const CoveredGrid& grid, const SortedSurfels& surfel
   return partial;
 }
 
+bool settleRowsSse(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w, FastLinks& out,
+                   FastLinkRows& work, std::size_t pitch, std::uint32_t layers, std::size_t from, std::size_t to) {
+  return settleRows<4>(grid, surfels, w, out, work, pitch, layers, from, to);
+}
+
+using SettleRows = bool (*)(const CoveredGrid&, const SortedSurfels&, const Weights&, FastLinks&, FastLinkRows&, std::size_t,
+                            std::uint32_t, std::size_t, std::size_t);
+
 #if defined(__x86_64__) && defined(__GNUC__)
 [[gnu::target("avx2")]] bool settleRowsAvx2(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w,
                                             FastLinks& out, FastLinkRows& work, std::size_t pitch, std::uint32_t layers,
                                             std::size_t from, std::size_t to) {
   return settleRows<8>(grid, surfels, w, out, work, pitch, layers, from, to);
 }
-bool hasAvx2() { return __builtin_cpu_supports("avx2"); }
+// The widest lanes the CPU runs: 8 with AVX2, else 4.
+SettleRows widest() { return __builtin_cpu_supports("avx2") ? settleRowsAvx2 : settleRowsSse; }
 #else
-bool settleRowsAvx2(const CoveredGrid&, const SortedSurfels&, const Weights&, FastLinks&, FastLinkRows&, std::size_t,
-                    std::uint32_t, std::size_t, std::size_t) {
-  return false;
-}
-bool hasAvx2() { return false; }
+SettleRows widest() { return settleRowsSse; }
 #endif
-
-bool settleRowsSse(const CoveredGrid& grid, const SortedSurfels& surfels, const Weights& w, FastLinks& out,
-                   FastLinkRows& work, std::size_t pitch, std::uint32_t layers, std::size_t from, std::size_t to) {
-  return settleRows<4>(grid, surfels, w, out, work, pitch, layers, from, to);
-}
 
 }  // namespace
 
@@ -421,7 +421,7 @@ void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels
   const std::uint32_t layers = longest + 1;
   const std::size_t shares = std::clamp<std::size_t>(threads, 1, std::size_t(grid.height));
   if (work.size() < shares) work.resize(shares);
-  const auto settle = lanes == FastLinkLanes::Widest && hasAvx2() ? settleRowsAvx2 : settleRowsSse;
+  const SettleRows settle = lanes == FastLinkLanes::Widest ? widest() : settleRowsSse;
   std::vector<char> partial(shares, 0);
   core::forEachShare(std::size_t(grid.height), shares, [&](std::size_t from, std::size_t to, std::size_t share) {
     work[share].listed.clear();

@@ -420,24 +420,26 @@ TEST(NeighborLinks, PhaseTwoIsLeftOutWhereEveryFragmentIsLinkedAllRound) {
   EXPECT_EQ(renderer.render(r).pixels, smart.pixels);
 }
 
+// A scene at a size with a neighbour search: the host passes' tests run each both ways.
+struct HostCase {
+  Scene scene;
+  int w, h;
+  NeighborSearch search;
+};
+
 // Phase 2 as host code (ops/boundary_conditions.hpp: the default where the GL runs on the CPU) and
 // as the shader (TLAB_HOST_PASSES=off) leave the same links, flags and fields, and list the same
 // seeds (in any order, as the shader's atomics do): links kept as words and as pair bits (lists of
 // 9 to 16, and pairs the fast path could not settle), the seeds listed (Eq. 9) or stored as β and
 // γ values (Eq. 8 spreading), and a stack linked all round (phase 2 run for every field's reader).
 TEST(NeighborLinks, PhaseTwoAsHostCodeLeavesTheShadersFields) {
-  struct Case {
-    Scene scene;
-    int w, h;
-    NeighborSearch search;
-  };
-  const std::vector<Case> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
-                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::Bounded},
-                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
-                                   {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
-                                   {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
-                                   {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
-                                   {loadScene("builtin:torus"), 40, 30, NeighborSearch::AllPairs}};
+  const std::vector<HostCase> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
+                                       {loadScene("builtin:torus"), 63, 47, NeighborSearch::Bounded},
+                                       {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
+                                       {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
+                                       {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
+                                       {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
+                                       {loadScene("builtin:torus"), 40, 30, NeighborSearch::AllPairs}};
   int withSeeds = 0, withBits = 0;
   for (const auto& c : cases) {
     for (const char* spread : {"max", "diffusion"}) {
@@ -480,19 +482,14 @@ TEST(NeighborLinks, PhaseTwoAsHostCodeLeavesTheShadersFields) {
 // 32, the words past them), several components, pairs the fast path cannot settle, and a larger
 // torus for more pairs near a tie.
 TEST(NeighborLinks, PhaseOneAsHostCodeWritesTheShadersWords) {
-  struct Case {
-    Scene scene;
-    int w, h;
-    NeighborSearch search;
-  };
-  const std::vector<Case> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
-                                   {occluderScene(), 48, 40, NeighborSearch::Bounded},
-                                   {loadScene("builtin:torus"), 200, 150, NeighborSearch::Bounded},
-                                   {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
-                                   {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
-                                   {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
-                                   {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
-                                   {loadScene("builtin:quad-stack?n=40"), 17, 13, NeighborSearch::Bounded}};
+  const std::vector<HostCase> cases = {{backHalfScene(), 40, 31, NeighborSearch::Bounded},
+                                       {occluderScene(), 48, 40, NeighborSearch::Bounded},
+                                       {loadScene("builtin:torus"), 200, 150, NeighborSearch::Bounded},
+                                       {loadScene("builtin:torus"), 63, 47, NeighborSearch::BoundedBits},
+                                       {loadScene("builtin:nested-spheres?n=6"), 45, 37, NeighborSearch::Bounded},
+                                       {loadScene("builtin:open-cylinders"), 48, 40, NeighborSearch::BoundedWords},
+                                       {loadScene("builtin:quad-stack?n=16"), 24, 20, NeighborSearch::Bounded},
+                                       {loadScene("builtin:quad-stack?n=40"), 17, 13, NeighborSearch::Bounded}};
   std::size_t listedPairs = 0, withBits = 0, partial = 0;
   for (const auto& c : cases) {
     SCOPED_TRACE(c.scene.name + " " + std::to_string(c.w) + " " + std::to_string(int(c.search)));
