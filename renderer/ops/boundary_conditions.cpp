@@ -41,12 +41,10 @@ glm::uvec4 linksFromBits(const PairsAround& p, glm::uvec4 words, std::uint32_t l
   return link;
 }
 
-// One share's seeds, listed in pixel and layer order.
-struct Seeds {
-  std::vector<std::uint32_t> beta, gamma;
-};
+}  // namespace
 
-void setPixel(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy, Seeds& seeds) {
+void setPixelBoundaryConditions(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
+                                SeedLists& seeds) {
   const std::uint32_t n = g.counts[pixel], head = g.heads[pixel];
   glm::uvec4 qHead(0u);  // heads of the adjacent lists, to turn a link into a layer
   std::uint32_t outside = 0;  // adjacent pixels beyond the image edge
@@ -83,16 +81,42 @@ void setPixel(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t
   }
 }
 
-}  // namespace
+void setSameLayerBoundaryConditions(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
+                                    SeedLists& seeds) {
+  const std::uint32_t n = g.counts[pixel], head = g.heads[pixel];
+  const std::uint32_t outside = std::uint32_t(xy.x == 0) + std::uint32_t(xy.x == g.width - 1) + std::uint32_t(xy.y == 0) +
+                                std::uint32_t(xy.y == g.height - 1);
+  PairsAround around;
+  glm::uvec4 qHead(0u);
+  if (out.pairs) {
+    around = pairsAround(g, out.pairs, pixel, xy);
+    for (int k = 0; k < 4; ++k) {
+      const glm::ivec2 q = xy + kDirections[std::size_t(k)];
+      if (g.inside(q)) qHead[k] = g.heads[g.indexAt(q)];
+    }
+  }
+  for (std::uint32_t f = head; f < head + n; ++f) {
+    glm::uvec4 link = out.links[f];
+    if (out.pairs) out.links[f] = link = linksFromBits(around, link, f - head, qHead);
+    const std::uint32_t found = std::uint32_t(link.x != kNoNeighbor) + std::uint32_t(link.y != kNoNeighbor) +
+                                std::uint32_t(link.z != kNoNeighbor) + std::uint32_t(link.w != kNoNeighbor);
+    // Sec. 5.3 with no silhouette: β's boundary where a link is missing (not at the image edge).
+    const bool boundary = found + outside < 4u;
+    if (out.beta) out.beta[f] = boundary ? 1.0f : 0.0f;
+    if (out.gamma) out.gamma[f] = 0.0f;
+    if (out.betaSeeds && boundary) seeds.beta.push_back(f);
+    out.flags[f] = boundary ? kFreeAlpha | kFreeGamma : kFreeAlpha | kFreeBeta | kFreeGamma;
+  }
+}
 
 void setBoundaryConditionsOnHost(const CoveredGrid& grid, const BoundaryConditions& out, unsigned threads) {
   constexpr std::size_t kPixelsPerShareMin = 16384;
   const std::size_t n = grid.coveredCount, shares = core::sharesFor(n, kPixelsPerShareMin, threads);
-  std::vector<Seeds> seeds(shares);
+  std::vector<SeedLists> seeds(shares);
   forEachCoveredPixel(grid, shares, [&](std::uint32_t pixel, glm::ivec2 xy, std::size_t share) {
-    setPixel(grid, out, pixel, xy, seeds[share]);
+    setPixelBoundaryConditions(grid, out, pixel, xy, seeds[share]);
   });
-  for (const Seeds& s : seeds) {  // the shares in pixel order
+  for (const SeedLists& s : seeds) {  // the shares in pixel order
     if (out.betaSeeds) out.betaSeeds->insert(out.betaSeeds->end(), s.beta.begin(), s.beta.end());
     if (out.gammaSeeds) out.gammaSeeds->insert(out.gammaSeeds->end(), s.gamma.begin(), s.gamma.end());
   }

@@ -31,6 +31,24 @@ struct BoundaryConditions {
   std::vector<std::uint32_t>* gammaSeeds = nullptr;
 };
 
+// Seeds listed by one thread, in pixel and layer order.
+struct SeedLists {
+  std::vector<std::uint32_t> beta, gamma;
+};
+
+// One covered pixel's fragments (pixel = its index, xy its place): as setBoundaryConditionsOnHost
+// sets each, its seeds appended to `seeds` (where `out` lists them) rather than to out's lists.
+// Its links must be final (phase 3 done with every pair it belongs to): connect phase 1 as host
+// code calls it for the pixels none of whose pairs was listed (ops/fast_links.hpp).
+void setPixelBoundaryConditions(const CoveredGrid& grid, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
+                                SeedLists& seeds);
+
+// setPixelBoundaryConditions for a pixel each of whose links joins the same layer of the adjacent
+// list or nothing (none of its pairs listed: the fast path settled them): there no fragment is
+// beside or under a silhouette, so γ is 0 and β 1 only where a link is missing.
+void setSameLayerBoundaryConditions(const CoveredGrid& grid, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
+                                    SeedLists& seeds);
+
 // Every covered pixel's fragments, the pixels shared out among up to `threads` threads (fewer where
 // there are few pixels); the seeds are listed in pixel and layer order however many there are.
 void setBoundaryConditionsOnHost(const CoveredGrid& grid, const BoundaryConditions& out, unsigned threads = 1);

@@ -29,45 +29,86 @@ void writeSeeds(gpu::ShaderCache& shaders, TransparencyFields& fields, Field fie
   TransparencyFields::dispatchOnList(program, seeds);
 }
 
-// Phase 2 (ops/connect.comp) as host code over the mapped buffers (ops/boundary_conditions.hpp):
-// the flags, β and γ in their output copies (where not listed) or the seed lists, and the links
-// from their pair bits (where phase 1 kept them so).
-void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks, bool listSeeds) {
-  const std::size_t pixels = buffer.pixels(), n = fields.fragments();
-  constexpr Field kSeeded[2] = {Field::Beta, Field::Gamma};
-  // Per seeded field: its seeds as a list (Eq. 9's spreading), or its values in its output copy.
-  bool listed[2], valued[2];
-  for (int i = 0; i < 2; ++i) {
-    listed[i] = listSeeds && fields.has(kSeeded[i]);
-    valued[i] = !listSeeds && fields.has(kSeeded[i]);
+constexpr Field kSeeded[2] = {Field::Beta, Field::Gamma};
+
+// What phase 2 (ops/connect.comp) writes, as host code: per seeded field, its seeds as a list
+// (Eq. 9's spreading), or its values in its output copy; the flags, and the links from their pair
+// bits (where phase 1 kept them so).
+struct Phase2Outputs {
+  bool listed[2] = {false, false}, valued[2] = {false, false};
+  Phase2Outputs(const TransparencyFields& fields, bool listSeeds) {
+    for (int i = 0; i < 2; ++i) {
+      listed[i] = listSeeds && fields.has(kSeeded[i]);
+      valued[i] = !listSeeds && fields.has(kSeeded[i]);
+    }
   }
+  // The buffers mapped (links and pair words readable: phase 2 reads them), and the conditions
+  // over them appending seeds to `seeds`.
+  struct Mapped {
+    Mapped(const Phase2Outputs& outputs, const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks)
+        : links(fields.links(), fields.fragments() * sizeof(glm::uvec4), 0, true), flags(fields.flags(), fields.fragments() * 4) {
+      if (linkMasks) pairs.emplace(fields.connectPairs(buffer.pixels()), buffer.pixels() * sizeof(glm::uvec4), 0, true);
+      for (int i = 0; i < 2; ++i)
+        if (outputs.valued[i]) values[i].emplace(fields.output(kSeeded[i]), fields.fragments() * 4);
+    }
+    gpu::MappedWrite links, flags;
+    std::optional<gpu::MappedWrite> pairs, values[2];
+    BoundaryConditions conditions(std::vector<std::uint32_t> (&seeds)[2], const bool (&listed)[2]) const {
+      return {links.as<glm::uvec4>(),
+              pairs ? pairs->as<glm::uvec4>() : nullptr,
+              flags.as<std::uint32_t>(),
+              values[0] ? values[0]->as<float>() : nullptr,
+              values[1] ? values[1]->as<float>() : nullptr,
+              listed[0] ? &seeds[0] : nullptr,
+              listed[1] ? &seeds[1] : nullptr};
+    }
+  };
+};
+
+// Phase 1 as host code with phase 2 folded in leaves phase 2 the pixels it deferred, and its seeds.
+struct FoldedPhase2 {
+  std::vector<std::uint32_t> deferred;
+  std::vector<std::uint32_t> seeds[2];  // β's, γ's (pixel and layer order)
+};
+
+// Phase 2 (ops/connect.comp) as host code over the mapped buffers (ops/boundary_conditions.hpp):
+// over every covered pixel, or where phase 1 folded it in (`folded`), over the pixels it deferred,
+// their seeds merged with the folded ones (both in pixel and layer order: ascending).
+void setBoundaryConditions(const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks, bool listSeeds,
+                           FoldedPhase2* folded) {
+  const std::size_t pixels = buffer.pixels();
+  const Phase2Outputs outputs(fields, listSeeds);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);  // phases 1 and 3's words, for the host
   std::vector<std::uint32_t> seeds[2];  // β's, γ's
-  {
-    const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
-        covered(buffer.coveredPixelBuffer(), std::size_t(buffer.coveredPixelCount()) * 4);
-    std::optional<gpu::MappedRead> pairs;
-    if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
-    const gpu::MappedWrite links(fields.links(), n * sizeof(glm::uvec4), 0, true), flags(fields.flags(), n * 4);
-    std::optional<gpu::MappedWrite> values[2];
-    for (int i = 0; i < 2; ++i)
-      if (valued[i]) values[i].emplace(fields.output(kSeeded[i]), n * 4);
-    const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(),
-                           covered.as<std::uint32_t>(), buffer.coveredPixelCount()};
-    setBoundaryConditionsOnHost(grid, {links.as<glm::uvec4>(), pairs ? pairs->as<glm::uvec4>() : nullptr, flags.as<std::uint32_t>(),
-                                       values[0] ? values[0]->as<float>() : nullptr, values[1] ? values[1]->as<float>() : nullptr,
-                                       listed[0] ? &seeds[0] : nullptr, listed[1] ? &seeds[1] : nullptr},
-                                std::thread::hardware_concurrency());
+  if (!folded || !folded->deferred.empty()) {
+    const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4);
+    std::optional<gpu::MappedRead> covered;
+    if (!folded) covered.emplace(buffer.coveredPixelBuffer(), std::size_t(buffer.coveredPixelCount()) * 4);
+    const Phase2Outputs::Mapped mapped(outputs, buffer, fields, linkMasks);
+    const CoveredGrid grid{buffer.width(),
+                           buffer.height(),
+                           counts.as<std::uint32_t>(),
+                           heads.as<std::uint32_t>(),
+                           folded ? folded->deferred.data() : covered->as<std::uint32_t>(),
+                           folded ? folded->deferred.size() : std::size_t(buffer.coveredPixelCount())};
+    setBoundaryConditionsOnHost(grid, mapped.conditions(seeds, outputs.listed), std::thread::hardware_concurrency());
   }
-  for (int i = 0; i < 2; ++i)
-    if (listed[i]) TransparencyFields::writeList(fields.frontier(kSeeded[i]), seeds[i]);
+  for (int i = 0; i < 2; ++i) {
+    if (!outputs.listed[i]) continue;
+    if (folded) {
+      std::vector<std::uint32_t> all(seeds[i].size() + folded->seeds[i].size());
+      std::merge(seeds[i].begin(), seeds[i].end(), folded->seeds[i].begin(), folded->seeds[i].end(), all.begin());
+      seeds[i] = std::move(all);
+    }
+    TransparencyFields::writeList(fields.frontier(kSeeded[i]), seeds[i]);
+  }
 }
 
 // Phase 1 (ops/connect.comp) as host code over the mapped buffers (ops/fast_links.hpp): the links
 // the fast path settles (as words, or as pair bits where `linkMasks`), and the work buffer's count,
 // `partial` word and listed pairs for phase 3. Returns the header (count, partial).
 std::array<std::uint32_t, 2> settleFastLinks(const FragmentBuffer& buffer, const SmartSettings& settings, float objectRadius,
-                                             TransparencyFields& fields, bool linkMasks) {
+                                             TransparencyFields& fields, bool linkMasks, bool listSeeds, FoldedPhase2* fold) {
   const std::size_t pixels = buffer.pixels(), n = buffer.fragmentCount();
   if (n == 0) return {0, 0};  // (the work buffer's header is cleared)
   const FragmentLayout& layout = buffer.layout();
@@ -76,19 +117,27 @@ std::array<std::uint32_t, 2> settleFastLinks(const FragmentBuffer& buffer, const
   {
     const gpu::MappedRead counts(buffer.pixelCountBuffer(), pixels * 4), heads(buffer.pixelHeadBuffer(), pixels * 4),
         records(buffer.sortedRecordBuffer(), n * layout.stride * 4), steps(*buffer.listSteps(), pixels * sizeof(glm::vec2));
-    const gpu::MappedWrite links(fields.links(), n * sizeof(glm::uvec4));
-    std::optional<gpu::MappedWrite> pairs;
-    if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
+    const Phase2Outputs outputs(fields, listSeeds);
+    std::optional<gpu::MappedWrite> links, pairs;
+    std::optional<Phase2Outputs::Mapped> mapped;  // phase 2's buffers, where it is folded in
+    if (fold) {
+      mapped.emplace(outputs, buffer, fields, linkMasks);
+      out.conditions = mapped->conditions(fold->seeds, outputs.listed);
+    } else {
+      links.emplace(fields.links(), n * sizeof(glm::uvec4));
+      if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
+    }
     const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), nullptr, 0};
     const bool ids = layout.properties.has(FragmentProperty::Ids);
     const SortedSurfels surfels{records.as<std::uint32_t>(), layout.stride, layout.depthGradientOffset, layout.normalOffset,
                                 ids, layout.idsOffset, steps.as<glm::vec2>()};
     // The shader's uniforms, computed as connectFragments sets them.
     const ContinuityWeights weights{objectRadius, float(settings.wz), float(settings.wz / objectRadius), float(settings.wn)};
-    out.links = links.as<glm::uvec4>();
-    out.pairs = pairs ? pairs->as<glm::uvec4>() : nullptr;
+    out.links = fold ? mapped->links.as<glm::uvec4>() : links->as<glm::uvec4>();
+    out.pairs = fold ? (mapped->pairs ? mapped->pairs->as<glm::uvec4>() : nullptr) : pairs ? pairs->as<glm::uvec4>() : nullptr;
     settleFastLinksOnHost(grid, surfels, weights, out, fields.fastLinkRows(), std::thread::hardware_concurrency());
   }
+  if (fold) fold->deferred = std::move(out.deferred);
   const std::array<std::uint32_t, 2> header{std::uint32_t(out.listed.size()), out.partial ? 1u : 0u};
   const gpu::MappedWrite work(fields.connectWork(pixels), (2 + out.listed.size()) * 4);
   std::copy(header.begin(), header.end(), work.as<std::uint32_t>());
@@ -224,9 +273,17 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
   // The listed pairs, and whether some fragment lacks a same-layer link: from phase 1 as host code
   // where the host passes run (gpu::hostPassesWanted), else from the shader's work buffer.
   std::array<std::uint32_t, 2> header{0, 0};
+  // Phase 2 as host code where the host passes run (gpu::hostPassesWanted), unless Eq. 5's α
+  // varies (left to the shader's pow, whose last bit the host's need not match); folded into phase
+  // 1 where that is host code too, for the pixels whose pairs it settles (FastLinks::conditions),
+  // unless the links are pair bits (where a stack linked all round leaves phase 2 out, below).
+  const bool hostPhase2 = gpu::hostPassesWanted() && !settings.adaptiveAlpha;
+  std::optional<FoldedPhase2> folded;
   if (bounded && gpu::hostPassesWanted()) {
-    timePart(timer, "connect phase 1 on the host",
-             [&] { header = settleFastLinks(buffer, settings, objectRadius, fields, linkMasks); });
+    if (hostPhase2 && !linkMasks) folded.emplace();
+    timePart(timer, "connect phase 1 on the host", [&] {
+      header = settleFastLinks(buffer, settings, objectRadius, fields, linkMasks, listSeeds, folded ? &*folded : nullptr);
+    });
   } else {
     run("1");
     fields.readSmall(work, header.data(), sizeof header);
@@ -244,10 +301,9 @@ std::size_t connectFragments(const FragmentBuffer& buffer, gpu::ShaderCache& sha
     fields.setLinksStored(false);
   } else {
     if (listed > 0) run("3", listed);
-    // Phase 2 as host code where the host passes run (gpu::hostPassesWanted), unless Eq. 5's α
-    // varies (left to the shader's pow, whose last bit the host's need not match).
-    if (gpu::hostPassesWanted() && !settings.adaptiveAlpha)
-      timePart(timer, "connect phase 2 on the host", [&] { setBoundaryConditions(buffer, fields, linkMasks, listSeeds); });
+    if (hostPhase2)
+      timePart(timer, "connect phase 2 on the host",
+               [&] { setBoundaryConditions(buffer, fields, linkMasks, listSeeds, folded ? &*folded : nullptr); });
     else
       run("2");
     // Phase 2 wrote each field's output copy, where it stored one (see ops/connect.comp): make

@@ -1,6 +1,7 @@
 #include "renderer/ops/fast_links.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -9,8 +10,8 @@
 #include "core/parallel_shares.hpp"
 
 // 32-byte vectors are passed only between functions inlined into one another (always_inline),
-// all of them compiled for AVX2 where they are (see settleRows): no ABI crosses here.
-#pragma GCC diagnostic ignored "-Wpsabi"
+// all of them compiled for AVX2 where they are (see settleRows): no ABI crosses here (the
+// build gives this file -Wno-psabi).
 
 namespace tlab::render {
 
@@ -64,6 +65,7 @@ class RowPlanes {
     if (row.planes.size() < kPlanes * cells) row.planes.resize(kPlanes * cells, 0.0f);
     if (row.comps.size() < cells) row.comps.resize(cells, 0);
     row.counts.resize(paddedWidth);
+    row.heads.resize(paddedWidth);
     row.stepX.resize(paddedWidth);
     row.stepY.resize(paddedWidth);
   }
@@ -71,6 +73,7 @@ class RowPlanes {
   float* plane(Plane p, std::uint32_t layer) { return row_.planes.data() + (std::size_t(p) * layers_ + layer) * pitch_; }
   const std::int32_t* comps(std::uint32_t layer) const { return row_.comps.data() + std::size_t(layer) * pitch_; }
   const std::int32_t* counts() const { return row_.counts.data(); }
+  const std::int32_t* heads() const { return row_.heads.data(); }
   const float* stepX() const { return row_.stepX.data(); }
   const float* stepY() const { return row_.stepY.data(); }
   int first = 0, last = -1;  // the row's covered columns
@@ -92,7 +95,7 @@ class RowPlanes {
     const std::uint32_t* words = s.words;
     float *z = row_.planes.data() + kZ * planeCells, *gx = z + (kGx - kZ) * planeCells, *gy = z + (kGy - kZ) * planeCells,
           *nx = z + (kNx - kZ) * planeCells;
-    std::int32_t *rowCounts = row_.counts.data(), *comps = row_.comps.data();
+    std::int32_t *rowCounts = row_.counts.data(), *rowHeads = row_.heads.data(), *comps = row_.comps.data();
     float *stepX = row_.stepX.data(), *stepY = row_.stepY.data();
     for (int x = 0; x < grid.width; ++x) {
       const std::uint32_t n = counts[x];
@@ -101,6 +104,7 @@ class RowPlanes {
       first = std::min(first, x);
       last = x;
       longest = std::max(longest, n);
+      rowHeads[x] = std::int32_t(heads[x]);
       stepX[x] = steps[x].x;
       stepY[x] = steps[x].y;
       const std::uint32_t* record = words + std::size_t(heads[x]) * stride;
@@ -128,7 +132,7 @@ class RowPlanes {
     float *nx = plane(kNx, layer) + x, *ny = plane(kNy, layer) + x, *nz = plane(kNz, layer) + x;
     const I word = I(V::load(nx));
     // unpackSnorm2x16: clamp(int16 / 32767, -1, 1), low half first.
-    const auto component = [](I bits) {
+    const auto component = [](const I& bits) {
       const F v = __builtin_convertvector(bits, F) / 32767.0f;
       const F lo = v < -1.0f ? V::splat(-1.0f) : v;
       return 1.0f < lo ? V::splat(1.0f) : lo;
@@ -249,10 +253,6 @@ TLAB_INLINE typename Lanes<N>::F dot(const typename Lanes<N>::F a[3], const type
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
-// Per layer and pair, what phase 1 settles for each lane (bits): 1 A's link kept, 2 A's link
-// UNRESOLVED, 4 B's link kept, 8 B's link UNRESOLVED (else none).
-constexpr std::int32_t kKeepA = 1, kOpenA = 2, kKeepB = 4, kOpenB = 8;
-
 // Settles the pairs of row y (A) with the pixels to their right (same row) and above (row y + 1).
 struct RowPass {
   const CoveredGrid& grid;
@@ -265,6 +265,16 @@ struct RowPass {
   TLAB_INLINE void run(const RowPlanes& a, const RowPlanes& up, int y) const {
     for (int x0 = a.first; x0 <= a.last; x0 += N) chunk<N>(a, up, y, x0);
   }
+
+  // What one step settles for N adjacent pixels, lane by lane: per pair, whether it is listed and
+  // (with pair bits) the layers linked to the same layer each way; and the link words of each
+  // layer both ways, words[((2 × pair + side) × layers + L) × N + lane] (side 0: A's, 1: B's).
+  template <int N>
+  struct Settled {
+    typename Lanes<N>::I listed[2], sameA[2];
+    const std::int32_t* words;
+    std::int32_t layers;
+  };
 
   template <int N>
   TLAB_INLINE void chunk(const RowPlanes& a, const RowPlanes& up, int y, int x0) const {
@@ -279,10 +289,16 @@ struct RowPass {
     const I active = nA > 0;
     const F stepA[2] = {V::load(a.stepX() + x0), V::load(a.stepY() + x0)};
     const F stepB[2] = {V::load(a.stepX() + x0 + 1), V::load(up.stepY() + x0)};
+    const I headA = V::load(a.heads() + x0), headB[2] = {V::load(a.heads() + x0 + 1), V::load(up.heads() + x0)};
     const RowPlanes* rowB[2] = {&a, &up};
     const int xB[2] = {x0 + 1, x0};
-    if (work.codes.size() < std::size_t(2 * layers * N)) work.codes.resize(std::size_t(2 * layers * N));
-    std::int32_t* codes = work.codes.data();  // [pair][layer][lane]
+    if (work.words.size() < std::size_t(4 * layers * N)) work.words.resize(std::size_t(4 * layers * N));
+    std::int32_t* words = work.words.data();
+    // NO_NEIGHBOR and UNRESOLVED as int32 lanes; with pair bits, a listed pair's words are its kept
+    // links or UNRESOLVED (both ways: phase 3 searches the rest).
+    const I none = V::all(), unresolved = none - 1;
+    const bool bits = out.pairs != nullptr;
+    Settled<N> settled{{I{}, I{}}, {I{}, I{}}, words, layers};
     for (int i = 0; i < 2; ++i) {
       // The normals' products carried to the next layer (connect.comp's aNextDotB, bNextDotA).
       F aNextDotB{}, bNextDotA{};
@@ -304,55 +320,44 @@ struct RowPass {
         const I aSame = hasA & fa.same, aOpen = hasA & fa.unresolved, bSame = hasB & fb.same, bOpen = hasB & fb.unresolved;
         // connect.comp's settledLink: a chosen link is kept unless the other end chose nobody.
         const I keepA = aSame & (bSame | bOpen), keepB = bSame & (aSame | aOpen);
-        V::store(codes + (i * layers + L) * N, (keepA & kKeepA) | (aOpen & kOpenA) | (keepB & kKeepB) | (bOpen & kOpenB));
+        settled.listed[i] |= aOpen | bOpen;
+        const I missingA = bits ? unresolved : aOpen ? unresolved : none, missingB = bits ? unresolved : bOpen ? unresolved : none;
+        V::store(words + ((2 * i) * layers + L) * N, keepA ? headB[i] + L : missingA);
+        V::store(words + ((2 * i + 1) * layers + L) * N, keepB ? headA + L : missingB);
+        if (bits) settled.sameA[i] |= keepA & std::int32_t(1u << (l & 31u));  // lists of at most 32 layers
       }
     }
     for (int j = 0; j < N; ++j)
-      if (nA[j] > 0) settlePixel(x0 + j, y, std::uint32_t(nA[j]), codes + j, layers, N);
+      if (nA[j] > 0)
+        settlePixel(x0 + j, y, std::uint32_t(nA[j]), std::uint32_t(headA[j]),
+                    {std::uint32_t(nB[0][j]), std::uint32_t(nB[1][j])}, {std::uint32_t(headB[0][j]), std::uint32_t(headB[1][j])},
+                    {settled.listed[0][j] != 0, settled.listed[1][j] != 0},
+                    {std::uint32_t(settled.sameA[0][j]), std::uint32_t(settled.sameA[1][j])}, words + j, layers, N);
   }
 
-  // One pixel's links from its codes (codes[(i * layers + L) * stride] for pair i and layer L):
-  // as words, or as its pair word and the listed pairs' words (TLAB_LINK_MASKS), with the work
-  // list and `partial` as connect.comp writes them.
-  void settlePixel(int x, int y, std::uint32_t n, const std::int32_t* codes, std::int32_t layers, int stride) const {
+  // One pixel's links from the words its step settled (words[((2 × pair + side) × layers + L) × stride]):
+  // all of them, or with pair bits its pair word and the listed pairs' words (TLAB_LINK_MASKS); with
+  // the work list and `partial` as connect.comp writes them.
+  void settlePixel(int x, int y, std::uint32_t n, std::uint32_t head, const std::array<std::uint32_t, 2>& countB,
+                   const std::array<std::uint32_t, 2>& headB, const std::array<bool, 2>& listed,
+                   const std::array<std::uint32_t, 2>& sameA, const std::int32_t* words, std::int32_t layers, int stride) const {
     const glm::ivec2 xy(x, y), kPairDirections[2] = {{1, 0}, {0, 1}};
-    const std::uint32_t pixel = grid.indexAt(xy), head = grid.heads[pixel];
-    bool listed[2] = {false, false};
-    std::uint32_t sameA[2] = {0, 0}, sameB[2] = {0, 0};
+    const std::uint32_t pixel = grid.indexAt(xy);
     for (int i = 0; i < 2; ++i) {
-      const glm::ivec2 q = xy + kPairDirections[i];
-      const std::uint32_t countB = grid.countAt(q), headB = countB > 0 ? grid.heads[grid.indexAt(q)] : 0u;
-      const std::uint32_t pairLayers = std::max(n, countB);
-      for (std::uint32_t l = 0; l < pairLayers; ++l) listed[i] = listed[i] || (codes[(i * layers + l) * stride] & (kOpenA | kOpenB)) != 0;
-      if (out.pairs) {
-        for (std::uint32_t l = 0; l < pairLayers; ++l) {
-          const std::int32_t c = codes[(i * layers + l) * stride];
-          sameA[i] |= std::uint32_t(c & kKeepA) << l;
-          sameB[i] |= std::uint32_t((c & kKeepB) >> 2) << l;
-        }
-        if (!listed[i]) continue;  // a listed pair's links are words for phase 3, both ways
-        for (std::uint32_t l = 0; l < pairLayers; ++l) {
-          if (l < n) out.links[head + l][2 * i + 1] = (sameA[i] >> l) & 1u ? headB + l : kUnresolved;
-          if (l < countB) out.links[headB + l][2 * i] = (sameB[i] >> l) & 1u ? head + l : kUnresolved;
-        }
-        continue;
-      }
-      for (std::uint32_t l = 0; l < pairLayers; ++l) {
-        const std::int32_t c = codes[(i * layers + l) * stride];
-        if (l < n) out.links[head + l][2 * i + 1] = c & kKeepA ? headB + l : c & kOpenA ? kUnresolved : kNone;
-        if (l < countB) out.links[headB + l][2 * i] = c & kKeepB ? head + l : c & kOpenB ? kUnresolved : kNone;
-      }
+      if (out.pairs && !listed[i]) continue;  // (a listed pair's links are words for phase 3, both ways)
+      const std::int32_t *fromA = words + (2 * i) * layers * stride, *fromB = words + (2 * i + 1) * layers * stride;
+      for (std::uint32_t l = 0; l < n; ++l) out.links[head + l][2 * i + 1] = std::uint32_t(fromA[l * stride]);
+      for (std::uint32_t l = 0; l < countB[i]; ++l) out.links[headB[i] + l][2 * i] = std::uint32_t(fromB[l * stride]);
     }
     if (out.pairs) {
+      out.pairs[pixel] = glm::uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
       // Whether the pixel and its pairs link the same layer all round (connect.comp's `partial`).
       bool whole = !listed[0] && !listed[1];
-      for (int i = 0; i < 2; ++i) {
-        const glm::ivec2 q = xy + kPairDirections[i];
+      for (int i = 0; i < 2 && whole && !partial; ++i) {
         const std::uint32_t all = n >= 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
-        whole = whole && (!grid.inside(q) || (grid.countAt(q) == n && sameA[i] == all));
+        whole = whole && (!grid.inside(xy + kPairDirections[i]) || (countB[i] == n && sameA[i] == all));
         whole = whole && (!grid.inside(xy - kPairDirections[i]) || grid.countAt(xy - kPairDirections[i]) > 0u);
       }
-      out.pairs[pixel] = glm::uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
       if (!whole) partial = true;
     } else {
       // No pair writes these beyond the left and bottom edges, nor where the pixel there is empty.
@@ -364,6 +369,22 @@ struct RowPass {
     }
     for (int i = 0; i < 2; ++i)
       if (listed[i]) work.listed.push_back(2 * pixel + std::uint32_t(i));
+    if (out.conditions) work.listedPairs[y & 1][std::size_t(x)] = std::uint8_t((listed[0] ? 1 : 0) | (listed[1] ? 2 : 0));
+  }
+
+  // Phase 2 folded in (FastLinks::conditions) for row y, whose pairs are all settled: each covered
+  // pixel none of whose four pairs was listed, unless the pairs below it are another thread's
+  // (`belowElsewhere`), gets its boundary conditions now; the others are deferred.
+  void foldRow(const RowPlanes& a, int y, bool belowElsewhere) const {
+    const std::uint8_t *row = work.listedPairs[y & 1].data(), *below = work.listedPairs[(y + 1) & 1].data();
+    const std::int32_t* counts = a.counts();
+    for (int x = a.first; x <= a.last; ++x) {
+      if (counts[x] == 0) continue;
+      const std::uint32_t pixel = grid.indexAt({x, y});
+      const bool listed = row[x] != 0 || (x > 0 && (row[x - 1] & 1) != 0) || (y > 0 && (belowElsewhere || (below[x] & 2) != 0));
+      if (listed) work.deferred.push_back(pixel);
+      else setSameLayerBoundaryConditions(grid, *out.conditions, pixel, {x, y}, work.seeds);
+    }
   }
 };
 
@@ -379,7 +400,9 @@ TLAB_INLINE bool settleRows(const CoveredGrid& grid, const SortedSurfels& surfel
   for (std::size_t y = from; y < to; ++y) {
     const int next = 1 - current;
     rows[next].load<N>(grid, surfels, int(y) + 1);
+    if (out.conditions) std::fill(work.listedPairs[y & 1].begin(), work.listedPairs[y & 1].end(), 0);
     pass.run<N>(rows[current], rows[next], int(y));
+    if (out.conditions) pass.foldRow(rows[current], int(y), y == from);
     current = next;
   }
   return partial;
@@ -411,6 +434,7 @@ void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels
                            FastLinks& out, std::vector<FastLinkRows>& work, unsigned threads, FastLinkLanes lanes) {
   out.listed.clear();
   out.partial = false;
+  out.deferred.clear();
   if (grid.width <= 0 || grid.height <= 0) return;
   std::uint32_t longest = 0;
   for (std::size_t p = 0, pixels = std::size_t(grid.width) * grid.height; p < pixels; ++p) longest = std::max(longest, grid.counts[p]);
@@ -424,12 +448,24 @@ void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels
   const SettleRows settle = lanes == FastLinkLanes::Widest ? widest() : settleRowsSse;
   std::vector<char> partial(shares, 0);
   core::forEachShare(std::size_t(grid.height), shares, [&](std::size_t from, std::size_t to, std::size_t share) {
-    work[share].listed.clear();
-    partial[share] = settle(grid, surfels, w, out, work[share], pitch, layers, from, to);
+    FastLinkRows& mine = work[share];
+    mine.listed.clear();
+    mine.deferred.clear();
+    mine.seeds.beta.clear();
+    mine.seeds.gamma.clear();
+    for (auto& row : mine.listedPairs) row.resize(pitch);
+    partial[share] = settle(grid, surfels, w, out, mine, pitch, layers, from, to);
   });
-  for (std::size_t s = 0; s < shares; ++s) {
-    out.listed.insert(out.listed.end(), work[s].listed.begin(), work[s].listed.end());
+  const auto append = [](std::vector<std::uint32_t>* to, const std::vector<std::uint32_t>& from) {
+    if (to) to->insert(to->end(), from.begin(), from.end());
+  };
+  for (std::size_t s = 0; s < shares; ++s) {  // the shares in row order
+    append(&out.listed, work[s].listed);
     out.partial = out.partial || partial[s] != 0;
+    if (!out.conditions) continue;
+    append(&out.deferred, work[s].deferred);
+    append(out.conditions->betaSeeds, work[s].seeds.beta);
+    append(out.conditions->gammaSeeds, work[s].seeds.gamma);
   }
 }
 

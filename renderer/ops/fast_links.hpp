@@ -15,10 +15,12 @@
 // connect pass hands in its mapped buffers (ops/connect_pass.cpp).
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include <glm/glm.hpp>
 
+#include "renderer/ops/boundary_conditions.hpp"
 #include "renderer/ops/covered_grid.hpp"
 
 namespace tlab::render {
@@ -48,6 +50,15 @@ struct FastLinks {
   glm::uvec4* pairs = nullptr;
   std::vector<std::uint32_t> listed;  // out: 2 × pixel + axis (0: right, 1: above), pixel order
   bool partial = false;               // out: where `pairs` is given, as the shader's word
+  // Where given, phase 2 folded in (ops/boundary_conditions.hpp, setPixelBoundaryConditions): each
+  // row, once its pairs are settled, sets the boundary conditions of its pixels none of whose four
+  // pairs was listed (their links are final: phase 3 leaves them alone) while the row's words are
+  // in the cache; the others go to `deferred`, for phase 2 after phase 3, as do the first row of
+  // each thread's rows (the pairs below it are another thread's). Its links and pairs must be
+  // `links` and `pairs` above (mapped readable too), and its seeds are appended in pixel and layer
+  // order (of the pixels set here).
+  std::optional<BoundaryConditions> conditions;
+  std::vector<std::uint32_t> deferred;  // out: the pixels left to phase 2, pixel order
 };
 
 // One thread's working memory: two rows' layer planes. Kept between frames (resized, never freed).
@@ -56,12 +67,18 @@ struct FastLinkRows {
     std::vector<float> planes;         // 6 planes of layers × padded width: z, ∂z/∂x, ∂z/∂y, n
     std::vector<std::int32_t> comps;   // layers × padded width
     std::vector<std::int32_t> counts;  // padded width (0 beyond the image)
+    std::vector<std::int32_t> heads;   // padded width (where the count is above 0)
     std::vector<float> stepX, stepY;   // padded width
     std::uint32_t longest = 0;         // the row's longest list
   };
   Row rows[2];
-  std::vector<std::int32_t> codes;  // a chunk's answers per pair, layer and lane
+  std::vector<std::int32_t> words;  // a step's link words per pair, side, layer and lane
   std::vector<std::uint32_t> listed;
+  // Phase 2 folded in (FastLinks::conditions): per column, bit i where the pixel's pair i was listed,
+  // for this row and the one below (by the row's parity); the pixels deferred and seeds listed.
+  std::vector<std::uint8_t> listedPairs[2];
+  std::vector<std::uint32_t> deferred;
+  SeedLists seeds;
 };
 
 // How many adjacent pixels a step settles: 8 where the CPU has AVX2, else 4 (SSE); or 4 (tests

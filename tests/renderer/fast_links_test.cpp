@@ -4,7 +4,9 @@
 // (NeighborLinks.PhaseOneAsHostCodeWritesTheShadersWords).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <bit>
+#include <utility>
 #include <vector>
 
 #include "renderer/ops/fast_links.hpp"
@@ -121,6 +123,102 @@ TEST(FastLinksOnHost, AnotherComponentIsNoNeighbourAndLanesCarryOn) {
       const std::uint32_t right = p == 8 ? kNone : p == 5 || p == 6 ? kUnresolved : p + 1;
       const std::uint32_t left = p == 0 ? kNone : p == 6 || p == 7 ? kUnresolved : p - 1;
       EXPECT_EQ(words.links[p], glm::uvec4(left, right, kNone, kNone)) << p;
+    }
+  }
+}
+
+namespace {
+
+// A width × height image of patches of lists of 1 to 4 layers at depths 1, 2, 3, 4 (each patch's
+// shifted by its own few hundredths), some pixels empty and now and then a layer of another
+// component: pairs the fast path settles, and pairs it lists (across patches, other components).
+struct Image {
+  Image(int width, int height) : w(width), h(height) {
+    std::uint32_t state = 12345u;
+    const auto next = [&state] { return state = state * 1664525u + 1013904223u; };  // (Numerical Recipes' LCG)
+    for (int p = 0; p < w * h; ++p) {
+      const int patch = p % w / 12 + p / w / 8;
+      const std::uint32_t n = (p % w + 3 * (p / w)) % 17 == 0 ? 0u : 1u + std::uint32_t(patch % 4), shift = std::uint32_t(patch % 3);
+      heads.push_back(std::uint32_t(words.size() / 6));
+      counts.push_back(n);
+      for (std::uint32_t l = 0; l < n; ++l) {
+        const std::uint32_t component = (next() >> 8) % 211u == 0 ? 1u : 0u;
+        words.insert(words.end(), {std::bit_cast<std::uint32_t>(1.0f + float(l) + 0.02f * float(shift)), 0u, 0u, 0u, 0u, component << 16});
+      }
+      if (n > 0) covered.push_back(std::uint32_t(p));
+    }
+    steps.assign(counts.size(), glm::vec2(0.0f));
+  }
+  CoveredGrid grid() const { return {w, h, counts.data(), heads.data(), covered.data(), covered.size()}; }
+  std::size_t fragments() const { return words.size() / 6; }
+  int w, h;
+  std::vector<std::uint32_t> counts, heads, covered, words;
+  std::vector<glm::vec2> steps;
+};
+
+// What phase 2 leaves, with phase 1 before it.
+struct Conditions {
+  std::vector<glm::uvec4> links, pairs;
+  std::vector<std::uint32_t> flags, betaSeeds, gammaSeeds;
+  std::vector<float> beta, gamma;
+  std::size_t deferred = 0;
+  explicit Conditions(const Image& image, bool pairBits)
+      : links(image.fragments(), glm::uvec4(0xDEAD)), flags(image.fragments(), 0xDEAD), beta(image.fragments(), -1.0f),
+        gamma(image.fragments(), -1.0f) {
+    if (pairBits) pairs.assign(image.counts.size(), glm::uvec4(0xDEAD));
+  }
+  BoundaryConditions outputs(std::vector<std::uint32_t>* betaList, std::vector<std::uint32_t>* gammaList) {
+    return {links.data(), pairs.empty() ? nullptr : pairs.data(), flags.data(), beta.data(), gamma.data(), betaList, gammaList};
+  }
+};
+
+// Phase 1, then phase 2 over every covered pixel (`fold` false); or phase 2 folded into phase 1 and
+// then over the pixels it deferred, the seeds merged (as ops/connect_pass.cpp does).
+Conditions phasesOneAndTwo(const Image& image, bool pairBits, bool fold, unsigned threads) {
+  Conditions c(image, pairBits);
+  const SortedSurfels surfels{image.words.data(), 6, 3, 2, true, 5, image.steps.data()};
+  FastLinks out;
+  out.links = c.links.data();
+  out.pairs = pairBits ? c.pairs.data() : nullptr;
+  if (fold) out.conditions = c.outputs(&c.betaSeeds, &c.gammaSeeds);
+  std::vector<FastLinkRows> work;
+  settleFastLinksOnHost(image.grid(), surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work, threads);
+  CoveredGrid rest = image.grid();
+  if (fold) rest.covered = out.deferred.data(), rest.coveredCount = out.deferred.size();
+  std::vector<std::uint32_t> beta, gamma;
+  setBoundaryConditionsOnHost(rest, c.outputs(&beta, &gamma), threads);
+  for (auto [seeds, more] : {std::pair{&c.betaSeeds, &beta}, std::pair{&c.gammaSeeds, &gamma}}) {
+    const std::size_t folded = seeds->size();
+    seeds->insert(seeds->end(), more->begin(), more->end());
+    std::inplace_merge(seeds->begin(), seeds->begin() + std::ptrdiff_t(folded), seeds->end());
+  }
+  c.deferred = out.deferred.size();
+  return c;
+}
+
+}  // namespace
+
+// Phase 2 folded into phase 1 (FastLinks::conditions) leaves what phase 2 run afterwards leaves:
+// links (from pair bits too), flags, β and γ, and the seeds in pixel and layer order, with one
+// thread or rows shared among several (whose first rows are deferred); pixels beside a listed pair
+// are deferred (as the γ of their unresolved links shows), the rest set during phase 1.
+TEST(FastLinksOnHost, PhaseTwoFoldedInLeavesWhatPhaseTwoAfterwardsLeaves) {
+  const Image image(48, 25);
+  for (const bool pairBits : {false, true}) {
+    const Conditions after = phasesOneAndTwo(image, pairBits, false, 1);
+    EXPECT_FALSE(after.gammaSeeds.empty());  // unresolved links (no phase 3 here): next to a "silhouette"
+    for (const unsigned threads : {1u, 2u, 3u}) {
+      SCOPED_TRACE(std::to_string(pairBits) + " " + std::to_string(threads));
+      const Conditions folded = phasesOneAndTwo(image, pairBits, true, threads);
+      EXPECT_EQ(folded.links, after.links);
+      EXPECT_EQ(folded.pairs, after.pairs);
+      EXPECT_EQ(folded.flags, after.flags);
+      EXPECT_EQ(folded.beta, after.beta);
+      EXPECT_EQ(folded.gamma, after.gamma);
+      EXPECT_EQ(folded.betaSeeds, after.betaSeeds);
+      EXPECT_EQ(folded.gammaSeeds, after.gammaSeeds);
+      EXPECT_GT(folded.deferred, 0u);
+      EXPECT_LT(folded.deferred, image.covered.size() / 2);
     }
   }
 }
