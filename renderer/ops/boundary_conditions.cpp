@@ -98,14 +98,7 @@ void setSameLayerBoundaryConditions(const CoveredGrid& g, const BoundaryConditio
   for (std::uint32_t f = head; f < head + n; ++f) {
     glm::uvec4 link = out.links[f];
     if (out.pairs) out.links[f] = link = linksFromBits(around, link, f - head, qHead);
-    const std::uint32_t found = std::uint32_t(link.x != kNoNeighbor) + std::uint32_t(link.y != kNoNeighbor) +
-                                std::uint32_t(link.z != kNoNeighbor) + std::uint32_t(link.w != kNoNeighbor);
-    // Sec. 5.3 with no silhouette: β's boundary where a link is missing (not at the image edge).
-    const bool boundary = found + outside < 4u;
-    if (out.beta) out.beta[f] = boundary ? 1.0f : 0.0f;
-    if (out.gamma) out.gamma[f] = 0.0f;
-    if (out.betaSeeds && boundary) seeds.beta.push_back(f);
-    out.flags[f] = boundary ? kFreeAlpha | kFreeGamma : kFreeAlpha | kFreeBeta | kFreeGamma;
+    setSameLayerFragment(out, f, link, outside, seeds);
   }
 }
 

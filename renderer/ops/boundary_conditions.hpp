@@ -43,6 +43,22 @@ struct SeedLists {
 void setPixelBoundaryConditions(const CoveredGrid& grid, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
                                 SeedLists& seeds);
 
+// Fragment f's boundary conditions where each of its links (`link`: left, right, below, above)
+// joins the same layer of the adjacent list or nothing, `outside` of its four neighbours lying
+// beyond the image edge: no fragment there is beside or under a silhouette, so γ is 0 and β 1 only
+// where a link is missing (Sec. 5.3; the image edge is no silhouette).
+inline void setSameLayerFragment(const BoundaryConditions& out, std::uint32_t f, const glm::uvec4& link, std::uint32_t outside,
+                                 SeedLists& seeds) {
+  constexpr std::uint32_t kNoNeighbor = 0xFFFFFFFFu, kFreeAlpha = 1, kFreeBeta = 2, kFreeGamma = 4;
+  const std::uint32_t found = std::uint32_t(link.x != kNoNeighbor) + std::uint32_t(link.y != kNoNeighbor) +
+                              std::uint32_t(link.z != kNoNeighbor) + std::uint32_t(link.w != kNoNeighbor);
+  const bool boundary = found + outside < 4u;
+  if (out.beta) out.beta[f] = boundary ? 1.0f : 0.0f;
+  if (out.gamma) out.gamma[f] = 0.0f;
+  if (out.betaSeeds && boundary) seeds.beta.push_back(f);
+  out.flags[f] = boundary ? kFreeAlpha | kFreeGamma : kFreeAlpha | kFreeBeta | kFreeGamma;
+}
+
 // setPixelBoundaryConditions for a pixel each of whose links joins the same layer of the adjacent
 // list or nothing (none of its pairs listed: the fast path settled them): there no fragment is
 // beside or under a silhouette, so γ is 0 and β 1 only where a link is missing.

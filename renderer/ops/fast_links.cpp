@@ -74,6 +74,7 @@ class RowPlanes {
   const std::int32_t* comps(std::uint32_t layer) const { return row_.comps.data() + std::size_t(layer) * pitch_; }
   const std::int32_t* counts() const { return row_.counts.data(); }
   const std::int32_t* heads() const { return row_.heads.data(); }
+  std::size_t pitch() const { return pitch_; }
   const float* stepX() const { return row_.stepX.data(); }
   const float* stepY() const { return row_.stepY.data(); }
   int first = 0, last = -1;  // the row's covered columns
@@ -260,6 +261,7 @@ struct RowPass {
   FastLinks& out;
   FastLinkRows& work;
   bool& partial;
+  int rowsFrom, rowsTo;  // this thread's rows
 
   template <int N>
   TLAB_INLINE void run(const RowPlanes& a, const RowPlanes& up, int y) const {
@@ -322,59 +324,108 @@ struct RowPass {
         const I keepA = aSame & (bSame | bOpen), keepB = bSame & (aSame | aOpen);
         settled.listed[i] |= aOpen | bOpen;
         const I missingA = bits ? unresolved : aOpen ? unresolved : none, missingB = bits ? unresolved : bOpen ? unresolved : none;
-        V::store(words + ((2 * i) * layers + L) * N, keepA ? headB[i] + L : missingA);
-        V::store(words + ((2 * i + 1) * layers + L) * N, keepB ? headA + L : missingB);
+        const I wordA = keepA ? headB[i] + L : missingA, wordB = keepB ? headA + L : missingB;
+        V::store(words + ((2 * i) * layers + L) * N, wordA);
+        V::store(words + ((2 * i + 1) * layers + L) * N, wordB);
         if (bits) settled.sameA[i] |= keepA & std::int32_t(1u << (l & 31u));  // lists of at most 32 layers
+        // As words, the links up are the next row's links down: it takes them from here.
+        if (!bits && i == 1) V::store(work.belowWords[(y + 1) & 1].data() + std::size_t(L) * a.pitch() + x0, wordB);
       }
     }
-    for (int j = 0; j < N; ++j)
-      if (nA[j] > 0)
-        settlePixel(x0 + j, y, std::uint32_t(nA[j]), std::uint32_t(headA[j]),
-                    {std::uint32_t(nB[0][j]), std::uint32_t(nB[1][j])}, {std::uint32_t(headB[0][j]), std::uint32_t(headB[1][j])},
-                    {settled.listed[0][j] != 0, settled.listed[1][j] != 0},
-                    {std::uint32_t(settled.sameA[0][j]), std::uint32_t(settled.sameA[1][j])}, words + j, layers, N);
+    for (int j = 0; j < N; ++j) {
+      if (nA[j] <= 0) continue;
+      const std::array<std::uint32_t, 2> countB{std::uint32_t(nB[0][j]), std::uint32_t(nB[1][j])},
+          headsB{std::uint32_t(headB[0][j]), std::uint32_t(headB[1][j])};
+      const std::array<bool, 2> listed{settled.listed[0][j] != 0, settled.listed[1][j] != 0};
+      if (bits) {
+        settlePairsPixel(x0 + j, y, std::uint32_t(nA[j]), std::uint32_t(headA[j]), countB, headsB, listed,
+                         {std::uint32_t(settled.sameA[0][j]), std::uint32_t(settled.sameA[1][j])}, words + j, layers, N);
+        continue;
+      }
+      // The links left: B's words of the pair with the pixel to the left, in this step's lane before
+      // or the last lane of the step before (carried).
+      const bool carried = j == 0;
+      settleWordsPixel(a, x0 + j, y, std::uint32_t(nA[j]), std::uint32_t(headA[j]), countB[1], headsB[1], listed,
+                       words + j, layers, N, carried ? work.carry.data() : words + layers * N + j - 1, carried ? 1 : N);
+    }
+    if (!bits) {  // the last lane's links left for the next step's first pixel
+      if (work.carry.size() < std::size_t(layers)) work.carry.resize(std::size_t(layers));
+      for (std::int32_t L = 0; L < layers; ++L) work.carry[std::size_t(L)] = words[(layers + L) * N + N - 1];
+    }
   }
 
-  // One pixel's links from the words its step settled (words[((2 × pair + side) × layers + L) × stride]):
-  // all of them, or with pair bits its pair word and the listed pairs' words (TLAB_LINK_MASKS); with
-  // the work list and `partial` as connect.comp writes them.
-  void settlePixel(int x, int y, std::uint32_t n, std::uint32_t head, const std::array<std::uint32_t, 2>& countB,
-                   const std::array<std::uint32_t, 2>& headB, const std::array<bool, 2>& listed,
-                   const std::array<std::uint32_t, 2>& sameA, const std::int32_t* words, std::int32_t layers, int stride) const {
+  // One pixel's links as words (each fragment's four in one store), from the words its step
+  // settled (words[((2 × pair + side) × layers + L) × stride]), the links left (left[L × leftStride])
+  // and the links down (the row below's step stored them; at the first of this thread's rows another
+  // thread writes them); at the last of its rows the next row's links down. With the work list, and
+  // phase 2 folded in (FastLinks::conditions) where none of the pixel's pairs was listed.
+  void settleWordsPixel(const RowPlanes& a, int x, int y, std::uint32_t n, std::uint32_t head, std::uint32_t countAbove,
+                        std::uint32_t headAbove, const std::array<bool, 2>& listed, const std::int32_t* words, std::int32_t layers,
+                        int stride, const std::int32_t* left, int leftStride) const {
+    const std::uint32_t pixel = grid.indexAt({x, y});
+    const std::int32_t *right = words, *above = words + 2 * layers * stride;
+    const std::int32_t* below = work.belowWords[y & 1].data() + x;
+    const std::size_t belowStride = a.pitch();
+    const bool leftEmpty = x == 0 || a.counts()[x - 1] == 0, belowEmpty = y == 0 || grid.counts[pixel - std::uint32_t(grid.width)] == 0;
+    const bool firstRow = y == rowsFrom && y > 0;  // the links down are another thread's to write
+    for (int i = 0; i < 2; ++i)
+      if (listed[i]) work.listed.push_back(2 * pixel + std::uint32_t(i));
+    // Phase 2 here where none of the pixel's pairs was listed (then all its links are final).
+    bool fold = false;
+    if (out.conditions) {
+      std::uint8_t* row = work.listedPairs[y & 1].data();
+      row[x] = std::uint8_t((listed[0] ? 1 : 0) | (listed[1] ? 2 : 0));
+      fold = row[x] == 0 && (x == 0 || (row[x - 1] & 1) == 0) &&
+             (y == 0 || (!firstRow && (work.listedPairs[(y + 1) & 1][std::size_t(x)] & 2) == 0));
+      if (!fold) work.deferred.push_back(pixel);
+    }
+    const std::uint32_t outside = std::uint32_t(x == 0) + std::uint32_t(x == grid.width - 1) + std::uint32_t(y == 0) +
+                                  std::uint32_t(y == grid.height - 1);
+    for (std::uint32_t l = 0; l < n; ++l) {
+      const glm::uvec4 link(leftEmpty ? kNone : std::uint32_t(left[l * leftStride]), std::uint32_t(right[l * stride]),
+                            belowEmpty ? kNone : std::uint32_t(below[l * belowStride]), std::uint32_t(above[l * stride]));
+      if (!firstRow || belowEmpty) out.links[head + l] = link;
+      else out.links[head + l][0] = link[0], out.links[head + l][1] = link[1], out.links[head + l][3] = link[3];
+      if (fold) setSameLayerFragment(*out.conditions, head + l, link, outside, work.seeds);
+    }
+    if (y + 1 == rowsTo) {  // the next thread's first row takes its links down from here
+      const std::int32_t* up = words + 3 * layers * stride;
+      for (std::uint32_t l = 0; l < countAbove; ++l) out.links[headAbove + l][2] = std::uint32_t(up[l * stride]);
+    }
+  }
+
+  // One pixel's links as pair bits (TLAB_LINK_MASKS), from what its step settled
+  // (words[((2 × pair + side) × layers + L) × stride]): its pair word, and the listed pairs' words
+  // both ways (phase 3 searches them); with the work list and `partial` as connect.comp writes them.
+  void settlePairsPixel(int x, int y, std::uint32_t n, std::uint32_t head, const std::array<std::uint32_t, 2>& countB,
+                        const std::array<std::uint32_t, 2>& headB, const std::array<bool, 2>& listed,
+                        const std::array<std::uint32_t, 2>& sameA, const std::int32_t* words, std::int32_t layers, int stride) const {
     const glm::ivec2 xy(x, y), kPairDirections[2] = {{1, 0}, {0, 1}};
     const std::uint32_t pixel = grid.indexAt(xy);
     for (int i = 0; i < 2; ++i) {
-      if (out.pairs && !listed[i]) continue;  // (a listed pair's links are words for phase 3, both ways)
+      if (!listed[i]) continue;
       const std::int32_t *fromA = words + (2 * i) * layers * stride, *fromB = words + (2 * i + 1) * layers * stride;
       for (std::uint32_t l = 0; l < n; ++l) out.links[head + l][2 * i + 1] = std::uint32_t(fromA[l * stride]);
       for (std::uint32_t l = 0; l < countB[i]; ++l) out.links[headB[i] + l][2 * i] = std::uint32_t(fromB[l * stride]);
     }
-    if (out.pairs) {
-      out.pairs[pixel] = glm::uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
-      // Whether the pixel and its pairs link the same layer all round (connect.comp's `partial`).
-      bool whole = !listed[0] && !listed[1];
-      for (int i = 0; i < 2 && whole && !partial; ++i) {
-        const std::uint32_t all = n >= 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
-        whole = whole && (!grid.inside(xy + kPairDirections[i]) || (countB[i] == n && sameA[i] == all));
-        whole = whole && (!grid.inside(xy - kPairDirections[i]) || grid.countAt(xy - kPairDirections[i]) > 0u);
-      }
-      if (!whole) partial = true;
-    } else {
-      // No pair writes these beyond the left and bottom edges, nor where the pixel there is empty.
-      const bool leftEmpty = grid.countAt(xy - glm::ivec2(1, 0)) == 0, belowEmpty = grid.countAt(xy - glm::ivec2(0, 1)) == 0;
-      for (std::uint32_t l = 0; l < n && (leftEmpty || belowEmpty); ++l) {
-        if (leftEmpty) out.links[head + l][0] = kNone;
-        if (belowEmpty) out.links[head + l][2] = kNone;
-      }
+    out.pairs[pixel] = glm::uvec4(sameA[0], sameA[1], (listed[0] ? 1u : 0u) | (listed[1] ? 2u : 0u), 0u);
+    // Whether the pixel and its pairs link the same layer all round (connect.comp's `partial`).
+    bool whole = !listed[0] && !listed[1];
+    for (int i = 0; i < 2 && whole && !partial; ++i) {
+      const std::uint32_t all = n >= 32u ? 0xFFFFFFFFu : (1u << n) - 1u;
+      whole = whole && (!grid.inside(xy + kPairDirections[i]) || (countB[i] == n && sameA[i] == all));
+      whole = whole && (!grid.inside(xy - kPairDirections[i]) || grid.countAt(xy - kPairDirections[i]) > 0u);
     }
+    if (!whole) partial = true;
     for (int i = 0; i < 2; ++i)
       if (listed[i]) work.listed.push_back(2 * pixel + std::uint32_t(i));
     if (out.conditions) work.listedPairs[y & 1][std::size_t(x)] = std::uint8_t((listed[0] ? 1 : 0) | (listed[1] ? 2 : 0));
   }
 
-  // Phase 2 folded in (FastLinks::conditions) for row y, whose pairs are all settled: each covered
-  // pixel none of whose four pairs was listed, unless the pairs below it are another thread's
-  // (`belowElsewhere`), gets its boundary conditions now; the others are deferred.
+  // Phase 2 folded in (FastLinks::conditions) for row y of pair bits, whose pairs are all settled:
+  // each covered pixel none of whose four pairs was listed, unless the pairs below it are another
+  // thread's (`belowElsewhere`), gets its boundary conditions now; the others are deferred. (As
+  // words, settleWordsPixel does this pixel by pixel.)
   void foldRow(const RowPlanes& a, int y, bool belowElsewhere) const {
     const std::uint8_t *row = work.listedPairs[y & 1].data(), *below = work.listedPairs[(y + 1) & 1].data();
     const std::int32_t* counts = a.counts();
@@ -396,13 +447,13 @@ TLAB_INLINE bool settleRows(const CoveredGrid& grid, const SortedSurfels& surfel
   RowPlanes rows[2] = {RowPlanes(work.rows[0], pitch, layers), RowPlanes(work.rows[1], pitch, layers)};
   int current = 0;
   rows[current].load<N>(grid, surfels, int(from));
-  const RowPass pass{grid, w, out, work, partial};
+  const RowPass pass{grid, w, out, work, partial, int(from), int(to)};
   for (std::size_t y = from; y < to; ++y) {
     const int next = 1 - current;
     rows[next].load<N>(grid, surfels, int(y) + 1);
     if (out.conditions) std::fill(work.listedPairs[y & 1].begin(), work.listedPairs[y & 1].end(), 0);
     pass.run<N>(rows[current], rows[next], int(y));
-    if (out.conditions) pass.foldRow(rows[current], int(y), y == from);
+    if (out.conditions && out.pairs) pass.foldRow(rows[current], int(y), y == from);
     current = next;
   }
   return partial;
@@ -454,6 +505,9 @@ void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels
     mine.seeds.beta.clear();
     mine.seeds.gamma.clear();
     for (auto& row : mine.listedPairs) row.resize(pitch);
+    if (!out.pairs)
+      for (auto& plane : mine.belowWords)
+        if (plane.size() < layers * pitch) plane.resize(layers * pitch);
     partial[share] = settle(grid, surfels, w, out, mine, pitch, layers, from, to);
   });
   const auto append = [](std::vector<std::uint32_t>* to, const std::vector<std::uint32_t>& from) {

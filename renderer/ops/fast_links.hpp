@@ -73,6 +73,9 @@ struct FastLinkRows {
   };
   Row rows[2];
   std::vector<std::int32_t> words;  // a step's link words per pair, side, layer and lane
+  // As words: the last lane's links left for the next step, and per row parity the links down of
+  // that row (layers × padded width), stored by the row below's steps.
+  std::vector<std::int32_t> carry, belowWords[2];
   std::vector<std::uint32_t> listed;
   // Phase 2 folded in (FastLinks::conditions): per column, bit i where the pixel's pair i was listed,
   // for this row and the one below (by the row's parity); the pixels deferred and seeds listed.

@@ -200,8 +200,9 @@ Conditions phasesOneAndTwo(const Image& image, bool pairBits, bool fold, unsigne
 
 // Phase 2 folded into phase 1 (FastLinks::conditions) leaves what phase 2 run afterwards leaves:
 // links (from pair bits too), flags, β and γ, and the seeds in pixel and layer order, with one
-// thread or rows shared among several (whose first rows are deferred); pixels beside a listed pair
-// are deferred (as the γ of their unresolved links shows), the rest set during phase 1.
+// thread or rows shared among several (whose first rows are deferred, and whose links down, as
+// words, the thread below writes); pixels beside a listed pair are deferred (as the γ of their
+// unresolved links shows), the rest set during phase 1.
 TEST(FastLinksOnHost, PhaseTwoFoldedInLeavesWhatPhaseTwoAfterwardsLeaves) {
   const Image image(48, 25);
   for (const bool pairBits : {false, true}) {
