@@ -11,8 +11,11 @@
 // Row by row, as lanes: each row's surfels are decoded once into layer planes (plane L holds
 // layer L of every pixel of the row), and 8 adjacent pixels (4 without AVX2) are settled at once,
 // their pairs to the right read from the same planes one pixel on and those above from the next
-// row's. The planes are kept across frames (FastLinkRows), as the GL buffers are. No GL here: the
-// connect pass hands in its mapped buffers (ops/connect_pass.cpp).
+// row's. The link words are computed in the lanes too; as words, each fragment's four links are
+// gathered (left from the lane before, down from the row below's step) and written in one store,
+// and phase 2 can be folded in (FastLinks::conditions). The planes are kept across frames
+// (FastLinkRows), as the GL buffers are. No GL here: the connect pass hands in its mapped buffers
+// (ops/connect_pass.cpp).
 #include <cstddef>
 #include <cstdint>
 #include <optional>
