@@ -268,16 +268,6 @@ struct RowPass {
     for (int x0 = a.first; x0 <= a.last; x0 += N) chunk<N>(a, up, y, x0);
   }
 
-  // What one step settles for N adjacent pixels, lane by lane: per pair, whether it is listed and
-  // (with pair bits) the layers linked to the same layer each way; and the link words of each
-  // layer both ways, words[((2 × pair + side) × layers + L) × N + lane] (side 0: A's, 1: B's).
-  template <int N>
-  struct Settled {
-    typename Lanes<N>::I listed[2], sameA[2];
-    const std::int32_t* words;
-    std::int32_t layers;
-  };
-
   template <int N>
   TLAB_INLINE void chunk(const RowPlanes& a, const RowPlanes& up, int y, int x0) const {
     using V = Lanes<N>;
@@ -294,13 +284,16 @@ struct RowPass {
     const I headA = V::load(a.heads() + x0), headB[2] = {V::load(a.heads() + x0 + 1), V::load(up.heads() + x0)};
     const RowPlanes* rowB[2] = {&a, &up};
     const int xB[2] = {x0 + 1, x0};
+    // What the step settles, lane by lane: the link words of each layer both ways,
+    // words[((2 × pair + side) × layers + L) × N + lane] (side 0: A's, 1: B's); per pair, whether
+    // it is listed, and (with pair bits) the layers A links to the same layer.
     if (work.words.size() < std::size_t(4 * layers * N)) work.words.resize(std::size_t(4 * layers * N));
     std::int32_t* words = work.words.data();
+    I listedPair[2] = {I{}, I{}}, sameA[2] = {I{}, I{}};
     // NO_NEIGHBOR and UNRESOLVED as int32 lanes; with pair bits, a listed pair's words are its kept
     // links or UNRESOLVED (both ways: phase 3 searches the rest).
     const I none = V::all(), unresolved = none - 1;
     const bool bits = out.pairs != nullptr;
-    Settled<N> settled{{I{}, I{}}, {I{}, I{}}, words, layers};
     for (int i = 0; i < 2; ++i) {
       // The normals' products carried to the next layer (connect.comp's aNextDotB, bNextDotA).
       F aNextDotB{}, bNextDotA{};
@@ -322,12 +315,12 @@ struct RowPass {
         const I aSame = hasA & fa.same, aOpen = hasA & fa.unresolved, bSame = hasB & fb.same, bOpen = hasB & fb.unresolved;
         // connect.comp's settledLink: a chosen link is kept unless the other end chose nobody.
         const I keepA = aSame & (bSame | bOpen), keepB = bSame & (aSame | aOpen);
-        settled.listed[i] |= aOpen | bOpen;
+        listedPair[i] |= aOpen | bOpen;
         const I missingA = bits ? unresolved : aOpen ? unresolved : none, missingB = bits ? unresolved : bOpen ? unresolved : none;
         const I wordA = keepA ? headB[i] + L : missingA, wordB = keepB ? headA + L : missingB;
         V::store(words + ((2 * i) * layers + L) * N, wordA);
         V::store(words + ((2 * i + 1) * layers + L) * N, wordB);
-        if (bits) settled.sameA[i] |= keepA & std::int32_t(1u << (l & 31u));  // lists of at most 32 layers
+        if (bits) sameA[i] |= keepA & std::int32_t(1u << (l & 31u));  // lists of at most 32 layers
         // As words, the links up are the next row's links down: it takes them from here.
         if (!bits && i == 1) V::store(work.belowWords[(y + 1) & 1].data() + std::size_t(L) * a.pitch() + x0, wordB);
       }
@@ -336,10 +329,10 @@ struct RowPass {
       if (nA[j] <= 0) continue;
       const std::array<std::uint32_t, 2> countB{std::uint32_t(nB[0][j]), std::uint32_t(nB[1][j])},
           headsB{std::uint32_t(headB[0][j]), std::uint32_t(headB[1][j])};
-      const std::array<bool, 2> listed{settled.listed[0][j] != 0, settled.listed[1][j] != 0};
+      const std::array<bool, 2> listed{listedPair[0][j] != 0, listedPair[1][j] != 0};
       if (bits) {
         settlePairsPixel(x0 + j, y, std::uint32_t(nA[j]), std::uint32_t(headA[j]), countB, headsB, listed,
-                         {std::uint32_t(settled.sameA[0][j]), std::uint32_t(settled.sameA[1][j])}, words + j, layers, N);
+                         {std::uint32_t(sameA[0][j]), std::uint32_t(sameA[1][j])}, words + j, layers, N);
         continue;
       }
       // The links left: B's words of the pair with the pixel to the left, in this step's lane before
