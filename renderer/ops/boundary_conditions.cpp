@@ -41,10 +41,7 @@ glm::uvec4 linksFromBits(const PairsAround& p, glm::uvec4 words, std::uint32_t l
   return link;
 }
 
-}  // namespace
-
-void setPixelBoundaryConditions(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
-                                SeedLists& seeds) {
+void setPixel(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy, SeedLists& seeds) {
   const std::uint32_t n = g.counts[pixel], head = g.heads[pixel];
   glm::uvec4 qHead(0u);  // heads of the adjacent lists, to turn a link into a layer
   std::uint32_t outside = 0;  // adjacent pixels beyond the image edge
@@ -81,33 +78,14 @@ void setPixelBoundaryConditions(const CoveredGrid& g, const BoundaryConditions& 
   }
 }
 
-void setSameLayerBoundaryConditions(const CoveredGrid& g, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
-                                    SeedLists& seeds) {
-  const std::uint32_t n = g.counts[pixel], head = g.heads[pixel];
-  const std::uint32_t outside = std::uint32_t(xy.x == 0) + std::uint32_t(xy.x == g.width - 1) + std::uint32_t(xy.y == 0) +
-                                std::uint32_t(xy.y == g.height - 1);
-  PairsAround around;
-  glm::uvec4 qHead(0u);
-  if (out.pairs) {
-    around = pairsAround(g, out.pairs, pixel, xy);
-    for (int k = 0; k < 4; ++k) {
-      const glm::ivec2 q = xy + kDirections[std::size_t(k)];
-      if (g.inside(q)) qHead[k] = g.heads[g.indexAt(q)];
-    }
-  }
-  for (std::uint32_t f = head; f < head + n; ++f) {
-    glm::uvec4 link = out.links[f];
-    if (out.pairs) out.links[f] = link = linksFromBits(around, link, f - head, qHead);
-    setSameLayerFragment(out, f, link, outside, seeds);
-  }
-}
+}  // namespace
 
 void setBoundaryConditionsOnHost(const CoveredGrid& grid, const BoundaryConditions& out, unsigned threads) {
   constexpr std::size_t kPixelsPerShareMin = 16384;
   const std::size_t n = grid.coveredCount, shares = core::sharesFor(n, kPixelsPerShareMin, threads);
   std::vector<SeedLists> seeds(shares);
   forEachCoveredPixel(grid, shares, [&](std::uint32_t pixel, glm::ivec2 xy, std::size_t share) {
-    setPixelBoundaryConditions(grid, out, pixel, xy, seeds[share]);
+    setPixel(grid, out, pixel, xy, seeds[share]);
   });
   for (const SeedLists& s : seeds) {  // the shares in pixel order
     if (out.betaSeeds) out.betaSeeds->insert(out.betaSeeds->end(), s.beta.begin(), s.beta.end());

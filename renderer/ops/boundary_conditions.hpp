@@ -36,17 +36,11 @@ struct SeedLists {
   std::vector<std::uint32_t> beta, gamma;
 };
 
-// One covered pixel's fragments (pixel = its index, xy its place): as setBoundaryConditionsOnHost
-// sets each, its seeds appended to `seeds` (where `out` lists them) rather than to out's lists.
-// Its links must be final (phase 3 done with every pair it belongs to): connect phase 1 as host
-// code calls it for the pixels none of whose pairs was listed (ops/fast_links.hpp).
-void setPixelBoundaryConditions(const CoveredGrid& grid, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
-                                SeedLists& seeds);
-
 // Fragment f's boundary conditions where each of its links (`link`: left, right, below, above)
 // joins the same layer of the adjacent list or nothing, `outside` of its four neighbours lying
 // beyond the image edge: no fragment there is beside or under a silhouette, so γ is 0 and β 1 only
-// where a link is missing (Sec. 5.3; the image edge is no silhouette).
+// where a link is missing (Sec. 5.3; the image edge is no silhouette). Connect phase 1 as host code
+// calls it for each fragment of a pixel none of whose pairs was listed (ops/fast_links.hpp).
 inline void setSameLayerFragment(const BoundaryConditions& out, std::uint32_t f, const glm::uvec4& link, std::uint32_t outside,
                                  SeedLists& seeds) {
   constexpr std::uint32_t kNoNeighbor = 0xFFFFFFFFu, kFreeAlpha = 1, kFreeBeta = 2, kFreeGamma = 4;
@@ -58,12 +52,6 @@ inline void setSameLayerFragment(const BoundaryConditions& out, std::uint32_t f,
   if (out.betaSeeds && boundary) seeds.beta.push_back(f);
   out.flags[f] = boundary ? kFreeAlpha | kFreeGamma : kFreeAlpha | kFreeBeta | kFreeGamma;
 }
-
-// setPixelBoundaryConditions for a pixel each of whose links joins the same layer of the adjacent
-// list or nothing (none of its pairs listed: the fast path settled them): there no fragment is
-// beside or under a silhouette, so γ is 0 and β 1 only where a link is missing.
-void setSameLayerBoundaryConditions(const CoveredGrid& grid, const BoundaryConditions& out, std::uint32_t pixel, glm::ivec2 xy,
-                                    SeedLists& seeds);
 
 // Every covered pixel's fragments, the pixels shared out among up to `threads` threads (fewer where
 // there are few pixels); the seeds are listed in pixel and layer order however many there are.

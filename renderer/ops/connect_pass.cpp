@@ -42,17 +42,18 @@ struct Phase2Outputs {
       valued[i] = !listSeeds && fields.has(kSeeded[i]);
     }
   }
-  // The buffers mapped (links and pair words readable: phase 2 reads them), and the conditions
-  // over them appending seeds to `seeds`.
+  // The buffers mapped (the links readable: phase 2 reads them), and the conditions over them
+  // appending seeds to `seeds`.
   struct Mapped {
     Mapped(const Phase2Outputs& outputs, const FragmentBuffer& buffer, TransparencyFields& fields, bool linkMasks)
         : links(fields.links(), fields.fragments() * sizeof(glm::uvec4), 0, true), flags(fields.flags(), fields.fragments() * 4) {
-      if (linkMasks) pairs.emplace(fields.connectPairs(buffer.pixels()), buffer.pixels() * sizeof(glm::uvec4), 0, true);
+      if (linkMasks) pairs.emplace(fields.connectPairs(buffer.pixels()), buffer.pixels() * sizeof(glm::uvec4));
       for (int i = 0; i < 2; ++i)
         if (outputs.valued[i]) values[i].emplace(fields.output(kSeeded[i]), fields.fragments() * 4);
     }
     gpu::MappedWrite links, flags;
-    std::optional<gpu::MappedWrite> pairs, values[2];
+    std::optional<gpu::MappedRead> pairs;
+    std::optional<gpu::MappedWrite> values[2];
     BoundaryConditions conditions(std::vector<std::uint32_t> (&seeds)[2], const bool (&listed)[2]) const {
       return {links.as<glm::uvec4>(),
               pairs ? pairs->as<glm::uvec4>() : nullptr,
@@ -119,14 +120,14 @@ std::array<std::uint32_t, 2> settleFastLinks(const FragmentBuffer& buffer, const
         records(buffer.sortedRecordBuffer(), n * layout.stride * 4), steps(*buffer.listSteps(), pixels * sizeof(glm::vec2));
     const Phase2Outputs outputs(fields, listSeeds);
     std::optional<gpu::MappedWrite> links, pairs;
-    std::optional<Phase2Outputs::Mapped> mapped;  // phase 2's buffers, where it is folded in
+    std::optional<Phase2Outputs::Mapped> mapped;  // phase 2's buffers, where it is folded in (links as words)
     if (fold) {
-      mapped.emplace(outputs, buffer, fields, linkMasks);
+      mapped.emplace(outputs, buffer, fields, false);
       out.conditions = mapped->conditions(fold->seeds, outputs.listed);
     } else {
       links.emplace(fields.links(), n * sizeof(glm::uvec4));
-      if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
     }
+    if (linkMasks) pairs.emplace(fields.connectPairs(pixels), pixels * sizeof(glm::uvec4));
     const CoveredGrid grid{buffer.width(), buffer.height(), counts.as<std::uint32_t>(), heads.as<std::uint32_t>(), nullptr, 0};
     const bool ids = layout.properties.has(FragmentProperty::Ids);
     const SortedSurfels surfels{records.as<std::uint32_t>(), layout.stride, layout.depthGradientOffset, layout.normalOffset,
@@ -134,7 +135,7 @@ std::array<std::uint32_t, 2> settleFastLinks(const FragmentBuffer& buffer, const
     // The shader's uniforms, computed as connectFragments sets them.
     const ContinuityWeights weights{objectRadius, float(settings.wz), float(settings.wz / objectRadius), float(settings.wn)};
     out.links = fold ? mapped->links.as<glm::uvec4>() : links->as<glm::uvec4>();
-    out.pairs = fold ? (mapped->pairs ? mapped->pairs->as<glm::uvec4>() : nullptr) : pairs ? pairs->as<glm::uvec4>() : nullptr;
+    out.pairs = pairs ? pairs->as<glm::uvec4>() : nullptr;
     settleFastLinksOnHost(grid, surfels, weights, out, fields.fastLinkRows(), std::thread::hardware_concurrency());
   }
   if (fold) fold->deferred = std::move(out.deferred);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 
 #include "core/parallel_shares.hpp"
 
@@ -412,23 +413,6 @@ struct RowPass {
     if (!whole) partial = true;
     for (int i = 0; i < 2; ++i)
       if (listed[i]) work.listed.push_back(2 * pixel + std::uint32_t(i));
-    if (out.conditions) work.listedPairs[y & 1][std::size_t(x)] = std::uint8_t((listed[0] ? 1 : 0) | (listed[1] ? 2 : 0));
-  }
-
-  // Phase 2 folded in (FastLinks::conditions) for row y of pair bits, whose pairs are all settled:
-  // each covered pixel none of whose four pairs was listed, unless the pairs below it are another
-  // thread's (`belowElsewhere`), gets its boundary conditions now; the others are deferred. (As
-  // words, settleWordsPixel does this pixel by pixel.)
-  void foldRow(const RowPlanes& a, int y, bool belowElsewhere) const {
-    const std::uint8_t *row = work.listedPairs[y & 1].data(), *below = work.listedPairs[(y + 1) & 1].data();
-    const std::int32_t* counts = a.counts();
-    for (int x = a.first; x <= a.last; ++x) {
-      if (counts[x] == 0) continue;
-      const std::uint32_t pixel = grid.indexAt({x, y});
-      const bool listed = row[x] != 0 || (x > 0 && (row[x - 1] & 1) != 0) || (y > 0 && (belowElsewhere || (below[x] & 2) != 0));
-      if (listed) work.deferred.push_back(pixel);
-      else setSameLayerBoundaryConditions(grid, *out.conditions, pixel, {x, y}, work.seeds);
-    }
   }
 };
 
@@ -446,7 +430,6 @@ TLAB_INLINE bool settleRows(const CoveredGrid& grid, const SortedSurfels& surfel
     rows[next].load<N>(grid, surfels, int(y) + 1);
     if (out.conditions) std::fill(work.listedPairs[y & 1].begin(), work.listedPairs[y & 1].end(), 0);
     pass.run<N>(rows[current], rows[next], int(y));
-    if (out.conditions && out.pairs) pass.foldRow(rows[current], int(y), y == from);
     current = next;
   }
   return partial;
@@ -476,6 +459,7 @@ SettleRows widest() { return settleRowsSse; }
 
 void settleFastLinksOnHost(const CoveredGrid& grid, const SortedSurfels& surfels, const ContinuityWeights& weights,
                            FastLinks& out, std::vector<FastLinkRows>& work, unsigned threads, FastLinkLanes lanes) {
+  if (out.conditions && out.pairs) throw std::logic_error("connect phase 1 folds phase 2 in only where the links are words");
   out.listed.clear();
   out.partial = false;
   out.deferred.clear();

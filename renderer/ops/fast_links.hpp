@@ -53,13 +53,12 @@ struct FastLinks {
   glm::uvec4* pairs = nullptr;
   std::vector<std::uint32_t> listed;  // out: 2 × pixel + axis (0: right, 1: above), pixel order
   bool partial = false;               // out: where `pairs` is given, as the shader's word
-  // Where given, phase 2 folded in (ops/boundary_conditions.hpp, setPixelBoundaryConditions): each
-  // row, once its pairs are settled, sets the boundary conditions of its pixels none of whose four
-  // pairs was listed (their links are final: phase 3 leaves them alone) while the row's words are
-  // in the cache; the others go to `deferred`, for phase 2 after phase 3, as do the first row of
-  // each thread's rows (the pairs below it are another thread's). Its links and pairs must be
-  // `links` and `pairs` above (mapped readable too), and its seeds are appended in pixel and layer
-  // order (of the pixels set here).
+  // Where given (links as words only: `pairs` null), phase 2 folded in (ops/boundary_conditions.hpp,
+  // setSameLayerFragment): each pixel none of whose four pairs was listed (its links are final:
+  // phase 3 leaves them alone) gets its boundary conditions from the words just gathered; the
+  // others go to `deferred`, for phase 2 after phase 3, as do the first row of each thread's rows
+  // (the pairs below it are another thread's). Its links must be `links` above (mapped readable
+  // too), and its seeds are appended in pixel and layer order (of the pixels set here).
   std::optional<BoundaryConditions> conditions;
   std::vector<std::uint32_t> deferred;  // out: the pixels left to phase 2, pixel order
 };

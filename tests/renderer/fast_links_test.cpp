@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <bit>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -156,30 +157,27 @@ struct Image {
   std::vector<glm::vec2> steps;
 };
 
-// What phase 2 leaves, with phase 1 before it.
+// What phase 2 leaves, with phase 1 before it (the links as words).
 struct Conditions {
-  std::vector<glm::uvec4> links, pairs;
+  std::vector<glm::uvec4> links;
   std::vector<std::uint32_t> flags, betaSeeds, gammaSeeds;
   std::vector<float> beta, gamma;
   std::size_t deferred = 0;
-  explicit Conditions(const Image& image, bool pairBits)
+  explicit Conditions(const Image& image)
       : links(image.fragments(), glm::uvec4(0xDEAD)), flags(image.fragments(), 0xDEAD), beta(image.fragments(), -1.0f),
-        gamma(image.fragments(), -1.0f) {
-    if (pairBits) pairs.assign(image.counts.size(), glm::uvec4(0xDEAD));
-  }
+        gamma(image.fragments(), -1.0f) {}
   BoundaryConditions outputs(std::vector<std::uint32_t>* betaList, std::vector<std::uint32_t>* gammaList) {
-    return {links.data(), pairs.empty() ? nullptr : pairs.data(), flags.data(), beta.data(), gamma.data(), betaList, gammaList};
+    return {links.data(), nullptr, flags.data(), beta.data(), gamma.data(), betaList, gammaList};
   }
 };
 
 // Phase 1, then phase 2 over every covered pixel (`fold` false); or phase 2 folded into phase 1 and
 // then over the pixels it deferred, the seeds merged (as ops/connect_pass.cpp does).
-Conditions phasesOneAndTwo(const Image& image, bool pairBits, bool fold, unsigned threads) {
-  Conditions c(image, pairBits);
+Conditions phasesOneAndTwo(const Image& image, bool fold, unsigned threads) {
+  Conditions c(image);
   const SortedSurfels surfels{image.words.data(), 6, 3, 2, true, 5, image.steps.data()};
   FastLinks out;
   out.links = c.links.data();
-  out.pairs = pairBits ? c.pairs.data() : nullptr;
   if (fold) out.conditions = c.outputs(&c.betaSeeds, &c.gammaSeeds);
   std::vector<FastLinkRows> work;
   settleFastLinksOnHost(image.grid(), surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work, threads);
@@ -198,28 +196,35 @@ Conditions phasesOneAndTwo(const Image& image, bool pairBits, bool fold, unsigne
 
 }  // namespace
 
-// Phase 2 folded into phase 1 (FastLinks::conditions) leaves what phase 2 run afterwards leaves:
-// links (from pair bits too), flags, β and γ, and the seeds in pixel and layer order, with one
-// thread or rows shared among several (whose first rows are deferred, and whose links down, as
-// words, the thread below writes); pixels beside a listed pair are deferred (as the γ of their
-// unresolved links shows), the rest set during phase 1.
+// Phase 2 folded into phase 1 (FastLinks::conditions, links as words) leaves what phase 2 run
+// afterwards leaves: links, flags, β and γ, and the seeds in pixel and layer order, with one thread
+// or rows shared among several (whose first rows are deferred, and whose links down the thread
+// below writes); pixels beside a listed pair are deferred (as the γ of their unresolved links
+// shows), the rest set during phase 1. With pair bits it is refused (the connect pass keeps
+// phase 2 apart there).
 TEST(FastLinksOnHost, PhaseTwoFoldedInLeavesWhatPhaseTwoAfterwardsLeaves) {
   const Image image(48, 25);
-  for (const bool pairBits : {false, true}) {
-    const Conditions after = phasesOneAndTwo(image, pairBits, false, 1);
-    EXPECT_FALSE(after.gammaSeeds.empty());  // unresolved links (no phase 3 here): next to a "silhouette"
-    for (const unsigned threads : {1u, 2u, 3u}) {
-      SCOPED_TRACE(std::to_string(pairBits) + " " + std::to_string(threads));
-      const Conditions folded = phasesOneAndTwo(image, pairBits, true, threads);
-      EXPECT_EQ(folded.links, after.links);
-      EXPECT_EQ(folded.pairs, after.pairs);
-      EXPECT_EQ(folded.flags, after.flags);
-      EXPECT_EQ(folded.beta, after.beta);
-      EXPECT_EQ(folded.gamma, after.gamma);
-      EXPECT_EQ(folded.betaSeeds, after.betaSeeds);
-      EXPECT_EQ(folded.gammaSeeds, after.gammaSeeds);
-      EXPECT_GT(folded.deferred, 0u);
-      EXPECT_LT(folded.deferred, image.covered.size() / 2);
-    }
+  const Conditions after = phasesOneAndTwo(image, false, 1);
+  EXPECT_FALSE(after.gammaSeeds.empty());  // unresolved links (no phase 3 here): next to a "silhouette"
+  for (const unsigned threads : {1u, 2u, 3u}) {
+    SCOPED_TRACE(threads);
+    const Conditions folded = phasesOneAndTwo(image, true, threads);
+    EXPECT_EQ(folded.links, after.links);
+    EXPECT_EQ(folded.flags, after.flags);
+    EXPECT_EQ(folded.beta, after.beta);
+    EXPECT_EQ(folded.gamma, after.gamma);
+    EXPECT_EQ(folded.betaSeeds, after.betaSeeds);
+    EXPECT_EQ(folded.gammaSeeds, after.gammaSeeds);
+    EXPECT_GT(folded.deferred, 0u);
+    EXPECT_LT(folded.deferred, image.covered.size() / 2);
   }
+  Conditions c(image);
+  std::vector<glm::uvec4> pairs(image.counts.size());
+  FastLinks out;
+  out.links = c.links.data();
+  out.pairs = pairs.data();
+  out.conditions = c.outputs(nullptr, nullptr);
+  std::vector<FastLinkRows> work;
+  const SortedSurfels surfels{image.words.data(), 6, 3, 2, true, 5, image.steps.data()};
+  EXPECT_THROW(settleFastLinksOnHost(image.grid(), surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work), std::logic_error);
 }
