@@ -416,20 +416,16 @@ struct RowPass {
   }
 };
 
-// Row y's sorted records asked into the cache (a hint: no word changes), the records of a row's
-// covered pixels lying one after another in pixel order. Issued two rows ahead of the row settled,
-// so that they arrive while the row before is settled: without it a tenth of phase 1 waited on the
+// Row y's sorted records asked into the cache (a hint: no word changes). Every pixel's head is the
+// count of the fragments before it (the prefix sum), so the row's records lie one after another
+// from its first pixel's head to its last pixel's end. Issued two rows ahead of the row settled, so
+// that they arrive while the row before is settled: without it a tenth of phase 1 waited on the
 // first record of each pixel. (Asking for the lines phase 1 writes as well gained nothing.)
 TLAB_INLINE void prefetchRecords(const CoveredGrid& grid, const SortedSurfels& s, int y) {
   if (y >= grid.height) return;
-  const std::uint32_t* counts = grid.counts + std::size_t(y) * grid.width;
-  int first = 0, last = grid.width - 1;
-  while (first <= last && counts[first] == 0) ++first;
-  while (last >= first && counts[last] == 0) --last;
-  if (first > last) return;
-  const std::uint32_t* heads = grid.heads + std::size_t(y) * grid.width;
-  const char* begin = reinterpret_cast<const char*>(s.words + std::size_t(heads[first]) * s.stride);
-  const char* end = reinterpret_cast<const char*>(s.words + (std::size_t(heads[last]) + counts[last]) * s.stride);
+  const std::size_t first = std::size_t(y) * grid.width, last = first + grid.width - 1;
+  const char* begin = reinterpret_cast<const char*>(s.words + std::size_t(grid.heads[first]) * s.stride);
+  const char* end = reinterpret_cast<const char*>(s.words + (std::size_t(grid.heads[last]) + grid.counts[last]) * s.stride);
   for (const char* line = begin; line < end; line += 64) __builtin_prefetch(line, 0, 3);
 }
 

@@ -38,6 +38,9 @@ struct Lists {
   std::vector<glm::vec2> steps;
 };
 
+// r_obj, wz, wz / r_obj and wn all 1.
+constexpr ContinuityWeights kUnitWeights{1.0f, 1.0f, 1.0f, 1.0f};
+
 // Phase 1 over the lists as one row (r_obj = wz = wn = 1), with the links as words, or as pair bits.
 struct Settled {
   std::vector<glm::uvec4> links, pairs;
@@ -54,7 +57,7 @@ Settled settle(const Lists& lists, bool pairBits, FastLinkLanes lanes) {
   out.links = s.links.data();
   out.pairs = pairBits ? s.pairs.data() : nullptr;
   std::vector<FastLinkRows> work;
-  settleFastLinksOnHost(grid, surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work, 1, lanes);
+  settleFastLinksOnHost(grid, surfels, kUnitWeights, out, work, 1, lanes);
   s.listed = out.listed;
   s.partial = out.partial;
   return s;
@@ -151,6 +154,8 @@ struct Image {
     steps.assign(counts.size(), glm::vec2(0.0f));
   }
   CoveredGrid grid() const { return {w, h, counts.data(), heads.data(), covered.data(), covered.size()}; }
+  // Records of 6 words: depth, ∇z at 3, the normal at 2, the ids at 5.
+  SortedSurfels surfels() const { return {words.data(), 6, 3, 2, true, 5, steps.data()}; }
   std::size_t fragments() const { return words.size() / 6; }
   int w, h;
   std::vector<std::uint32_t> counts, heads, covered, words;
@@ -175,12 +180,11 @@ struct Conditions {
 // then over the pixels it deferred, the seeds merged (as ops/connect_pass.cpp does).
 Conditions phasesOneAndTwo(const Image& image, bool fold, unsigned threads) {
   Conditions c(image);
-  const SortedSurfels surfels{image.words.data(), 6, 3, 2, true, 5, image.steps.data()};
   FastLinks out;
   out.links = c.links.data();
   if (fold) out.conditions = c.outputs(&c.betaSeeds, &c.gammaSeeds);
   std::vector<FastLinkRows> work;
-  settleFastLinksOnHost(image.grid(), surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work, threads);
+  settleFastLinksOnHost(image.grid(), image.surfels(), kUnitWeights, out, work, threads);
   CoveredGrid rest = image.grid();
   if (fold) rest.covered = out.deferred.data(), rest.coveredCount = out.deferred.size();
   std::vector<std::uint32_t> beta, gamma;
@@ -225,6 +229,5 @@ TEST(FastLinksOnHost, PhaseTwoFoldedInLeavesWhatPhaseTwoAfterwardsLeaves) {
   out.pairs = pairs.data();
   out.conditions = c.outputs(nullptr, nullptr);
   std::vector<FastLinkRows> work;
-  const SortedSurfels surfels{image.words.data(), 6, 3, 2, true, 5, image.steps.data()};
-  EXPECT_THROW(settleFastLinksOnHost(image.grid(), surfels, {1.0f, 1.0f, 1.0f, 1.0f}, out, work), std::logic_error);
+  EXPECT_THROW(settleFastLinksOnHost(image.grid(), image.surfels(), kUnitWeights, out, work), std::logic_error);
 }
