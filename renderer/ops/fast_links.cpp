@@ -464,9 +464,11 @@ using SettleRows = bool (*)(const CoveredGrid&, const SortedSurfels&, const Weig
                                             std::size_t from, std::size_t to) {
   return settleRows<8>(grid, surfels, w, out, work, pitch, layers, from, to);
 }
-// The widest lanes the CPU runs: 8 with AVX2, else 4. (16 with AVX-512 ran 2.5 times slower on the
-// torus: GCC 12 turns the vector extension's comparisons of 64-byte vectors into one scalar
-// comparison a lane.)
+// The widest lanes the CPU runs: 8 with AVX2, else 4. (16 with AVX-512 were tried twice: built
+// through a target attribute GCC 12 compiles the inlined templates' 64-byte comparisons one lane at
+// a time, 2.5 times slower; with the whole file built for AVX-512 they gained a fifteenth, but such
+// a file's copies of shared inline functions may be the ones the linker keeps, and those stop a
+// CPU without AVX-512.)
 SettleRows widest() { return __builtin_cpu_supports("avx2") ? settleRowsAvx2 : settleRowsSse; }
 #else
 SettleRows widest() { return settleRowsSse; }
